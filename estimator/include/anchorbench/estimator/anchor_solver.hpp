@@ -1,0 +1,34 @@
+#pragma once
+
+#include <span>
+#include <string>
+
+#include "anchorbench/estimator/ls_solver.hpp"
+#include "anchorbench/estimator/nls_solver.hpp"
+
+namespace anchorbench::estimator {
+
+struct AnchorSolverOptions {
+  LsOptions ls;
+  NlsOptions nls;
+
+  bool IsValid(std::string* why) const { return ls.IsValid(why) && nls.IsValid(why); }
+};
+
+// Sec. III-D in full: the double-difference LS coarse solution seeds the NLS refinement.
+class AnchorSolver {
+ public:
+  explicit AnchorSolver(const AnchorSolverOptions& options = {}) : options_(options), nls_(options.nls) {}
+
+  SolveResult Solve(std::span<const Eigen::Vector3d> p_world_tag, std::span<const double> range_m) const {
+    const SolveResult coarse = SolveDoubleDifferenceLs(p_world_tag, range_m, options_.ls);
+    if (!Succeeded(coarse.status)) return coarse;
+    return nls_.Solve(p_world_tag, range_m, coarse.p_world_anchor, coarse.bias_m);
+  }
+
+ private:
+  AnchorSolverOptions options_;
+  NlsSolver nls_;
+};
+
+}  // namespace anchorbench::estimator

@@ -1,0 +1,44 @@
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include <Eigen/Core>
+
+namespace anchorbench::estimator {
+
+struct ConsistencyFilterOptions {
+  bool enabled = true;
+  // Sec. III-B: accept d_k if |d_k - d_prev| <= ||p_k - p_prev|| + tau. The paper uses tau ~ 2 sigma_d.
+  double tau_m = 0.2;
+  // After this many consecutive rejections the reference itself is taken to be the outlier
+  // (e.g. the very first sample of the pair): the filter re-seeds on the current sample and
+  // accepts it. 0 disables re-seeding.
+  int reseed_after_rejections = 10;
+
+  bool IsValid(std::string* why) const;
+};
+
+// Online triangle-inequality consistency check of Sec. III-B (Fig. 3). One instance per anchor;
+// it keeps the last accepted sample of every tag, so each tag/anchor pair is checked on its own.
+// The first sample of a pair has nothing to compare with and is accepted.
+class ConsistencyFilter {
+ public:
+  explicit ConsistencyFilter(const ConsistencyFilterOptions& options = {}) : options_(options) {}
+
+  // Returns true if the range is consistent with the last accepted range of the same tag.
+  bool Accept(int tag_id, const Eigen::Vector3d& p_world_tag, double range_m);
+
+ private:
+  struct Reference {
+    int tag_id;
+    Eigen::Vector3d p_world_tag;
+    double range_m;
+    int consecutive_rejections;
+  };
+
+  ConsistencyFilterOptions options_;
+  std::vector<Reference> references_;  // one per tag seen; a handful at most
+};
+
+}  // namespace anchorbench::estimator

@@ -1,0 +1,33 @@
+#pragma once
+
+#include <span>
+#include <string>
+
+#include "anchorbench/estimator/solve_result.hpp"
+
+namespace anchorbench::estimator {
+
+enum class LsPivot {
+  kShortestRange,    // j = sample with the shortest range
+  kMinimumVariance,  // UVIO (Delama et al. 2023): j minimizes d_j^2 sigma_d^2 + sigma_p^2 ||p_j||^2,
+                     // rows weighted by the inverse of that variance model (world-frame dependent,
+                     // as in the original)
+};
+
+struct LsOptions {
+  LsPivot pivot = LsPivot::kShortestRange;
+  double sigma_range_m = 0.1;     // for kMinimumVariance only
+  double sigma_position_m = 0.05;  // for kMinimumVariance only
+
+  bool IsValid(std::string* why) const;
+};
+
+// Coarse solution of Sec. III-D: double-difference least squares A x = b, x = [p_A; gamma],
+//   A_k = [-(p_k - p_j)^T, d_k - d_j]                                   Eq. (9)
+//   b_k = ((d_k^2 - d_j^2) - (||p_k||^2 - ||p_j||^2)) / 2               Eq. (10)
+// Solved through the 4x4 normal equations accumulated in one O(N) pass (no N x 4 matrix), with
+// positions taken relative to p_j so the squared norms do not cancel far from the origin.
+SolveResult SolveDoubleDifferenceLs(std::span<const Eigen::Vector3d> p_world_tag,
+                                    std::span<const double> range_m, const LsOptions& options = {});
+
+}  // namespace anchorbench::estimator

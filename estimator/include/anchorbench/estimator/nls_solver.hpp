@@ -1,0 +1,63 @@
+#pragma once
+
+#include <memory>
+#include <span>
+#include <string>
+
+#include "anchorbench/estimator/robust_kernel.hpp"
+#include "anchorbench/estimator/solve_result.hpp"
+
+namespace anchorbench::estimator {
+
+enum class KernelMode {
+  kL2,        // alpha fixed at 2: plain least squares, Eq. (11)
+  kAdaptive,  // alpha estimated jointly, Eq. (12)
+};
+
+struct NlsOptions {
+  KernelMode kernel = KernelMode::kAdaptive;
+  double alpha_min = -10.0;       // lower end of the alpha search; 2 is the upper end
+  double kernel_scale_m = 0.1;    // c of Eq. (13); the residual scale the kernel treats as "normal"
+  double truncation = 10.0;       // |r/c| bound of the truncated density's normalizer Z~(alpha)
+  int max_iterations = 50;        // LM iterations per stage (L2 warm start, adaptive)
+  double step_tolerance_m = 1e-6;  // converged when ||delta theta|| falls below this...
+  double alpha_tolerance = 1e-3;   // ...and alpha moved less than this
+  double initial_damping = 1e-4;   // LM lambda, relative to diag(J^T W J)
+  // Adaptive mode: first converge with alpha = 2 from the LS seed, then adapt. With outliers the
+  // LS seed can sit metres away, where every residual looks like an outlier, alpha collapses to
+  // alpha_min and the kernel has no gradient left to follow; the L2 stage brings the estimate
+  // into the basin first. (Our choice; the paper does not say how the alternation is started.)
+  bool l2_warm_start = true;
+
+  bool IsValid(std::string* why) const;
+};
+
+// Nonlinear refinement of Sec. III-D: Levenberg-Marquardt on theta = (p_A, gamma) with residuals
+// r_k = ||p_k - p_A|| + gamma - d_k (Eq. (11)). In adaptive mode each iteration first picks alpha
+// from the current residuals (AlphaSelector), then takes one damped IRLS step with weights
+// rho'(r)/r at that alpha, accepted only if it lowers sum rho (Eq. (12)). Every iteration is O(N)
+// with 4x4 normal equations; nothing is allocated inside the loop.
+class NlsSolver {
+ public:
+  explicit NlsSolver(const NlsOptions& options = {});
+
+  SolveResult Solve(std::span<const Eigen::Vector3d> p_world_tag, std::span<const double> range_m,
+                    const Eigen::Vector3d& p_world_anchor_initial, double bias_initial_m) const;
+
+  const NlsOptions& options() const { return options_; }
+
+ private:
+  struct Stage {
+    Eigen::Vector4d theta;
+    double alpha;
+    int iterations;
+    SolveStatus status;
+  };
+  Stage Refine(std::span<const Eigen::Vector3d> p, std::span<const double> d, const Eigen::Vector4d& theta,
+               bool adaptive) const;
+
+  NlsOptions options_;
+  std::shared_ptr<const LogPartitionTable> table_;  // only for KernelMode::kAdaptive
+};
+
+}  // namespace anchorbench::estimator

@@ -1,0 +1,34 @@
+#pragma once
+
+#include <string_view>
+
+#include <Eigen/Core>
+
+namespace anchorbench::estimator {
+
+// How a solve ended. Numerical failure is a status, never an exception.
+enum class SolveStatus {
+  kConverged,           // step and kernel shape stopped changing (see NlsOptions tolerances)
+  kMaxIterations,       // iteration budget spent; the estimate is the best one reached
+  kTooFewSamples,       // fewer samples than unknowns (4) plus one
+  kDegenerateGeometry,  // normal equations numerically singular (e.g. collinear tag positions)
+  kNumericalFailure,    // a non-finite value appeared; no estimate
+};
+
+std::string_view ToString(SolveStatus status);
+inline bool Succeeded(SolveStatus s) {
+  return s == SolveStatus::kConverged || s == SolveStatus::kMaxIterations;
+}
+
+// Anchor position and range bias theta = (p_A, gamma) with its summary, after Ceres' Summary.
+struct SolveResult {
+  Eigen::Vector3d p_world_anchor = Eigen::Vector3d::Zero();
+  double bias_m = 0.0;
+  double alpha = 2.0;  // kernel shape in use at the end (2 = L2)
+  Eigen::Matrix4d covariance = Eigen::Matrix4d::Zero();  // of (p_A, gamma), m^2
+  SolveStatus status = SolveStatus::kNumericalFailure;
+  int iterations = 0;
+  double final_cost = 0.0;  // sum of rho(r_k / c, alpha), Eq. (12)
+};
+
+}  // namespace anchorbench::estimator

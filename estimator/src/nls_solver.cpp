@@ -1,0 +1,182 @@
+#include "anchorbench/estimator/nls_solver.hpp"
+
+#include <cmath>
+#include <optional>
+
+#include <Eigen/Dense>
+
+namespace anchorbench::estimator {
+namespace {
+
+constexpr int kMaxDampingIncreases = 12;
+
+using Vector4 = Eigen::Vector4d;
+
+// Residual r_k and Jacobian row dr_k/dtheta = [(p_A - p_k)^T / ||p_A - p_k||, 1].
+inline double Residual(const Vector4& theta, const Eigen::Vector3d& p, double d, Vector4* jacobian) {
+  const Eigen::Vector3d diff = theta.head<3>() - p;
+  const double distance = diff.norm();
+  if (jacobian) {
+    if (distance > 1e-12) {
+      jacobian->head<3>() = diff / distance;
+    } else {
+      jacobian->head<3>().setZero();  // anchor on the tag: the direction is undefined
+    }
+    (*jacobian)(3) = 1.0;
+  }
+  return distance + theta(3) - d;
+}
+
+struct NormalEquations {
+  Eigen::Matrix4d information = Eigen::Matrix4d::Zero();  // sum w J J^T
+  Vector4 gradient = Vector4::Zero();                     // sum w J r
+  double cost = 0.0;                                      // sum rho(r / c)
+  double weighted_squares = 0.0;                          // sum w r^2
+};
+
+NormalEquations BuildNormalEquations(std::span<const Eigen::Vector3d> p, std::span<const double> d,
+                                     const Vector4& theta, double alpha, double c) {
+  NormalEquations eq;
+  Vector4 jacobian;
+  for (std::size_t k = 0; k < d.size(); ++k) {
+    const double r = Residual(theta, p[k], d[k], &jacobian);
+    const KernelValue kernel = EvaluateKernel(r / c, alpha);
+    eq.information.noalias() += kernel.weight * jacobian * jacobian.transpose();
+    eq.gradient += (kernel.weight * r) * jacobian;
+    eq.cost += kernel.rho;
+    eq.weighted_squares += kernel.weight * r * r;
+  }
+  return eq;
+}
+
+// Robust cost at theta; also fills the alpha selector with the residuals, if one is given.
+double Cost(std::span<const Eigen::Vector3d> p, std::span<const double> d, const Vector4& theta,
+            double alpha, double c, AlphaSelector* selector) {
+  if (selector) selector->Clear();
+  double cost = 0.0;
+  for (std::size_t k = 0; k < d.size(); ++k) {
+    const double x = Residual(theta, p[k], d[k], nullptr) / c;
+    cost += Rho(x, alpha);
+    if (selector) selector->Add(x);
+  }
+  return cost;
+}
+
+}  // namespace
+
+bool NlsOptions::IsValid(std::string* why) const {
+  auto fail = [why](const char* message) {
+    if (why) *why = message;
+    return false;
+  };
+  if (!(alpha_min < 2.0) || !std::isfinite(alpha_min)) return fail("alpha_min must be finite and < 2");
+  if (!(kernel_scale_m > 0.0) || !std::isfinite(kernel_scale_m)) return fail("kernel_scale_m must be > 0");
+  if (!(truncation > 0.0) || !std::isfinite(truncation)) return fail("truncation must be > 0");
+  if (max_iterations < 1) return fail("max_iterations must be >= 1");
+  if (!(step_tolerance_m > 0.0)) return fail("step_tolerance_m must be > 0");
+  if (!(alpha_tolerance > 0.0)) return fail("alpha_tolerance must be > 0");
+  if (!(initial_damping >= 0.0)) return fail("initial_damping must be >= 0");
+  return true;
+}
+
+NlsSolver::NlsSolver(const NlsOptions& options) : options_(options) {
+  if (options_.kernel == KernelMode::kAdaptive) {
+    table_ = LogPartitionTable::Shared(options_.truncation, options_.alpha_min);
+  }
+}
+
+NlsSolver::Stage NlsSolver::Refine(std::span<const Eigen::Vector3d> p, std::span<const double> d,
+                                   const Eigen::Vector4d& theta_initial, bool adaptive) const {
+  const double c = options_.kernel_scale_m;
+  std::optional<AlphaSelector> selector;
+  if (adaptive) selector.emplace(table_);
+  AlphaSelector* histogram = adaptive ? &*selector : nullptr;
+
+  Stage stage{theta_initial, 2.0, 0, SolveStatus::kMaxIterations};
+  double damping = options_.initial_damping;
+  Cost(p, d, stage.theta, stage.alpha, c, histogram);
+  while (stage.iterations < options_.max_iterations) {
+    const double previous_alpha = stage.alpha;
+    if (adaptive) stage.alpha = selector->Select();  // alpha step of the alternation
+    const NormalEquations eq = BuildNormalEquations(p, d, stage.theta, stage.alpha, c);
+    if (!std::isfinite(eq.cost) || !eq.information.allFinite()) {
+      stage.status = SolveStatus::kNumericalFailure;
+      return stage;
+    }
+    // Damped step (J^T W J + lambda diag) delta = -J^T W r, raised until the cost drops.
+    bool accepted = false;
+    Vector4 delta = Vector4::Zero();
+    for (int attempt = 0; attempt < kMaxDampingIncreases && !accepted; ++attempt) {
+      Eigen::Matrix4d damped = eq.information;
+      damped.diagonal() += damping * eq.information.diagonal().cwiseMax(1e-12);
+      delta = damped.ldlt().solve(-eq.gradient);
+      if (!delta.allFinite()) break;
+      if (Cost(p, d, stage.theta + delta, stage.alpha, c, histogram) <= eq.cost) {
+        accepted = true;
+        stage.theta += delta;
+        damping = std::max(damping * 0.1, 1e-12);
+      } else {
+        damping = std::max(damping * 10.0, 1e-8);
+      }
+    }
+    ++stage.iterations;
+    if (!accepted) {
+      // No step lowers the cost: theta is a minimum for this alpha.
+      stage.status = SolveStatus::kConverged;
+      break;
+    }
+    if (delta.norm() < options_.step_tolerance_m && std::abs(stage.alpha - previous_alpha) < options_.alpha_tolerance) {
+      stage.status = SolveStatus::kConverged;
+      break;
+    }
+  }
+  return stage;
+}
+
+SolveResult NlsSolver::Solve(std::span<const Eigen::Vector3d> p_world_tag, std::span<const double> range_m,
+                             const Eigen::Vector3d& p_world_anchor_initial, double bias_initial_m) const {
+  SolveResult result;
+  const std::size_t n = range_m.size();
+  if (n < 5 || p_world_tag.size() != n) {
+    result.status = SolveStatus::kTooFewSamples;
+    return result;
+  }
+  const bool adaptive = options_.kernel == KernelMode::kAdaptive;
+  Vector4 theta;
+  theta << p_world_anchor_initial, bias_initial_m;
+  Stage stage{theta, 2.0, 0, SolveStatus::kConverged};
+  if (!adaptive || options_.l2_warm_start) {
+    stage = Refine(p_world_tag, range_m, theta, /*adaptive=*/false);
+  }
+  if (adaptive && stage.status != SolveStatus::kNumericalFailure) {
+    const int used = stage.iterations;
+    stage = Refine(p_world_tag, range_m, stage.theta, /*adaptive=*/true);
+    stage.iterations += used;
+  }
+  const NormalEquations final_eq =
+      BuildNormalEquations(p_world_tag, range_m, stage.theta, stage.alpha, options_.kernel_scale_m);
+  if (stage.status == SolveStatus::kNumericalFailure || !stage.theta.allFinite() ||
+      !final_eq.information.allFinite()) {
+    result.status = SolveStatus::kNumericalFailure;
+    return result;
+  }
+  const Eigen::SelfAdjointEigenSolver<Eigen::Matrix4d> eigen(final_eq.information);
+  const Vector4 lambda = eigen.eigenvalues();
+  result.p_world_anchor = stage.theta.head<3>();
+  result.bias_m = stage.theta(3);
+  result.alpha = stage.alpha;
+  result.iterations = stage.iterations;
+  result.final_cost = final_eq.cost;
+  result.status = stage.status;
+  if (!(lambda(3) > 0.0) || lambda(0) <= 1e-12 * lambda(3)) {
+    result.status = SolveStatus::kDegenerateGeometry;
+    return result;
+  }
+  // Covariance s^2 (J^T W J)^-1 with s^2 = sum w r^2 / (N - 4): the Gauss-Newton covariance of
+  // the reweighted problem (for alpha = 2, the usual sigma^2 (J^T J)^-1).
+  const double s2 = final_eq.weighted_squares / static_cast<double>(n - 4);
+  result.covariance = s2 * eigen.eigenvectors() * lambda.cwiseInverse().asDiagonal() * eigen.eigenvectors().transpose();
+  return result;
+}
+
+}  // namespace anchorbench::estimator

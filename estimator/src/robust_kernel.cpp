@@ -1,0 +1,149 @@
+#include "anchorbench/estimator/robust_kernel.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <mutex>
+#include <utility>
+
+#include <nlopt.hpp>
+
+namespace anchorbench::estimator {
+namespace {
+
+constexpr double kLimitTolerance = 1e-9;  // |alpha - 2| or |alpha| below this: use the exact limit
+constexpr double kTableAlphaStep = 0.01;
+constexpr int kSimpsonIntervals = 1000;  // over [0, truncation]; the integrand is smooth
+
+bool IsL2(double alpha) { return std::abs(alpha - 2.0) < kLimitTolerance; }
+bool IsCauchy(double alpha) { return std::abs(alpha) < kLimitTolerance; }
+
+}  // namespace
+
+KernelValue EvaluateKernel(double x, double alpha) {
+  const double x2 = x * x;
+  if (IsL2(alpha)) return {0.5 * x2, 1.0};
+  const double abs_alpha_minus_2 = std::abs(alpha - 2.0);
+  const double log_base = std::log1p(x2 / abs_alpha_minus_2);  // log(x^2/|alpha-2| + 1)
+  const double weight = std::exp((0.5 * alpha - 1.0) * log_base);
+  if (IsCauchy(alpha)) return {log_base, weight};  // |alpha-2| = 2: log(x^2/2 + 1)
+  // Eq. (13), with expm1 so the alpha -> 0 approach keeps its precision.
+  const double rho = abs_alpha_minus_2 / alpha * std::expm1(0.5 * alpha * log_base);
+  return {rho, weight};
+}
+
+double Rho(double x, double alpha) { return EvaluateKernel(x, alpha).rho; }
+double Weight(double x, double alpha) { return EvaluateKernel(x, alpha).weight; }
+
+double LogPartitionTable::IntegrateZ(double alpha, double truncation) {
+  // Composite Simpson on [0, T], doubled by symmetry.
+  const double h = truncation / kSimpsonIntervals;
+  double sum = std::exp(-Rho(0.0, alpha)) + std::exp(-Rho(truncation, alpha));
+  for (int i = 1; i < kSimpsonIntervals; ++i) {
+    sum += (i % 2 == 1 ? 4.0 : 2.0) * std::exp(-Rho(i * h, alpha));
+  }
+  return 2.0 * sum * h / 3.0;
+}
+
+LogPartitionTable::LogPartitionTable(double truncation, double alpha_min)
+    : truncation_(truncation), alpha_min_(alpha_min) {
+  const int intervals = std::max(1, static_cast<int>(std::ceil((2.0 - alpha_min) / kTableAlphaStep)));
+  alpha_step_ = (2.0 - alpha_min) / intervals;
+  log_z_.resize(intervals + 1);
+  for (int i = 0; i <= intervals; ++i) {
+    const double alpha = i == intervals ? 2.0 : alpha_min + i * alpha_step_;
+    log_z_[i] = std::log(IntegrateZ(alpha, truncation));
+  }
+}
+
+std::shared_ptr<const LogPartitionTable> LogPartitionTable::Shared(double truncation, double alpha_min) {
+  static std::mutex mutex;
+  static std::vector<std::shared_ptr<const LogPartitionTable>> tables;
+  std::lock_guard<std::mutex> lock(mutex);
+  for (const auto& table : tables) {
+    if (table->truncation() == truncation && table->alpha_min() == alpha_min) return table;
+  }
+  tables.push_back(std::make_shared<const LogPartitionTable>(truncation, alpha_min));
+  return tables.back();
+}
+
+double LogPartitionTable::LogZ(double alpha) const {
+  const double position = std::clamp((alpha - alpha_min_) / alpha_step_, 0.0,
+                                     static_cast<double>(log_z_.size() - 1));
+  const std::size_t i = std::min(static_cast<std::size_t>(position), log_z_.size() - 2);
+  const double fraction = position - static_cast<double>(i);
+  return log_z_[i] + fraction * (log_z_[i + 1] - log_z_[i]);
+}
+
+AlphaSelector::AlphaSelector(std::shared_ptr<const LogPartitionTable> table) : table_(std::move(table)) {}
+
+void AlphaSelector::Clear() {
+  bin_count_.fill(0.0);
+  bin_sum_x_squared_.fill(0.0);
+  total_count_ = 0.0;
+}
+
+void AlphaSelector::Add(double x) {
+  static const double kScale = kBins / std::log1p(kMaxAbsX);
+  const double abs_x = std::abs(x);
+  const int bin = std::min(kBins - 1, static_cast<int>(std::log1p(abs_x) * kScale));
+  bin_count_[bin] += 1.0;
+  bin_sum_x_squared_[bin] += abs_x * abs_x;
+  total_count_ += 1.0;
+}
+
+double AlphaSelector::Nll(double alpha) const {
+  double sum_rho = 0.0;
+  for (int b = 0; b < kBins; ++b) {
+    if (bin_count_[b] == 0.0) continue;
+    const double x_rms = std::sqrt(bin_sum_x_squared_[b] / bin_count_[b]);
+    sum_rho += bin_count_[b] * Rho(x_rms, alpha);
+  }
+  return total_count_ * table_->LogZ(alpha) + sum_rho;
+}
+
+double AlphaSelector::ExactNll(std::span<const double> x, double alpha, const LogPartitionTable& table) {
+  double sum_rho = 0.0;
+  for (double xi : x) sum_rho += Rho(xi, alpha);
+  return static_cast<double>(x.size()) * table.LogZ(alpha) + sum_rho;
+}
+
+double AlphaSelector::Select() const {
+  const double alpha_min = table_->alpha_min();
+  if (total_count_ == 0.0) return 2.0;
+  // Coarse grid first: the NLL can have a shallow second minimum, and a local search from a
+  // fixed start would miss the global one.
+  constexpr int kGrid = 13;
+  const double grid_step = (2.0 - alpha_min) / (kGrid - 1);
+  double best_alpha = 2.0;
+  double best_nll = Nll(2.0);
+  for (int i = 0; i < kGrid - 1; ++i) {
+    const double alpha = alpha_min + i * grid_step;
+    const double nll = Nll(alpha);
+    if (nll < best_nll) {
+      best_nll = nll;
+      best_alpha = alpha;
+    }
+  }
+  // NLopt refines inside the bracket around the best grid point.
+  nlopt::opt optimizer(nlopt::LN_COBYLA, 1);
+  optimizer.set_lower_bounds(std::max(alpha_min, best_alpha - grid_step));
+  optimizer.set_upper_bounds(std::min(2.0, best_alpha + grid_step));
+  optimizer.set_xtol_abs(1e-3);
+  optimizer.set_maxeval(40);
+  optimizer.set_initial_step(0.25 * grid_step);
+  auto objective = [](unsigned, const double* a, double*, void* self) {
+    return static_cast<const AlphaSelector*>(self)->Nll(a[0]);
+  };
+  optimizer.set_min_objective(objective, const_cast<AlphaSelector*>(this));
+  std::vector<double> alpha{best_alpha};
+  double nll = best_nll;
+  try {
+    optimizer.optimize(alpha, nll);
+  } catch (const std::exception&) {
+    return best_alpha;  // NLopt gave up (round-off): the grid point stands
+  }
+  return nll <= best_nll ? alpha[0] : best_alpha;
+}
+
+}  // namespace anchorbench::estimator

@@ -1,0 +1,47 @@
+#include "anchorbench/estimator/ls_solver.hpp"
+
+#include <gtest/gtest.h>
+
+#include "test_data.hpp"
+
+namespace anchorbench::estimator {
+namespace {
+
+TEST(DoubleDifferenceLs, RecoversAnchorAndBiasExactlyOnNoiseFreeData) {
+  for (LsPivot pivot : {LsPivot::kShortestRange, LsPivot::kMinimumVariance}) {
+    for (int trial = 0; trial < 20; ++trial) {
+      auto rng = testing::TestStream(100 + trial);
+      const Eigen::Vector3d p_anchor(rng.Uniform(-50, 50), rng.Uniform(-50, 50), rng.Uniform(0, 5));
+      const double bias = rng.Uniform(-0.5, 0.5);
+      const auto data = testing::BoxData(rng, 40, p_anchor, p_anchor + Eigen::Vector3d(6, -3, 0), 4.0, bias, 0.0);
+      LsOptions options;
+      options.pivot = pivot;
+      const SolveResult result = SolveDoubleDifferenceLs(data.p_world_tag, data.range_m, options);
+      ASSERT_EQ(result.status, SolveStatus::kConverged);
+      EXPECT_LT((result.p_world_anchor - p_anchor).norm(), 1e-8);
+      EXPECT_NEAR(result.bias_m, bias, 1e-8);
+    }
+  }
+}
+
+TEST(DoubleDifferenceLs, CollinearPositionsAreDegenerateNotNan) {
+  std::vector<Eigen::Vector3d> p;
+  std::vector<double> d;
+  const Eigen::Vector3d p_anchor(3, 4, 2);
+  for (int k = 0; k < 50; ++k) {
+    p.emplace_back(0.2 * k, 0.0, 1.0);
+    d.push_back((p.back() - p_anchor).norm() + 0.1);
+  }
+  const SolveResult result = SolveDoubleDifferenceLs(p, d);
+  EXPECT_EQ(result.status, SolveStatus::kDegenerateGeometry);
+  EXPECT_TRUE(result.p_world_anchor.allFinite());
+}
+
+TEST(DoubleDifferenceLs, TooFewSamples) {
+  const std::vector<Eigen::Vector3d> p(3, Eigen::Vector3d::Zero());
+  const std::vector<double> d(3, 1.0);
+  EXPECT_EQ(SolveDoubleDifferenceLs(p, d).status, SolveStatus::kTooFewSamples);
+}
+
+}  // namespace
+}  // namespace anchorbench::estimator

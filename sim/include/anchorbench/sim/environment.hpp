@@ -1,0 +1,43 @@
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include <Eigen/Core>
+
+#include "anchorbench/sim/random_stream.hpp"
+
+namespace anchorbench::sim {
+
+// Tunnel frame: x along the tunnel in [0, length], y across in [-width/2, width/2], z up from the
+// floor in [0, height]. Anchors are spread evenly along the whole length (Sec. IV-A) with a
+// random jitter, cycling left wall -> right wall -> ceiling; wall anchors get a random height.
+struct TunnelOptions {
+  double length_m = 300.0;
+  double width_m = 8.0;
+  double height_m = 6.0;
+  int num_anchors = 30;
+  double anchor_height_min_m = 1.0;  // wall anchors: uniform in [min, max]
+  double anchor_height_max_m = 5.0;
+  double along_jitter_m = 2.0;       // uniform +- jitter of each anchor's x around its slot
+
+  bool IsValid(std::string* why) const;
+};
+
+// Hall frame: a box [0, length] x [0, width] x [0, height]; anchors on the four walls, evenly
+// spaced around the perimeter, heights uniform in [min, max].
+struct HallOptions {
+  double length_m = 40.0;
+  double width_m = 20.0;
+  double height_m = 8.0;
+  int num_anchors = 8;
+  double anchor_height_min_m = 1.0;
+  double anchor_height_max_m = 4.0;
+
+  bool IsValid(std::string* why) const;
+};
+
+std::vector<Eigen::Vector3d> TunnelAnchors(const TunnelOptions& options, RandomStream& layout);
+std::vector<Eigen::Vector3d> HallAnchors(const HallOptions& options, RandomStream& layout);
+
+}  // namespace anchorbench::sim

@@ -1,0 +1,51 @@
+#pragma once
+
+#include <array>
+#include <cstdint>
+
+namespace anchorbench::sim {
+
+// Which random stream a draw belongs to. Each noise source has its own stream (after open_vins),
+// so a new realization changes the noise, and changing one source leaves the others untouched.
+enum class StreamId : std::uint32_t {
+  kLayout = 1,      // anchor positions
+  kTrajectory = 2,  // trajectory shape and kind
+  kBias = 3,        // per-anchor constant range bias
+  kRangeNoise = 4,  // Gaussian range noise eta (one sub-stream per anchor)
+  kOutlier = 5,     // outlier occurrence and magnitude (one sub-stream per anchor)
+  kPositionNoise = 6,
+  kDropout = 7,
+  kSolver = 8,      // for solvers that need random numbers
+};
+
+// Counter-based generator: Philox4x32-10 (Salmon et al., SC'11). The key is the seed; the counter
+// is (block index, stream, sub-stream, realization), so any (seed, realization, stream) is an
+// independent sequence that any thread can produce without shared state. Uniform and normal
+// transforms are our own, so results do not depend on the standard library's distributions.
+class RandomStream {
+ public:
+  RandomStream(std::uint64_t seed, std::uint64_t realization, StreamId stream, std::uint32_t substream = 0);
+
+  std::uint32_t NextU32();
+  std::uint64_t NextU64();
+  double Uniform();                      // [0, 1), 53 random bits
+  double Uniform(double low, double high);
+  double Normal();                       // standard normal (Box-Muller)
+  double Normal(double mean, double sigma) { return mean + sigma * Normal(); }
+  bool Bernoulli(double probability) { return Uniform() < probability; }
+
+ private:
+  void Refill();
+
+  std::array<std::uint32_t, 2> key_;
+  std::array<std::uint32_t, 4> counter_;
+  std::array<std::uint32_t, 4> block_{};
+  int next_word_ = 4;
+  double spare_normal_ = 0.0;
+  bool has_spare_normal_ = false;
+};
+
+// The raw Philox4x32-10 bijection, exposed for the known-answer test.
+std::array<std::uint32_t, 4> Philox4x32(std::array<std::uint32_t, 4> counter, std::array<std::uint32_t, 2> key);
+
+}  // namespace anchorbench::sim

@@ -1,0 +1,38 @@
+#pragma once
+
+#include <string>
+#include <string_view>
+
+namespace anchorbench::sim {
+
+enum class BiasDistribution { kUniform, kNormal };
+enum class OutlierKind {
+  kPositive,   // NLOS-like: the range is too long by a magnitude in [min, max]
+  kSymmetric,  // spikes of either sign
+};
+
+std::string_view ToString(BiasDistribution d);
+std::string_view ToString(OutlierKind k);
+bool ParseBiasDistribution(std::string_view name, BiasDistribution* d);
+bool ParseOutlierKind(std::string_view name, OutlierKind* k);
+
+// Range model of Eq. (1): d = ||p_U - p_A|| + gamma_A + eta, eta ~ N(0, sigma_d^2), plus outliers.
+struct RangeModelOptions {
+  double sigma_range_m = 0.1;  // sigma_d
+  // Constant per-anchor bias gamma_A: uniform in [bias_a_m, bias_b_m], or normal with
+  // mean bias_a_m and standard deviation bias_b_m.
+  BiasDistribution bias_distribution = BiasDistribution::kUniform;
+  double bias_a_m = -0.3;
+  double bias_b_m = 0.3;
+  double outlier_probability = 0.0;  // per range
+  OutlierKind outlier_kind = OutlierKind::kPositive;
+  double outlier_min_m = 1.0;  // outlier magnitude, uniform in [min, max]
+  double outlier_max_m = 10.0;
+  double max_range_m = 40.0;          // anchors farther than this (true distance) give no range
+  double dropout_probability = 0.0;   // a range inside max_range is lost with this probability
+  double sigma_position_m = 0.0;      // white noise on the reported tag positions (each axis)
+
+  bool IsValid(std::string* why) const;
+};
+
+}  // namespace anchorbench::sim

@@ -1,0 +1,50 @@
+#pragma once
+
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include <Eigen/Core>
+
+#include "anchorbench/sim/environment.hpp"
+#include "anchorbench/sim/random_stream.hpp"
+
+namespace anchorbench::sim {
+
+enum class TrajectoryKind {
+  kRandom,    // smooth random 3D motion (lateral and vertical excursions)
+  kStraight,  // ill-conditioned: straight line at constant height and lateral offset
+  kPlanar,    // ill-conditioned: lateral weaving at constant height
+  kShort,     // ill-conditioned: random motion over a fraction of the environment only
+};
+
+std::string_view ToString(TrajectoryKind kind);
+bool ParseTrajectoryKind(std::string_view name, TrajectoryKind* kind);
+
+struct TrajectoryOptions {
+  TrajectoryKind kind = TrajectoryKind::kRandom;
+  double rate_hz = 10.0;               // tag position (and range) sampling rate
+  double speed_mps = 1.5;              // mean speed along the tunnel
+  double speed_variation = 0.3;        // relative +- variation of the along-track speed
+  double height_m = 2.0;               // mean tag height above the floor
+  double lateral_excursion_m = 2.5;    // max lateral offset from the centre line
+  double vertical_excursion_m = 1.5;   // max vertical offset from height_m (kRandom, kShort)
+  double min_period_s = 8.0;           // periods of the smooth random excursions
+  double max_period_s = 40.0;
+  double short_fraction = 0.25;        // kShort: fraction of the length (tunnel) or duration (hall)
+  double hall_duration_s = 300.0;      // hall trajectories: duration
+
+  bool IsValid(std::string* why) const;
+};
+
+struct Trajectory {
+  std::vector<double> t_s;
+  std::vector<Eigen::Vector3d> p_world_tag;
+};
+
+// From one end of the tunnel towards the other (or a stretch of it, kShort).
+Trajectory TunnelTrajectory(const TunnelOptions& tunnel, const TrajectoryOptions& options, RandomStream& rng);
+// Smooth wandering inside the hall, kept off the walls.
+Trajectory HallTrajectory(const HallOptions& hall, const TrajectoryOptions& options, RandomStream& rng);
+
+}  // namespace anchorbench::sim

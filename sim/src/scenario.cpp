@@ -1,0 +1,86 @@
+#include "anchorbench/sim/scenario.hpp"
+
+#include <algorithm>
+
+#include "anchorbench/sim/random_stream.hpp"
+
+namespace anchorbench::sim {
+namespace {
+
+double DrawBias(const RangeModelOptions& o, RandomStream& rng) {
+  return o.bias_distribution == BiasDistribution::kUniform ? rng.Uniform(o.bias_a_m, o.bias_b_m)
+                                                           : rng.Normal(o.bias_a_m, o.bias_b_m);
+}
+
+double DrawOutlier(const RangeModelOptions& o, RandomStream& rng) {
+  const double magnitude = rng.Uniform(o.outlier_min_m, o.outlier_max_m);
+  if (o.outlier_kind == OutlierKind::kPositive) return magnitude;
+  return rng.Uniform() < 0.5 ? -magnitude : magnitude;
+}
+
+}  // namespace
+
+std::string_view ToString(EnvironmentKind kind) { return kind == EnvironmentKind::kTunnel ? "tunnel" : "hall"; }
+
+bool ParseEnvironmentKind(std::string_view name, EnvironmentKind* kind) {
+  if (name == "tunnel") *kind = EnvironmentKind::kTunnel;
+  else if (name == "hall") *kind = EnvironmentKind::kHall;
+  else return false;
+  return true;
+}
+
+bool ScenarioOptions::IsValid(std::string* why) const {
+  const bool environment_ok = environment == EnvironmentKind::kTunnel ? tunnel.IsValid(why) : hall.IsValid(why);
+  return environment_ok && trajectory.IsValid(why) && ranging.IsValid(why);
+}
+
+Scenario GenerateScenario(const ScenarioOptions& options, std::uint64_t seed, std::uint64_t realization) {
+  Scenario scenario;
+  RandomStream layout(seed, realization, StreamId::kLayout);
+  RandomStream shape(seed, realization, StreamId::kTrajectory);
+  const bool tunnel = options.environment == EnvironmentKind::kTunnel;
+  const std::vector<Eigen::Vector3d> positions =
+      tunnel ? TunnelAnchors(options.tunnel, layout) : HallAnchors(options.hall, layout);
+  Trajectory trajectory = tunnel ? TunnelTrajectory(options.tunnel, options.trajectory, shape)
+                                 : HallTrajectory(options.hall, options.trajectory, shape);
+
+  const RangeModelOptions& model = options.ranging;
+  RandomStream bias_rng(seed, realization, StreamId::kBias);
+  for (std::size_t i = 0; i < positions.size(); ++i) {
+    scenario.anchors.push_back({static_cast<int>(i), positions[i], DrawBias(model, bias_rng)});
+  }
+
+  RandomStream position_rng(seed, realization, StreamId::kPositionNoise);
+  scenario.t_s = std::move(trajectory.t_s);
+  scenario.p_world_tag_true = std::move(trajectory.p_world_tag);
+  scenario.p_world_tag_reported.reserve(scenario.p_world_tag_true.size());
+  for (const Eigen::Vector3d& p : scenario.p_world_tag_true) {
+    const Eigen::Vector3d noise(position_rng.Normal(), position_rng.Normal(), position_rng.Normal());
+    scenario.p_world_tag_reported.push_back(p + model.sigma_position_m * noise);
+  }
+
+  // One stream per anchor and noise source, so an anchor's noise does not depend on which other
+  // anchors happen to be in range.
+  std::vector<RandomStream> noise_rng, outlier_rng, dropout_rng;
+  for (const SimAnchor& anchor : scenario.anchors) {
+    const auto sub = static_cast<std::uint32_t>(anchor.id);
+    noise_rng.emplace_back(seed, realization, StreamId::kRangeNoise, sub);
+    outlier_rng.emplace_back(seed, realization, StreamId::kOutlier, sub);
+    dropout_rng.emplace_back(seed, realization, StreamId::kDropout, sub);
+  }
+  for (std::size_t k = 0; k < scenario.t_s.size(); ++k) {
+    for (const SimAnchor& anchor : scenario.anchors) {
+      const double distance_m = (scenario.p_world_tag_true[k] - anchor.p_world_anchor).norm();
+      if (distance_m > model.max_range_m) continue;
+      if (dropout_rng[anchor.id].Bernoulli(model.dropout_probability)) continue;
+      double range_m = distance_m + anchor.bias_m + model.sigma_range_m * noise_rng[anchor.id].Normal();  // Eq. (1)
+      const bool outlier = outlier_rng[anchor.id].Bernoulli(model.outlier_probability);
+      if (outlier) range_m += DrawOutlier(model, outlier_rng[anchor.id]);
+      // A ranging device never reports a negative distance.
+      scenario.ranges.push_back({scenario.t_s[k], 0, anchor.id, std::max(range_m, 0.0), outlier});
+    }
+  }
+  return scenario;
+}
+
+}  // namespace anchorbench::sim

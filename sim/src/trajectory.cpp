@@ -1,0 +1,142 @@
+#include "anchorbench/sim/trajectory.hpp"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <numbers>
+
+namespace anchorbench::sim {
+namespace {
+
+constexpr double kWallClearance_m = 0.3;
+
+// A smooth random signal in [-1, 1]: a normalized sum of three sinusoids with random periods,
+// phases and amplitudes.
+class SmoothSignal {
+ public:
+  SmoothSignal(RandomStream& rng, double min_period_s, double max_period_s) {
+    double total = 0.0;
+    for (Component& c : components_) {
+      c.amplitude = rng.Uniform(0.5, 1.0);
+      c.omega = 2.0 * std::numbers::pi / rng.Uniform(min_period_s, max_period_s);
+      c.phase = rng.Uniform(0.0, 2.0 * std::numbers::pi);
+      total += c.amplitude;
+    }
+    for (Component& c : components_) c.amplitude /= total;
+  }
+
+  double operator()(double t_s) const {
+    double value = 0.0;
+    for (const Component& c : components_) value += c.amplitude * std::sin(c.omega * t_s + c.phase);
+    return value;
+  }
+
+ private:
+  struct Component {
+    double amplitude, omega, phase;
+  };
+  std::array<Component, 3> components_;
+};
+
+}  // namespace
+
+std::string_view ToString(TrajectoryKind kind) {
+  switch (kind) {
+    case TrajectoryKind::kRandom: return "random";
+    case TrajectoryKind::kStraight: return "straight";
+    case TrajectoryKind::kPlanar: return "planar";
+    case TrajectoryKind::kShort: return "short";
+  }
+  return "unknown";
+}
+
+bool ParseTrajectoryKind(std::string_view name, TrajectoryKind* kind) {
+  for (TrajectoryKind k : {TrajectoryKind::kRandom, TrajectoryKind::kStraight, TrajectoryKind::kPlanar,
+                           TrajectoryKind::kShort}) {
+    if (name == ToString(k)) {
+      *kind = k;
+      return true;
+    }
+  }
+  return false;
+}
+
+bool TrajectoryOptions::IsValid(std::string* why) const {
+  auto fail = [why](const char* m) {
+    if (why) *why = m;
+    return false;
+  };
+  if (!(rate_hz > 0.0 && rate_hz <= 1000.0)) return fail("rate_hz must be in (0, 1000]");
+  if (!(speed_mps > 0.0)) return fail("speed_mps must be > 0");
+  if (!(speed_variation >= 0.0 && speed_variation < 1.0)) return fail("speed_variation must be in [0, 1)");
+  if (!(height_m >= 0.0)) return fail("height_m must be >= 0");
+  if (!(lateral_excursion_m >= 0.0) || !(vertical_excursion_m >= 0.0)) return fail("excursions must be >= 0");
+  if (!(min_period_s > 0.0 && min_period_s <= max_period_s)) return fail("periods must satisfy 0 < min <= max");
+  if (!(short_fraction > 0.0 && short_fraction <= 1.0)) return fail("short_fraction must be in (0, 1]");
+  if (!(hall_duration_s > 0.0)) return fail("hall_duration_s must be > 0");
+  return true;
+}
+
+Trajectory TunnelTrajectory(const TunnelOptions& tunnel, const TrajectoryOptions& o, RandomStream& rng) {
+  const SmoothSignal lateral(rng, o.min_period_s, o.max_period_s);
+  const SmoothSignal vertical(rng, o.min_period_s, o.max_period_s);
+  const SmoothSignal speed(rng, o.min_period_s, o.max_period_s);
+  const double fraction = o.kind == TrajectoryKind::kShort ? o.short_fraction : 1.0;
+  const double x_start = rng.Uniform(0.0, (1.0 - fraction) * tunnel.length_m);
+  const double x_end = x_start + fraction * tunnel.length_m;
+  const double y_offset = rng.Uniform(-o.lateral_excursion_m, o.lateral_excursion_m);  // kStraight
+  const bool weaves = o.kind != TrajectoryKind::kStraight;
+  const bool climbs = o.kind == TrajectoryKind::kRandom || o.kind == TrajectoryKind::kShort;
+  const double y_limit = std::max(0.0, 0.5 * tunnel.width_m - kWallClearance_m);
+  const double z_low = std::min(kWallClearance_m, tunnel.height_m);
+  const double z_high = std::max(z_low, tunnel.height_m - kWallClearance_m);
+
+  Trajectory trajectory;
+  const double dt = 1.0 / o.rate_hz;
+  double x = x_start;
+  for (long k = 0; x <= x_end; ++k) {
+    const double t = k * dt;
+    const double y = weaves ? o.lateral_excursion_m * lateral(t) : y_offset;
+    const double z = climbs ? o.height_m + o.vertical_excursion_m * vertical(t) : o.height_m;
+    trajectory.t_s.push_back(t);
+    trajectory.p_world_tag.emplace_back(x, std::clamp(y, -y_limit, y_limit), std::clamp(z, z_low, z_high));
+    x += o.speed_mps * (1.0 + o.speed_variation * speed(t)) * dt;
+  }
+  return trajectory;
+}
+
+Trajectory HallTrajectory(const HallOptions& hall, const TrajectoryOptions& o, RandomStream& rng) {
+  const SmoothSignal along(rng, o.min_period_s, o.max_period_s);
+  const SmoothSignal across(rng, o.min_period_s, o.max_period_s);
+  const SmoothSignal vertical(rng, o.min_period_s, o.max_period_s);
+  const double half_x = std::max(0.0, 0.5 * hall.length_m - kWallClearance_m);
+  const double half_y = std::max(0.0, 0.5 * hall.width_m - kWallClearance_m);
+  const double duration_s = o.hall_duration_s * (o.kind == TrajectoryKind::kShort ? o.short_fraction : 1.0);
+  const double z_low = std::min(kWallClearance_m, hall.height_m);
+  const double z_high = std::max(z_low, hall.height_m - kWallClearance_m);
+  const bool climbs = o.kind == TrajectoryKind::kRandom || o.kind == TrajectoryKind::kShort;
+  // kStraight: one pass along the hall's long axis at a random lateral offset.
+  const double y_offset = rng.Uniform(-half_y, half_y);
+
+  Trajectory trajectory;
+  const double dt = 1.0 / o.rate_hz;
+  for (long k = 0; k * dt <= duration_s; ++k) {
+    const double t = k * dt;
+    Eigen::Vector3d p;
+    if (o.kind == TrajectoryKind::kStraight) {
+      p.x() = -half_x + 2.0 * half_x * t / duration_s;
+      p.y() = y_offset;
+    } else {
+      p.x() = half_x * along(t);
+      p.y() = half_y * across(t);
+    }
+    p.x() += 0.5 * hall.length_m;
+    p.y() += 0.5 * hall.width_m;
+    p.z() = std::clamp(climbs ? o.height_m + o.vertical_excursion_m * vertical(t) : o.height_m, z_low, z_high);
+    trajectory.t_s.push_back(t);
+    trajectory.p_world_tag.push_back(p);
+  }
+  return trajectory;
+}
+
+}  // namespace anchorbench::sim
