@@ -60,6 +60,17 @@ class RowBuilder {
 
 }  // namespace
 
+std::string_view ToString(LsPivot pivot) {
+  return pivot == LsPivot::kShortestRange ? "shortest_range" : "minimum_variance";
+}
+
+bool ParseLsPivot(std::string_view name, LsPivot* pivot) {
+  if (name == "shortest_range") *pivot = LsPivot::kShortestRange;
+  else if (name == "minimum_variance") *pivot = LsPivot::kMinimumVariance;
+  else return false;
+  return true;
+}
+
 bool LsOptions::IsValid(std::string* why) const {
   if (!(sigma_range_m > 0.0) || !(sigma_position_m >= 0.0)) {
     if (why) *why = "sigma_range_m must be > 0 and sigma_position_m >= 0";

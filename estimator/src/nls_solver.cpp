@@ -64,6 +64,15 @@ double Cost(std::span<const Eigen::Vector3d> p, std::span<const double> d, const
 
 }  // namespace
 
+std::string_view ToString(KernelMode kernel) { return kernel == KernelMode::kL2 ? "l2" : "adaptive"; }
+
+bool ParseKernelMode(std::string_view name, KernelMode* kernel) {
+  if (name == "l2") *kernel = KernelMode::kL2;
+  else if (name == "adaptive") *kernel = KernelMode::kAdaptive;
+  else return false;
+  return true;
+}
+
 bool NlsOptions::IsValid(std::string* why) const {
   auto fail = [why](const char* message) {
     if (why) *why = message;
@@ -97,7 +106,9 @@ NlsSolver::Stage NlsSolver::Refine(std::span<const Eigen::Vector3d> p, std::span
   Cost(p, d, stage.theta, stage.alpha, c, histogram);
   while (stage.iterations < options_.max_iterations) {
     const double previous_alpha = stage.alpha;
-    if (adaptive) stage.alpha = selector->Select();  // alpha step of the alternation
+    if (adaptive) {  // alpha step of the alternation
+      stage.alpha = selector->Select(stage.iterations == 0 ? std::nullopt : std::optional<double>(stage.alpha));
+    }
     const NormalEquations eq = BuildNormalEquations(p, d, stage.theta, stage.alpha, c);
     if (!std::isfinite(eq.cost) || !eq.information.allFinite()) {
       stage.status = SolveStatus::kNumericalFailure;

@@ -46,4 +46,22 @@ double TruePdop(std::span<const Eigen::Vector3d> p_world_tag, const Eigen::Vecto
   return PdopFromInformation(information);
 }
 
+double BiasAwareDop(std::span<const Eigen::Vector3d> p_world_tag, const Eigen::Vector3d& p_world_anchor) {
+  Eigen::Matrix3d sum_outer = Eigen::Matrix3d::Zero();
+  Eigen::Vector3d sum_unit = Eigen::Vector3d::Zero();
+  double n = 0.0;
+  for (const Eigen::Vector3d& p : p_world_tag) {
+    const Eigen::Vector3d diff = p - p_world_anchor;
+    const double distance_m = diff.norm();
+    if (distance_m <= 0.0) continue;
+    const Eigen::Vector3d unit = diff / distance_m;
+    sum_outer += unit * unit.transpose();
+    sum_unit += unit;
+    n += 1.0;
+  }
+  if (n < 2.0) return std::numeric_limits<double>::infinity();
+  // sum (u - u_mean)(u - u_mean)^T = sum u u^T - (sum u)(sum u)^T / n
+  return PdopFromInformation(sum_outer - sum_unit * sum_unit.transpose() / n);
+}
+
 }  // namespace anchorbench::estimator

@@ -24,12 +24,13 @@ KernelValue EvaluateKernel(double x, double alpha) {
   const double x2 = x * x;
   if (IsL2(alpha)) return {0.5 * x2, 1.0};
   const double abs_alpha_minus_2 = std::abs(alpha - 2.0);
-  const double log_base = std::log1p(x2 / abs_alpha_minus_2);  // log(x^2/|alpha-2| + 1)
-  const double weight = std::exp((0.5 * alpha - 1.0) * log_base);
-  if (IsCauchy(alpha)) return {log_base, weight};  // |alpha-2| = 2: log(x^2/2 + 1)
-  // Eq. (13), with expm1 so the alpha -> 0 approach keeps its precision.
-  const double rho = abs_alpha_minus_2 / alpha * std::expm1(0.5 * alpha * log_base);
-  return {rho, weight};
+  const double base = x2 / abs_alpha_minus_2 + 1.0;        // x^2/|alpha-2| + 1
+  const double log_base = std::log1p(x2 / abs_alpha_minus_2);
+  if (IsCauchy(alpha)) return {log_base, 1.0 / base};        // |alpha-2| = 2: log(x^2/2 + 1), 2/(x^2+2)
+  // Eq. (13) with expm1, so the alpha -> 0 approach keeps its precision; the weight
+  // base^(alpha/2 - 1) = base^(alpha/2) / base reuses the same power.
+  const double power_minus_1 = std::expm1(0.5 * alpha * log_base);
+  return {abs_alpha_minus_2 / alpha * power_minus_1, (power_minus_1 + 1.0) / base};
 }
 
 double Rho(double x, double alpha) { return EvaluateKernel(x, alpha).rho; }
@@ -108,28 +109,36 @@ double AlphaSelector::ExactNll(std::span<const double> x, double alpha, const Lo
   return static_cast<double>(x.size()) * table.LogZ(alpha) + sum_rho;
 }
 
-double AlphaSelector::Select() const {
+double AlphaSelector::Select(std::optional<double> previous_alpha) const {
   const double alpha_min = table_->alpha_min();
   if (total_count_ == 0.0) return 2.0;
-  // Coarse grid first: the NLL can have a shallow second minimum, and a local search from a
-  // fixed start would miss the global one.
   constexpr int kGrid = 13;
   const double grid_step = (2.0 - alpha_min) / (kGrid - 1);
   double best_alpha = 2.0;
   double best_nll = Nll(2.0);
-  for (int i = 0; i < kGrid - 1; ++i) {
-    const double alpha = alpha_min + i * grid_step;
-    const double nll = Nll(alpha);
-    if (nll < best_nll) {
-      best_nll = nll;
-      best_alpha = alpha;
+  double lower = alpha_min, upper = 2.0;
+  if (previous_alpha) {
+    // Inside the alternation alpha moves little between iterations: refine locally from the last one.
+    best_alpha = *previous_alpha;
+    best_nll = Nll(best_alpha);
+  } else {
+    // From scratch, a coarse grid first: the NLL can have a shallow second minimum that a local
+    // search from a fixed start would miss.
+    for (int i = 0; i < kGrid - 1; ++i) {
+      const double alpha = alpha_min + i * grid_step;
+      const double nll = Nll(alpha);
+      if (nll < best_nll) {
+        best_nll = nll;
+        best_alpha = alpha;
+      }
     }
+    lower = std::max(alpha_min, best_alpha - grid_step);
+    upper = std::min(2.0, best_alpha + grid_step);
   }
-  // NLopt refines inside the bracket around the best grid point.
   nlopt::opt optimizer(nlopt::LN_COBYLA, 1);
-  optimizer.set_lower_bounds(std::max(alpha_min, best_alpha - grid_step));
-  optimizer.set_upper_bounds(std::min(2.0, best_alpha + grid_step));
-  optimizer.set_xtol_abs(1e-3);
+  optimizer.set_lower_bounds(lower);
+  optimizer.set_upper_bounds(upper);
+  optimizer.set_xtol_abs(kAlphaTolerance);
   optimizer.set_maxeval(40);
   optimizer.set_initial_step(0.25 * grid_step);
   auto objective = [](unsigned, const double* a, double*, void* self) {
@@ -141,7 +150,7 @@ double AlphaSelector::Select() const {
   try {
     optimizer.optimize(alpha, nll);
   } catch (const std::exception&) {
-    return best_alpha;  // NLopt gave up (round-off): the grid point stands
+    return best_alpha;  // NLopt gave up (round-off): the best point so far stands
   }
   return nll <= best_nll ? alpha[0] : best_alpha;
 }

@@ -3,6 +3,7 @@
 #include <cmath>
 #include <limits>
 
+#include <Eigen/Dense>
 #include <gtest/gtest.h>
 
 #include "anchorbench/estimator/pdop.hpp"
@@ -137,6 +138,21 @@ TEST(Pdop, OrthogonalUnitDirectionsGiveSqrtThree) {
   // Three orthogonal unit rows: G^T G = I, so PDOP = sqrt(tr(I)) = sqrt(3).
   const std::vector<Eigen::Vector3d> p = {{5, 0, 0}, {0, 5, 0}, {0, 0, 5}};
   EXPECT_NEAR(TruePdop(p, Eigen::Vector3d::Zero()), std::sqrt(3.0), 1e-12);
+}
+
+TEST(Pdop, BiasAwareDopIsPositionBlockOfFourParameterInverse) {
+  auto rng = testing::TestStream(8);
+  const auto data = testing::BoxData(rng, 60, Eigen::Vector3d(0, 0, 3), Eigen::Vector3d(6, 1, 1), 4.0, 0.0, 0.0);
+  Eigen::Matrix4d information = Eigen::Matrix4d::Zero();
+  for (const auto& p : data.p_world_tag) {
+    Eigen::Vector4d h;
+    h << (p - data.p_world_anchor).normalized(), 1.0;  // H = [G | 1]
+    information += h * h.transpose();
+  }
+  const double direct = std::sqrt(information.inverse().topLeftCorner<3, 3>().trace());
+  const double bias_aware = BiasAwareDop(data.p_world_tag, data.p_world_anchor);
+  EXPECT_NEAR(bias_aware, direct, 1e-9 * direct);
+  EXPECT_GE(bias_aware, TruePdop(data.p_world_tag, data.p_world_anchor));
 }
 
 }  // namespace

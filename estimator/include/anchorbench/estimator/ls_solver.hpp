@@ -2,6 +2,7 @@
 
 #include <span>
 #include <string>
+#include <string_view>
 
 #include "anchorbench/estimator/solve_result.hpp"
 
@@ -13,6 +14,9 @@ enum class LsPivot {
                      // rows weighted by the inverse of that variance model (world-frame dependent,
                      // as in the original)
 };
+
+std::string_view ToString(LsPivot pivot);
+bool ParseLsPivot(std::string_view name, LsPivot* pivot);
 
 struct LsOptions {
   LsPivot pivot = LsPivot::kShortestRange;

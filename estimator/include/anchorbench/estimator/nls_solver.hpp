@@ -3,6 +3,7 @@
 #include <memory>
 #include <span>
 #include <string>
+#include <string_view>
 
 #include "anchorbench/estimator/robust_kernel.hpp"
 #include "anchorbench/estimator/solve_result.hpp"
@@ -14,14 +15,17 @@ enum class KernelMode {
   kAdaptive,  // alpha estimated jointly, Eq. (12)
 };
 
+std::string_view ToString(KernelMode kernel);
+bool ParseKernelMode(std::string_view name, KernelMode* kernel);
+
 struct NlsOptions {
   KernelMode kernel = KernelMode::kAdaptive;
   double alpha_min = -10.0;       // lower end of the alpha search; 2 is the upper end
   double kernel_scale_m = 0.1;    // c of Eq. (13); the residual scale the kernel treats as "normal"
   double truncation = 10.0;       // |r/c| bound of the truncated density's normalizer Z~(alpha)
   int max_iterations = 50;        // LM iterations per stage (L2 warm start, adaptive)
-  double step_tolerance_m = 1e-6;  // converged when ||delta theta|| falls below this...
-  double alpha_tolerance = 1e-3;   // ...and alpha moved less than this
+  double step_tolerance_m = 1e-4;  // converged when ||delta theta|| falls below this...
+  double alpha_tolerance = 1e-2;   // ...and alpha moved less than this
   double initial_damping = 1e-4;   // LM lambda, relative to diag(J^T W J)
   // Adaptive mode: first converge with alpha = 2 from the LS seed, then adapt. With outliers the
   // LS seed can sit metres away, where every residual looks like an outlier, alpha collapses to

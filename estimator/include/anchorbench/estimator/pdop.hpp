@@ -18,4 +18,10 @@ double GeometryPdop(std::span<const Eigen::Vector3d> p_world_tag, std::span<cons
 // the unit vector from the anchor to the tag.
 double TruePdop(std::span<const Eigen::Vector3d> p_world_tag, const Eigen::Vector3d& p_world_anchor);
 
+// Bias-aware DOP: with the bias gamma estimated too, H = [G | 1] and the anchor-position block of
+// (H^T H)^-1 is (sum_k (u_k - u_mean)(u_k - u_mean)^T)^-1 (Schur complement), u_k the unit rows.
+// sigma_d times its root trace is the Cramer-Rao bound on the position error of (p_A, gamma);
+// it is always >= TruePdop, since only the spread of the viewing directions counts.
+double BiasAwareDop(std::span<const Eigen::Vector3d> p_world_tag, const Eigen::Vector3d& p_world_anchor);
+
 }  // namespace anchorbench::estimator

@@ -2,6 +2,7 @@
 
 #include <array>
 #include <memory>
+#include <optional>
 #include <span>
 #include <vector>
 
@@ -56,17 +57,20 @@ class LogPartitionTable {
 // The residuals are summarized in kBins bins evenly spaced in log(1 + |x|) up to kMaxAbsX (larger
 // values share the last bin); each bin keeps its count and the mean of x^2, so one NLL evaluation
 // costs kBins kernel evaluations instead of N. The truncation only normalizes the density;
-// residuals beyond it still count with their rho. NLopt refines the best point of a coarse grid.
+// residuals beyond it still count with their rho.
 class AlphaSelector {
  public:
   static constexpr int kBins = 48;
   static constexpr double kMaxAbsX = 1e3;
+  static constexpr double kAlphaTolerance = 1e-2;  // NLopt's x tolerance on alpha
 
   explicit AlphaSelector(std::shared_ptr<const LogPartitionTable> table);
 
   void Clear();
   void Add(double x);  // one normalized residual r / c
-  double Select() const;  // argmin NLL over [alpha_min, 2]
+  // argmin NLL over [alpha_min, 2]: a coarse grid plus NLopt refinement, or, given the previous
+  // iteration's alpha, NLopt refinement from there.
+  double Select(std::optional<double> previous_alpha = std::nullopt) const;
   double Nll(double alpha) const;  // from the histogram: what Select minimizes
   // NLL evaluated exactly on residuals, for tests.
   static double ExactNll(std::span<const double> x, double alpha, const LogPartitionTable& table);

@@ -1,0 +1,172 @@
+#include "anchorbench/experiments/config.hpp"
+
+#include <filesystem>
+#include <limits>
+
+#include "anchorbench/experiments/input_error.hpp"
+
+namespace anchorbench::experiments {
+namespace {
+
+constexpr Bounds kAny{};
+constexpr Bounds kNonNegative{0.0};
+constexpr Bounds kPositive{0.0, 1e300, true};
+constexpr Bounds kProbability{0.0, 1.0};
+
+// One visitor per options struct lists its keys once; YamlSection reads them, YamlWriter writes them.
+
+// The keys tunnels and halls share: a box and its anchors.
+template <typename V, typename Box>
+void VisitBox(V& v, Box& o) {
+  v.Number("length_m", o.length_m, kPositive);
+  v.Number("width_m", o.width_m, kPositive);
+  v.Number("height_m", o.height_m, kPositive);
+  v.Integer("num_anchors", o.num_anchors, 1, 10000);
+  v.Number("anchor_height_min_m", o.anchor_height_min_m, kNonNegative);
+  v.Number("anchor_height_max_m", o.anchor_height_max_m, kNonNegative);
+}
+
+template <typename V>
+void VisitTunnel(V& v, sim::TunnelOptions& o) {
+  VisitBox(v, o);
+  v.Number("along_jitter_m", o.along_jitter_m, kNonNegative);
+  v.Check(o);
+}
+
+template <typename V>
+void VisitHall(V& v, sim::HallOptions& o) {
+  VisitBox(v, o);
+  v.Check(o);
+}
+
+template <typename V>
+void VisitTrajectory(V& v, sim::TrajectoryOptions& o) {
+  v.Choice("kind", o.kind, sim::ParseTrajectoryKind, [](auto k) { return sim::ToString(k); },
+           "random, straight, planar, short");
+  v.Number("rate_hz", o.rate_hz, {0.0, 1000.0, true});
+  v.Number("speed_mps", o.speed_mps, kPositive);
+  v.Number("speed_variation", o.speed_variation, {0.0, 0.99});
+  v.Number("height_m", o.height_m, kNonNegative);
+  v.Number("lateral_excursion_m", o.lateral_excursion_m, kNonNegative);
+  v.Number("vertical_excursion_m", o.vertical_excursion_m, kNonNegative);
+  v.Number("min_period_s", o.min_period_s, kPositive);
+  v.Number("max_period_s", o.max_period_s, kPositive);
+  v.Number("short_fraction", o.short_fraction, {0.0, 1.0, true});
+  v.Number("hall_duration_s", o.hall_duration_s, kPositive);
+  v.Check(o);
+}
+
+template <typename V>
+void VisitRanging(V& v, sim::RangeModelOptions& o) {
+  v.Number("sigma_range_m", o.sigma_range_m, kNonNegative);
+  v.Choice("bias_distribution", o.bias_distribution, sim::ParseBiasDistribution,
+           [](auto d) { return sim::ToString(d); }, "uniform, normal");
+  v.Number("bias_a_m", o.bias_a_m, kAny);
+  v.Number("bias_b_m", o.bias_b_m, kAny);
+  v.Number("outlier_probability", o.outlier_probability, kProbability);
+  v.Choice("outlier_kind", o.outlier_kind, sim::ParseOutlierKind, [](auto k) { return sim::ToString(k); },
+           "positive, symmetric");
+  v.Number("outlier_min_m", o.outlier_min_m, kNonNegative);
+  v.Number("outlier_max_m", o.outlier_max_m, kNonNegative);
+  v.Number("max_range_m", o.max_range_m, kPositive);
+  v.Number("dropout_probability", o.dropout_probability, {0.0, 0.99});
+  v.Number("sigma_position_m", o.sigma_position_m, kNonNegative);
+  v.Check(o);
+}
+
+template <typename V>
+void VisitScenario(V& v, sim::ScenarioOptions& o) {
+  v.Choice("environment", o.environment, sim::ParseEnvironmentKind, [](auto k) { return sim::ToString(k); },
+           "tunnel, hall");
+  v.Section("tunnel", [&](auto& s) { VisitTunnel(s, o.tunnel); });
+  v.Section("hall", [&](auto& s) { VisitHall(s, o.hall); });
+  v.Section("trajectory", [&](auto& s) { VisitTrajectory(s, o.trajectory); });
+  v.Section("ranging", [&](auto& s) { VisitRanging(s, o.ranging); });
+  v.Check(o);
+}
+
+template <typename V>
+void VisitEstimator(V& v, estimator::InitializerOptions& o) {
+  v.Section("filter", [&](auto& s) {
+    s.Flag("enabled", o.filter.enabled);
+    s.Number("tau_m", o.filter.tau_m, kNonNegative);
+    s.Integer("reseed_after_rejections", o.filter.reseed_after_rejections, 0, 1000000);
+  });
+  v.Section("trigger", [&](auto& s) {
+    s.Number("pdop_threshold", o.pdop_threshold, kPositive);
+    s.Integer("min_samples", o.min_samples, 6, 100000000);
+    s.Number("retry_growth", o.retry_growth, {1.0, 1e300, true});
+  });
+  v.Section("ls", [&](auto& s) {
+    estimator::LsOptions& ls = o.solver.ls;
+    s.Choice("pivot", ls.pivot, estimator::ParseLsPivot, [](auto p) { return estimator::ToString(p); },
+             "shortest_range, minimum_variance");
+    s.Number("sigma_range_m", ls.sigma_range_m, kPositive);
+    s.Number("sigma_position_m", ls.sigma_position_m, kNonNegative);
+  });
+  v.Section("nls", [&](auto& s) {
+    estimator::NlsOptions& n = o.solver.nls;
+    s.Choice("kernel", n.kernel, estimator::ParseKernelMode, [](auto k) { return estimator::ToString(k); },
+             "adaptive, l2");
+    s.Number("alpha_min", n.alpha_min, {-1000.0, 2.0});
+    s.Number("kernel_scale_m", n.kernel_scale_m, kPositive);
+    s.Number("truncation", n.truncation, kPositive);
+    s.Integer("max_iterations", n.max_iterations, 1, 100000);
+    s.Number("step_tolerance_m", n.step_tolerance_m, kPositive);
+    s.Number("alpha_tolerance", n.alpha_tolerance, kPositive);
+    s.Number("initial_damping", n.initial_damping, kNonNegative);
+    s.Flag("l2_warm_start", n.l2_warm_start);
+    s.Check(n);
+  });
+  v.Check(o);
+}
+
+template <typename V>
+void VisitExperiment(V& v, ExperimentConfig& c) {
+  int seed = static_cast<int>(c.seed);
+  v.Integer("seed", seed, 0, std::numeric_limits<int>::max());
+  c.seed = static_cast<std::uint64_t>(seed);
+  v.Section("scenario", [&](auto& s) { VisitScenario(s, c.scenario); });
+  v.Section("estimator", [&](auto& s) { VisitEstimator(s, c.estimator); });
+}
+
+}  // namespace
+
+void ParseScenario(YamlSection& section, sim::ScenarioOptions& options) {
+  VisitScenario(section, options);
+  section.Finish();
+}
+
+void ParseEstimator(YamlSection& section, estimator::InitializerOptions& options) {
+  VisitEstimator(section, options);
+  section.Finish();
+}
+
+ExperimentConfig LoadConfig(const std::string& path) {
+  YAML::Node root;
+  try {
+    root = YAML::LoadFile(path);
+  } catch (const YAML::BadFile&) {
+    throw InputError(path + ": cannot open the config file");
+  } catch (const YAML::ParserException& e) {
+    throw InputError(path + ":" + std::to_string(e.mark.line + 1) + ": YAML syntax error: " + e.msg);
+  }
+  ExperimentConfig config;
+  config.name = std::filesystem::path(path).stem().string();
+  YamlSection top(root, "", path);
+  VisitExperiment(top, config);
+  top.Finish();
+  return config;
+}
+
+std::string ToYaml(const ExperimentConfig& config) {
+  ExperimentConfig copy = config;
+  YAML::Node root(YAML::NodeType::Map);
+  YamlWriter writer(root);
+  VisitExperiment(writer, copy);
+  YAML::Emitter out;
+  out << root;
+  return out.c_str();
+}
+
+}  // namespace anchorbench::experiments

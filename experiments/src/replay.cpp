@@ -1,0 +1,99 @@
+#include "anchorbench/experiments/replay.hpp"
+
+#include <cmath>
+#include <iomanip>
+#include <sstream>
+
+#include "anchorbench/experiments/csv_reader.hpp"
+
+namespace anchorbench::experiments {
+namespace {
+
+std::string Optional(const std::optional<double>& value) { return value ? FormatNumber(*value) : ""; }
+
+// The columns of estimates.csv for one outcome, as text (empty where not applicable).
+std::vector<std::string> EstimateFields(const AttemptOutcome& o) {
+  const bool has_estimate = o.initialized && o.solve;
+  const Eigen::Vector3d p = has_estimate ? o.solve->p_world_anchor : Eigen::Vector3d::Zero();
+  return {std::to_string(o.anchor_id),
+          std::string(MethodName(o.method)),
+          o.initialized ? "1" : "0",
+          Optional(o.t_init_s),
+          std::to_string(o.n_used),
+          FormatNumber(o.pdop_estimate),
+          Optional(o.pdop_true),
+          has_estimate ? FormatNumber(p.x()) : "",
+          has_estimate ? FormatNumber(p.y()) : "",
+          has_estimate ? FormatNumber(p.z()) : "",
+          has_estimate ? FormatNumber(o.solve->bias_m) : "",
+          Optional(o.error_m)};
+}
+
+constexpr const char* kEstimateColumns[] = {"anchor_id", "method", "initialized", "t_init", "n_used", "pdop_est",
+                                            "pdop_true", "x", "y", "z", "bias", "err_m"};
+
+}  // namespace
+
+ReplayResult Replay(const PoseTracks& poses, const std::vector<RangeRecord>& ranges,
+                    const std::map<int, AnchorTruth>* truth, const estimator::InitializerOptions& options,
+                    const TraceSink& trace) {
+  ReplayResult result;
+  AnchorBank bank(options);
+  double t_end_s = 0.0;
+  for (const RangeRecord& range : ranges) {
+    const std::optional<Eigen::Vector3d> p_world_tag = poses.At(range.tag_id, range.t_s);
+    if (!p_world_tag) {
+      if (result.ranges_skipped++ == 0) result.first_skipped_line = range.line;
+      continue;
+    }
+    const estimator::FeedResult fed = bank.Feed({range.t_s, range.tag_id, range.anchor_id, range.range_m, *p_world_tag});
+    if (trace) trace(range, fed);
+    t_end_s = range.t_s;
+    ++result.ranges_used;
+  }
+  result.outcomes = bank.Finish(t_end_s, truth);
+  return result;
+}
+
+void WriteEstimates(std::ostream& out, const std::vector<AttemptOutcome>& outcomes) {
+  for (std::size_t i = 0; i < std::size(kEstimateColumns); ++i) out << (i ? "," : "") << kEstimateColumns[i];
+  out << '\n';
+  for (const AttemptOutcome& o : outcomes) {
+    const std::vector<std::string> fields = EstimateFields(o);
+    for (std::size_t i = 0; i < fields.size(); ++i) out << (i ? "," : "") << fields[i];
+    out << '\n';
+  }
+}
+
+void PrintEstimates(std::ostream& out, const std::vector<AttemptOutcome>& outcomes) {
+  constexpr int kWidth[] = {10, 7, 12, 10, 8, 10, 10, 10, 10, 10, 10, 10};
+  auto cell = [](double v) {
+    std::ostringstream s;
+    s << std::fixed << std::setprecision(3) << v;
+    return s.str();
+  };
+  for (std::size_t i = 0; i < std::size(kEstimateColumns); ++i) out << std::setw(kWidth[i]) << kEstimateColumns[i];
+  out << '\n';
+  for (const AttemptOutcome& o : outcomes) {
+    std::vector<std::string> fields = EstimateFields(o);
+    // Terminal view: three decimals instead of the lossless CSV text.
+    const std::optional<double> numbers[] = {o.t_init_s, o.pdop_estimate, o.pdop_true};
+    const int columns[] = {3, 5, 6};
+    for (int k = 0; k < 3; ++k)
+      if (numbers[k] && std::isfinite(*numbers[k])) fields[columns[k]] = cell(*numbers[k]);
+    if (o.initialized && o.solve) {
+      for (int k = 0; k < 3; ++k) fields[7 + k] = cell(o.solve->p_world_anchor[k]);
+      fields[10] = cell(o.solve->bias_m);
+    }
+    if (o.error_m) fields[11] = cell(*o.error_m);
+    for (std::size_t i = 0; i < fields.size(); ++i) out << std::setw(kWidth[i]) << (fields[i].empty() ? "-" : fields[i]);
+    out << '\n';
+  }
+}
+
+void WriteTraceRow(std::ostream& out, const RangeRecord& range, const estimator::FeedResult& fed) {
+  out << FormatNumber(range.t_s) << ',' << range.tag_id << ',' << range.anchor_id << ',' << FormatNumber(range.range_m)
+      << ',' << (fed.accepted ? 1 : 0) << ',' << fed.n_accepted << ',' << FormatNumber(fed.pdop) << '\n';
+}
+
+}  // namespace anchorbench::experiments

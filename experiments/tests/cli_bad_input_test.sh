@@ -1,0 +1,62 @@
+#!/usr/bin/env bash
+# Command-line bad input: each case must exit non-zero with one clear message naming the place,
+# and must not leave output files behind.
+set -u
+bin="$1"
+dir=$(mktemp -d)
+trap 'rm -rf "$dir"' EXIT
+failures=0
+
+# expect_error DESCRIPTION EXPECTED_TEXT COMMAND...
+expect_error() {
+  local what="$1" expected="$2"
+  shift 2
+  local err
+  err=$("$@" 2>&1 >/dev/null)
+  local code=$?
+  if [ $code -eq 0 ]; then
+    echo "FAIL: $what: exit code 0"; failures=$((failures + 1))
+  elif ! grep -qF -- "$expected" <<<"$err"; then
+    echo "FAIL: $what: message lacks '$expected': $err"; failures=$((failures + 1))
+  elif [ "$(wc -l <<<"$err")" -ne 1 ]; then
+    echo "FAIL: $what: expected one line, got: $err"; failures=$((failures + 1))
+  else
+    echo "ok: $what -> $err"
+  fi
+}
+
+printf 'seed: 1\nscenario:\n  ranging:\n    sigma_range_m: -1\n' >"$dir/neg.yaml"
+printf 'seed: 1\nbogus: 2\n' >"$dir/unknown.yaml"
+printf 'seed: 1\nscenario:\n  tunnel:\n    length_m: 60\n    num_anchors: 4\n' >"$dir/ok.yaml"
+expect_error "negative sigma" "key 'scenario.ranging.sigma_range_m': must be >= 0" "$bin" simulate "$dir/neg.yaml" --out "$dir/sim"
+expect_error "unknown key" "key 'bogus': unknown key" "$bin" simulate "$dir/unknown.yaml" --out "$dir/sim"
+expect_error "missing config" "cannot open the config file" "$bin" simulate "$dir/none.yaml" --out "$dir/sim"
+[ -e "$dir/sim" ] && { echo "FAIL: output folder created on bad input"; failures=$((failures + 1)); }
+
+"$bin" simulate "$dir/ok.yaml" --out "$dir/sim" >/dev/null || { echo "FAIL: simulate"; exit 1; }
+printf 't,tag_id,anchor_id,range\n0,0,1,5\n0.1,0,1,abc\n' >"$dir/bad_ranges.csv"
+printf 't,tag_id,anchor_id,range\n1,0,1,5\n0.5,0,1,5\n' >"$dir/back_ranges.csv"
+printf 't,tag_id,x,y\n0,0,1,2\n' >"$dir/bad_poses.csv"
+expect_error "non-number range" "bad_ranges.csv:3: column 'range': 'abc' is not a number" \
+  "$bin" replay --poses "$dir/sim/poses.csv" --ranges "$dir/bad_ranges.csv" --out "$dir/out1"
+expect_error "time backwards" "back_ranges.csv:3: time goes backwards" \
+  "$bin" replay --poses "$dir/sim/poses.csv" --ranges "$dir/back_ranges.csv"
+expect_error "missing column" "bad_poses.csv:1: missing column 'z'" \
+  "$bin" replay --poses "$dir/bad_poses.csv" --ranges "$dir/sim/ranges.csv"
+expect_error "bad config in replay" "key 'scenario.ranging.sigma_range_m'" \
+  "$bin" replay --poses "$dir/sim/poses.csv" --ranges "$dir/sim/ranges.csv" --config "$dir/neg.yaml"
+[ -e "$dir/out1/estimates.csv" ] && { echo "FAIL: estimates written on bad input"; failures=$((failures + 1)); }
+
+# And the good path writes exactly what it promises.
+"$bin" replay --poses "$dir/sim/poses.csv" --ranges "$dir/sim/ranges.csv" --anchors "$dir/sim/anchors.csv" \
+  --trace "$dir/trace.csv" --out "$dir/out" >/dev/null || { echo "FAIL: replay"; failures=$((failures + 1)); }
+[ "$(head -1 "$dir/trace.csv")" = "t,tag_id,anchor_id,range,accepted,n_accepted,pdop" ] || { echo "FAIL: trace header"; failures=$((failures + 1)); }
+[ "$(($(wc -l <"$dir/trace.csv")))" -eq "$(($(wc -l <"$dir/sim/ranges.csv")))" ] || { echo "FAIL: one trace row per range"; failures=$((failures + 1)); }
+[ "$(head -1 "$dir/out/estimates.csv")" = "anchor_id,method,initialized,t_init,n_used,pdop_est,pdop_true,x,y,z,bias,err_m" ] || { echo "FAIL: estimates header"; failures=$((failures + 1)); }
+grep -qi nan "$dir/out/estimates.csv" && { echo "FAIL: NaN in estimates"; failures=$((failures + 1)); }
+ls "$dir"/*.tmp.* "$dir"/out/*.tmp.* >/dev/null 2>&1 && { echo "FAIL: temporary files left"; failures=$((failures + 1)); }
+"$bin" replay --help >/dev/null || { echo "FAIL: replay --help"; failures=$((failures + 1)); }
+"$bin" simulate --help >/dev/null || { echo "FAIL: simulate --help"; failures=$((failures + 1)); }
+
+[ $failures -eq 0 ] && echo "all CLI bad-input cases passed"
+exit $failures

@@ -1,0 +1,88 @@
+#include "anchorbench/experiments/config.hpp"
+
+#include <gtest/gtest.h>
+
+#include "anchorbench/experiments/input_error.hpp"
+#include "temp_dir.hpp"
+
+namespace anchorbench::experiments {
+namespace {
+
+// The error message for a config text, or "" if it loads.
+std::string ErrorFor(const std::string& yaml) {
+  testing::TempDir dir("config");
+  const std::string path = dir.Write("c.yaml", yaml);
+  try {
+    LoadConfig(path);
+  } catch (const InputError& e) {
+    return e.what();
+  }
+  return "";
+}
+
+TEST(Config, ShippedConfigsLoad) {
+  const ExperimentConfig config = LoadConfig(std::string(ANCHORBENCH_CONFIG_DIR) + "/tunnel.yaml");
+  EXPECT_EQ(config.name, "tunnel");
+  EXPECT_EQ(config.scenario.tunnel.num_anchors, 30);
+  EXPECT_DOUBLE_EQ(config.estimator.pdop_threshold, 1.0);
+}
+
+TEST(Config, AbsentKeysKeepDefaults) {
+  EXPECT_EQ(ErrorFor("seed: 3\n"), "");
+  EXPECT_EQ(ErrorFor(""), "");
+}
+
+TEST(Config, UnknownKeyNamesItsPath) {
+  const std::string error = ErrorFor("scenario:\n  ranging:\n    sigma_rnage_m: 0.1\n");
+  EXPECT_NE(error.find("key 'scenario.ranging.sigma_rnage_m': unknown key"), std::string::npos) << error;
+  EXPECT_NE(ErrorFor("estimatr: {}\n").find("key 'estimatr': unknown key"), std::string::npos);
+}
+
+TEST(Config, WrongTypeNamesItsPath) {
+  const std::string error = ErrorFor("scenario:\n  tunnel:\n    num_anchors: many\n");
+  EXPECT_NE(error.find("key 'scenario.tunnel.num_anchors': expected an integer, got 'many'"), std::string::npos)
+      << error;
+  EXPECT_NE(ErrorFor("estimator:\n  filter:\n    enabled: maybe\n").find("expected true or false"), std::string::npos);
+  EXPECT_NE(ErrorFor("scenario: 5\n").find("key 'scenario': expected a mapping"), std::string::npos);
+}
+
+TEST(Config, OutOfRangeValuesNameTheirPath) {
+  EXPECT_NE(ErrorFor("scenario:\n  ranging:\n    sigma_range_m: -0.1\n").find("key 'scenario.ranging.sigma_range_m': must be >= 0"),
+            std::string::npos);
+  EXPECT_NE(ErrorFor("estimator:\n  filter:\n    tau_m: -1\n").find("key 'estimator.filter.tau_m'"), std::string::npos);
+  EXPECT_NE(ErrorFor("estimator:\n  trigger:\n    pdop_threshold: 0\n").find("key 'estimator.trigger.pdop_threshold': must be > 0"),
+            std::string::npos);
+  EXPECT_NE(ErrorFor("scenario:\n  ranging:\n    sigma_range_m: .nan\n").find("must be finite"), std::string::npos);
+  EXPECT_NE(ErrorFor("scenario:\n  ranging:\n    outlier_probability: 1.5\n").find("outlier_probability"),
+            std::string::npos);
+  EXPECT_NE(ErrorFor("scenario:\n  trajectory:\n    kind: spiral\n").find("unknown value 'spiral' (choices: random"),
+            std::string::npos);
+}
+
+TEST(Config, CrossFieldChecksNameTheirSection) {
+  const std::string error = ErrorFor("scenario:\n  tunnel:\n    anchor_height_min_m: 4\n    anchor_height_max_m: 2\n");
+  EXPECT_NE(error.find("key 'scenario.tunnel': anchor heights"), std::string::npos) << error;
+}
+
+TEST(Config, SyntaxErrorNamesTheLine) {
+  const std::string error = ErrorFor("seed: 1\nscenario:\n  tunnel: [1, 2\n");
+  EXPECT_NE(error.find(".yaml:"), std::string::npos);
+  EXPECT_NE(error.find("YAML syntax error"), std::string::npos) << error;
+}
+
+TEST(Config, MissingFileIsAnInputError) {
+  EXPECT_THROW(LoadConfig("/nonexistent/config.yaml"), InputError);
+}
+
+TEST(Config, ResolvedYamlReadsBackToTheSameConfig) {
+  ExperimentConfig config = LoadConfig(std::string(ANCHORBENCH_CONFIG_DIR) + "/tunnel.yaml");
+  testing::TempDir dir("roundtrip");
+  const std::string path = dir.Write("tunnel.yaml", ToYaml(config));
+  const ExperimentConfig again = LoadConfig(path);
+  EXPECT_EQ(ToYaml(again), ToYaml(config));
+  EXPECT_EQ(again.scenario.ranging.outlier_probability, config.scenario.ranging.outlier_probability);
+  EXPECT_EQ(again.estimator.solver.nls.kernel, config.estimator.solver.nls.kernel);
+}
+
+}  // namespace
+}  // namespace anchorbench::experiments

@@ -1,0 +1,33 @@
+#!/usr/bin/env bash
+# Installs the Debian 12 packages anchorbench needs. As root it runs apt-get; otherwise it prints
+# the exact command to run and fails. Does nothing when everything is already installed.
+set -euo pipefail
+
+packages=(
+  cmake g++ make                 # toolchain
+  libeigen3-dev                  # linear algebra
+  libnlopt-cxx-dev               # NLopt, C++ API (alpha search of the adaptive kernel)
+  libyaml-cpp-dev libcli11-dev   # configs, command line
+  libgtest-dev libgmock-dev      # tests
+  libbenchmark-dev               # benchmarks
+  python3-matplotlib python3-numpy  # plot_scripts/ (run with /usr/bin/python3)
+)
+
+missing=()
+for package in "${packages[@]}"; do
+  if ! dpkg-query -W -f='${Status}' "$package" 2>/dev/null | grep -q "install ok installed"; then
+    missing+=("$package")
+  fi
+done
+[ ${#missing[@]} -eq 0 ] && exit 0
+
+if [ "$(id -u)" -eq 0 ]; then
+  echo "setup: installing ${missing[*]}" >&2
+  export DEBIAN_FRONTEND=noninteractive
+  apt-get update -qq
+  apt-get install -y -qq --no-install-recommends "${missing[@]}" >/dev/null
+else
+  echo "setup: missing Debian packages; run:" >&2
+  echo "  sudo apt-get install -y ${missing[*]}" >&2
+  exit 1
+fi

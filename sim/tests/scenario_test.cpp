@@ -1,0 +1,134 @@
+#include "anchorbench/sim/scenario.hpp"
+
+#include <cmath>
+
+#include <gtest/gtest.h>
+
+namespace anchorbench::sim {
+namespace {
+
+ScenarioOptions TunnelScenario() {
+  ScenarioOptions o;
+  o.tunnel.length_m = 120.0;
+  o.tunnel.num_anchors = 12;
+  o.ranging.sigma_range_m = 0.1;
+  o.ranging.outlier_probability = 0.1;
+  o.ranging.sigma_position_m = 0.02;
+  return o;
+}
+
+TEST(Scenario, DeterministicInSeedAndRealization) {
+  const ScenarioOptions o = TunnelScenario();
+  const Scenario a = GenerateScenario(o, 1, 2), b = GenerateScenario(o, 1, 2), c = GenerateScenario(o, 1, 3);
+  ASSERT_EQ(a.ranges.size(), b.ranges.size());
+  for (std::size_t i = 0; i < a.ranges.size(); ++i) EXPECT_EQ(a.ranges[i].range_m, b.ranges[i].range_m);
+  EXPECT_NE(a.anchors[0].p_world_anchor, c.anchors[0].p_world_anchor);
+}
+
+TEST(Scenario, TunnelAnchorsSpanTheLengthOnWallsAndCeiling) {
+  const ScenarioOptions o = TunnelScenario();
+  const Scenario s = GenerateScenario(o, 5, 0);
+  ASSERT_EQ(s.anchors.size(), 12u);
+  double min_x = 1e9, max_x = -1e9;
+  for (const SimAnchor& a : s.anchors) {
+    const Eigen::Vector3d& p = a.p_world_anchor;
+    min_x = std::min(min_x, p.x());
+    max_x = std::max(max_x, p.x());
+    const bool on_wall = std::abs(std::abs(p.y()) - 0.5 * o.tunnel.width_m) < 1e-12 &&
+                         p.z() >= o.tunnel.anchor_height_min_m && p.z() <= o.tunnel.anchor_height_max_m;
+    const bool on_ceiling = p.z() == o.tunnel.height_m;
+    EXPECT_TRUE(on_wall || on_ceiling);
+    EXPECT_GE(a.bias_m, o.ranging.bias_a_m);
+    EXPECT_LE(a.bias_m, o.ranging.bias_b_m);
+  }
+  EXPECT_LT(min_x, 0.15 * o.tunnel.length_m);
+  EXPECT_GT(max_x, 0.85 * o.tunnel.length_m);
+}
+
+TEST(Scenario, RangesFollowEq1WithinMaxRangeAndOutlierRate) {
+  ScenarioOptions o = TunnelScenario();
+  const Scenario s = GenerateScenario(o, 9, 0);
+  ASSERT_GT(s.ranges.size(), 1000u);
+  int outliers = 0;
+  double sum_sq = 0.0;
+  int inliers = 0;
+  std::size_t epoch = 0;
+  for (const SimRange& r : s.ranges) {
+    while (s.t_s[epoch] < r.t_s) ++epoch;
+    const SimAnchor& a = s.anchors[r.anchor_id];
+    const double distance = (s.p_world_tag_true[epoch] - a.p_world_anchor).norm();
+    EXPECT_LE(distance, o.ranging.max_range_m);
+    EXPECT_GE(r.range_m, 0.0);
+    if (r.is_outlier) {
+      ++outliers;
+      EXPECT_GE(r.range_m - distance - a.bias_m, o.ranging.outlier_min_m - 1.0);  // positive, NLOS-like
+    } else {
+      const double noise = r.range_m - distance - a.bias_m;
+      sum_sq += noise * noise;
+      ++inliers;
+    }
+  }
+  const double rate = static_cast<double>(outliers) / s.ranges.size();
+  EXPECT_NEAR(rate, 0.1, 0.02);
+  EXPECT_NEAR(std::sqrt(sum_sq / inliers), 0.1, 0.01);
+}
+
+TEST(Scenario, IllConditionedTrajectoriesAreWhatTheySay) {
+  ScenarioOptions o = TunnelScenario();
+  o.trajectory.kind = TrajectoryKind::kStraight;
+  const Scenario straight = GenerateScenario(o, 3, 0);
+  for (const auto& p : straight.p_world_tag_true) {
+    EXPECT_EQ(p.y(), straight.p_world_tag_true[0].y());
+    EXPECT_EQ(p.z(), o.trajectory.height_m);
+  }
+  o.trajectory.kind = TrajectoryKind::kPlanar;
+  const Scenario planar = GenerateScenario(o, 3, 0);
+  double y_span = 0.0;
+  for (const auto& p : planar.p_world_tag_true) {
+    EXPECT_EQ(p.z(), o.trajectory.height_m);
+    y_span = std::max(y_span, std::abs(p.y()));
+  }
+  EXPECT_GT(y_span, 0.5);
+  o.trajectory.kind = TrajectoryKind::kShort;
+  const Scenario short_run = GenerateScenario(o, 3, 0);
+  const double covered = short_run.p_world_tag_true.back().x() - short_run.p_world_tag_true.front().x();
+  EXPECT_NEAR(covered, o.trajectory.short_fraction * o.tunnel.length_m, 1.0);
+}
+
+TEST(Scenario, TrajectoryStaysInsideTheTunnel) {
+  const ScenarioOptions o = TunnelScenario();
+  const Scenario s = GenerateScenario(o, 11, 0);
+  for (const auto& p : s.p_world_tag_true) {
+    EXPECT_LE(std::abs(p.y()), 0.5 * o.tunnel.width_m);
+    EXPECT_GE(p.z(), 0.0);
+    EXPECT_LE(p.z(), o.tunnel.height_m);
+  }
+  EXPECT_NEAR(s.t_s[1] - s.t_s[0], 0.1, 1e-12);  // 10 Hz default
+}
+
+TEST(Scenario, HallAnchorsOnWalls) {
+  ScenarioOptions o;
+  o.environment = EnvironmentKind::kHall;
+  const Scenario s = GenerateScenario(o, 1, 0);
+  ASSERT_EQ(s.anchors.size(), static_cast<std::size_t>(o.hall.num_anchors));
+  for (const SimAnchor& a : s.anchors) {
+    const Eigen::Vector3d& p = a.p_world_anchor;
+    const bool on_wall = std::abs(p.x()) < 1e-9 || std::abs(p.x() - o.hall.length_m) < 1e-9 ||
+                         std::abs(p.y()) < 1e-9 || std::abs(p.y() - o.hall.width_m) < 1e-9;
+    EXPECT_TRUE(on_wall) << p.transpose();
+  }
+}
+
+TEST(ScenarioOptions, RejectsImpossibleValues) {
+  ScenarioOptions o;
+  std::string why;
+  EXPECT_TRUE(o.IsValid(&why));
+  o.ranging.sigma_range_m = -0.1;
+  EXPECT_FALSE(o.IsValid(&why));
+  o = {};
+  o.tunnel.anchor_height_max_m = 100.0;
+  EXPECT_FALSE(o.IsValid(&why));
+}
+
+}  // namespace
+}  // namespace anchorbench::sim
