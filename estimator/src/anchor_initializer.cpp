@@ -56,6 +56,7 @@ FeedResult AnchorInitializer::Feed(const RangeSample& sample) {
       initialized_ = true;
       out.event = event;
     } else {
+      last_failed_solve_ = event.solve;
       next_attempt_size_ = static_cast<std::size_t>(std::ceil(range_m_.size() * options_.retry_growth));
     }
   }

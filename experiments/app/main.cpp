@@ -16,6 +16,7 @@ int main(int argc, char** argv) {
   const std::vector<std::pair<std::string, ex::Action>> actions = {
       {"simulate", ex::AddSimulateCommand(app)},
       {"replay", ex::AddReplayCommand(app)},
+      {"run", ex::AddRunCommand(app)},
   };
   try {
     app.parse(argc, argv);

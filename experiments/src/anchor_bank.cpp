@@ -15,16 +15,21 @@ AnchorBank::AnchorBank(const estimator::InitializerOptions& options) : gated_opt
   fixed_options_.strategy = InitStrategy::kFixedWindow;
 }
 
-estimator::FeedResult AnchorBank::Feed(const estimator::RangeSample& sample) {
-  auto found = anchors_.find(sample.anchor_id);
+AnchorBank::Anchor& AnchorBank::Find(int anchor_id) {
+  auto found = anchors_.find(anchor_id);
   if (found == anchors_.end()) {
     found = anchors_
-                .emplace(sample.anchor_id, Anchor{estimator::AnchorInitializer(sample.anchor_id, gated_options_),
-                                                  estimator::AnchorInitializer(sample.anchor_id, fixed_options_),
-                                                  std::nullopt})
+                .emplace(anchor_id, Anchor{estimator::AnchorInitializer(anchor_id, gated_options_),
+                                           estimator::AnchorInitializer(anchor_id, fixed_options_), std::nullopt})
                 .first;
   }
-  Anchor& anchor = found->second;
+  return found->second;
+}
+
+void AnchorBank::AddAnchor(int anchor_id) { Find(anchor_id); }
+
+estimator::FeedResult AnchorBank::Feed(const estimator::RangeSample& sample) {
+  Anchor& anchor = Find(sample.anchor_id);
   anchor.fixed.Feed(sample);
   estimator::FeedResult gated = anchor.gated.Feed(sample);
   if (gated.event) anchor.gated_event = gated.event;
@@ -43,6 +48,8 @@ AttemptOutcome AnchorBank::Outcome(int anchor_id, const estimator::AnchorInitial
     out.n_used = event->n_used;
     out.pdop_estimate = event->pdop_estimate;
     out.solve = event->solve;
+  } else if (initializer.last_failed_solve()) {
+    out.solve = initializer.last_failed_solve();  // triggered, but every solve failed
   }
   if (truth) {
     // The initializer's buffer is exactly the data of the solve (gated stops buffering at init).

@@ -43,12 +43,16 @@ template <typename V>
 void VisitTrajectory(V& v, sim::TrajectoryOptions& o) {
   v.Choice("kind", o.kind, sim::ParseTrajectoryKind, [](auto k) { return sim::ToString(k); },
            "random, straight, planar, short");
+  v.Number("fraction_straight", o.fraction_straight, kProbability);
+  v.Number("fraction_planar", o.fraction_planar, kProbability);
+  v.Number("fraction_short", o.fraction_short, kProbability);
   v.Number("rate_hz", o.rate_hz, {0.0, 1000.0, true});
   v.Number("speed_mps", o.speed_mps, kPositive);
   v.Number("speed_variation", o.speed_variation, {0.0, 0.99});
   v.Number("height_m", o.height_m, kNonNegative);
   v.Number("lateral_excursion_m", o.lateral_excursion_m, kNonNegative);
   v.Number("vertical_excursion_m", o.vertical_excursion_m, kNonNegative);
+  v.Number("planar_vertical_excursion_m", o.planar_vertical_excursion_m, kNonNegative);
   v.Number("min_period_s", o.min_period_s, kPositive);
   v.Number("max_period_s", o.max_period_s, kPositive);
   v.Number("short_fraction", o.short_fraction, {0.0, 1.0, true});
@@ -122,12 +126,39 @@ void VisitEstimator(V& v, estimator::InitializerOptions& o) {
 }
 
 template <typename V>
+void VisitPaperCells(V& v, PaperCells& cells) {
+  v.Number("avg_m", cells.avg_m, kNonNegative);
+  v.Number("med_m", cells.med_m, kNonNegative);
+  v.Number("init", cells.init, kNonNegative);
+  v.Number("gt1m", cells.gt1m, kNonNegative);
+  v.Number("ratio_pct", cells.ratio_pct, {0.0, 100.0});
+}
+
+template <typename V>
+void VisitRow(V& v, RowConfig& row) {
+  v.Text("name", row.name);
+  v.Section("scenario", [&](auto& s) { VisitScenario(s, row.scenario); });
+  v.Section("estimator", [&](auto& s) { VisitEstimator(s, row.estimator); });
+  v.OptionalSection("paper", row.paper, [](auto& s, PaperRow& paper) {
+    s.Section("fixed", [&](auto& cells) { VisitPaperCells(cells, paper.fixed); });
+    s.Section("gated", [&](auto& cells) { VisitPaperCells(cells, paper.gated); });
+  });
+}
+
+template <typename V>
 void VisitExperiment(V& v, ExperimentConfig& c) {
   int seed = static_cast<int>(c.seed);
   v.Integer("seed", seed, 0, std::numeric_limits<int>::max());
   c.seed = static_cast<std::uint64_t>(seed);
+  v.Integer("realizations", c.realizations, 1, 100000000);
+  v.Integer("bootstrap_resamples", c.bootstrap_resamples, 0, 1000000);
   v.Section("scenario", [&](auto& s) { VisitScenario(s, c.scenario); });
   v.Section("estimator", [&](auto& s) { VisitEstimator(s, c.estimator); });
+  // Rows start from the base read above, so the base must come first in the visit.
+  int index = 0;
+  v.List("rows", c.rows,
+         [&] { return RowConfig{std::to_string(++index), c.scenario, c.estimator, std::nullopt}; },
+         [](auto& s, RowConfig& row) { VisitRow(s, row); });
 }
 
 }  // namespace
@@ -140,6 +171,11 @@ void ParseScenario(YamlSection& section, sim::ScenarioOptions& options) {
 void ParseEstimator(YamlSection& section, estimator::InitializerOptions& options) {
   VisitEstimator(section, options);
   section.Finish();
+}
+
+std::vector<RowConfig> RowsOf(const ExperimentConfig& config) {
+  if (!config.rows.empty()) return config.rows;
+  return {RowConfig{"base", config.scenario, config.estimator, std::nullopt}};
 }
 
 ExperimentConfig LoadConfig(const std::string& path) {

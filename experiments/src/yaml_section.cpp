@@ -76,6 +76,13 @@ void YamlSection::Flag(std::string_view key, bool& value) {
   value = parsed;
 }
 
+void YamlSection::Text(std::string_view key, std::string& value) {
+  if (!Has(key)) return;
+  const YAML::Node n = Get(key);
+  if (!n.IsScalar()) Fail(key, "expected text, got " + Describe(n));
+  value = n.Scalar();
+}
+
 void YamlSection::Finish() const {
   if (!node_.IsMap()) return;
   for (const auto& entry : node_) {

@@ -58,5 +58,21 @@ ls "$dir"/*.tmp.* "$dir"/out/*.tmp.* >/dev/null 2>&1 && { echo "FAIL: temporary 
 "$bin" replay --help >/dev/null || { echo "FAIL: replay --help"; failures=$((failures + 1)); }
 "$bin" simulate --help >/dev/null || { echo "FAIL: simulate --help"; failures=$((failures + 1)); }
 
+# run: bad configs fail before any trial, and a good run writes its four files.
+printf 'seed: 1\nrealizations: 0\n' >"$dir/zero.yaml"
+printf 'seed: 1\nrows:\n  - name: a\n    scenario: {ranging: {sigma_rang_m: 1}}\n' >"$dir/badrow.yaml"
+expect_error "zero realizations" "key 'realizations': must be in [1," "$bin" run "$dir/zero.yaml" --out "$dir/run0"
+expect_error "bad row key" "key 'rows[0].scenario.ranging.sigma_rang_m': unknown key" "$bin" run "$dir/badrow.yaml" --out "$dir/run0"
+[ -e "$dir/run0/attempts.csv" ] && { echo "FAIL: attempts written on bad config"; failures=$((failures + 1)); }
+printf 'seed: 1\nrealizations: 3\nscenario:\n  tunnel: {length_m: 60, num_anchors: 3}\n' >"$dir/small.yaml"
+quiet_output=$("$bin" run "$dir/small.yaml" --out "$dir/run" --quiet 2>&1)
+[ -z "$quiet_output" ] || { echo "FAIL: --quiet printed: $quiet_output"; failures=$((failures + 1)); }
+for f in attempts.csv summary.csv summary.md manifest.json; do
+  [ -s "$dir/run/$f" ] || { echo "FAIL: run did not write $f"; failures=$((failures + 1)); }
+done
+[ "$(head -1 "$dir/run/summary.csv")" = "row,method,avg_m,med_m,init,gt1m,ratio_pct,avg_lo,avg_hi,ratio_lo,ratio_hi" ] || { echo "FAIL: summary header"; failures=$((failures + 1)); }
+summary_line=$("$bin" run "$dir/small.yaml" --out "$dir/run" 2>&1 >/dev/null)
+grep -q "realizations in" <<<"$summary_line" || { echo "FAIL: no summary line when stderr is not a terminal: $summary_line"; failures=$((failures + 1)); }
+
 [ $failures -eq 0 ] && echo "all CLI bad-input cases passed"
 exit $failures

@@ -70,6 +70,22 @@ TEST(Config, SyntaxErrorNamesTheLine) {
   EXPECT_NE(error.find("YAML syntax error"), std::string::npos) << error;
 }
 
+TEST(Config, RowsOverlayTheBaseAndNameTheirPath) {
+  testing::TempDir dir("rows");
+  const std::string path = dir.Write("t.yaml",
+                                     "scenario:\n  ranging: {sigma_range_m: 0.2, outlier_probability: 0.1}\n"
+                                     "rows:\n  - name: a\n  - name: b\n    scenario: {ranging: {sigma_range_m: 0.5}}\n");
+  const ExperimentConfig config = LoadConfig(path);
+  ASSERT_EQ(config.rows.size(), 2u);
+  EXPECT_EQ(config.rows[0].scenario.ranging.sigma_range_m, 0.2);
+  EXPECT_EQ(config.rows[1].scenario.ranging.sigma_range_m, 0.5);
+  EXPECT_EQ(config.rows[1].scenario.ranging.outlier_probability, 0.1);  // inherited from the base
+  EXPECT_NE(ErrorFor("rows:\n  - scenario: {tunnel: {num_anchors: 0}}\n").find("key 'rows[0].scenario.tunnel.num_anchors'"),
+            std::string::npos);
+  EXPECT_NE(ErrorFor("realizations: 0\n").find("key 'realizations': must be in [1"), std::string::npos);
+  EXPECT_NE(ErrorFor("rows: 3\n").find("key 'rows': expected a list"), std::string::npos);
+}
+
 TEST(Config, MissingFileIsAnInputError) {
   EXPECT_THROW(LoadConfig("/nonexistent/config.yaml"), InputError);
 }

@@ -41,8 +41,11 @@ Scenario GenerateScenario(const ScenarioOptions& options, std::uint64_t seed, st
   const bool tunnel = options.environment == EnvironmentKind::kTunnel;
   const std::vector<Eigen::Vector3d> positions =
       tunnel ? TunnelAnchors(options.tunnel, layout) : HallAnchors(options.hall, layout);
-  Trajectory trajectory = tunnel ? TunnelTrajectory(options.tunnel, options.trajectory, shape)
-                                 : HallTrajectory(options.hall, options.trajectory, shape);
+  TrajectoryOptions trajectory_options = options.trajectory;
+  trajectory_options.kind = DrawTrajectoryKind(options.trajectory, shape);
+  scenario.trajectory_kind = trajectory_options.kind;
+  Trajectory trajectory = tunnel ? TunnelTrajectory(options.tunnel, trajectory_options, shape)
+                                 : HallTrajectory(options.hall, trajectory_options, shape);
 
   const RangeModelOptions& model = options.ranging;
   RandomStream bias_rng(seed, realization, StreamId::kBias);

@@ -38,6 +38,16 @@ class SmoothSignal {
   std::array<Component, 3> components_;
 };
 
+// Always one draw, so the rest of the trajectory stream does not depend on the kind.
+double VerticalExcursion(const TrajectoryOptions& o, RandomStream& rng) {
+  const double planar_wobble_m = rng.Uniform(0.0, o.planar_vertical_excursion_m);
+  switch (o.kind) {
+    case TrajectoryKind::kStraight: return 0.0;
+    case TrajectoryKind::kPlanar: return planar_wobble_m;
+    default: return o.vertical_excursion_m;
+  }
+}
+
 }  // namespace
 
 std::string_view ToString(TrajectoryKind kind) {
@@ -70,11 +80,24 @@ bool TrajectoryOptions::IsValid(std::string* why) const {
   if (!(speed_mps > 0.0)) return fail("speed_mps must be > 0");
   if (!(speed_variation >= 0.0 && speed_variation < 1.0)) return fail("speed_variation must be in [0, 1)");
   if (!(height_m >= 0.0)) return fail("height_m must be >= 0");
-  if (!(lateral_excursion_m >= 0.0) || !(vertical_excursion_m >= 0.0)) return fail("excursions must be >= 0");
+  if (!(lateral_excursion_m >= 0.0) || !(vertical_excursion_m >= 0.0) || !(planar_vertical_excursion_m >= 0.0))
+    return fail("excursions must be >= 0");
   if (!(min_period_s > 0.0 && min_period_s <= max_period_s)) return fail("periods must satisfy 0 < min <= max");
   if (!(short_fraction > 0.0 && short_fraction <= 1.0)) return fail("short_fraction must be in (0, 1]");
   if (!(hall_duration_s > 0.0)) return fail("hall_duration_s must be > 0");
+  if (!(fraction_straight >= 0.0 && fraction_planar >= 0.0 && fraction_short >= 0.0) ||
+      !(fraction_straight + fraction_planar + fraction_short <= 1.0)) {
+    return fail("fraction_straight, fraction_planar and fraction_short must be >= 0 and sum to <= 1");
+  }
   return true;
+}
+
+TrajectoryKind DrawTrajectoryKind(const TrajectoryOptions& o, RandomStream& rng) {
+  const double u = rng.Uniform();  // always one draw, so the rest of the stream does not shift
+  if (u < o.fraction_straight) return TrajectoryKind::kStraight;
+  if (u < o.fraction_straight + o.fraction_planar) return TrajectoryKind::kPlanar;
+  if (u < o.fraction_straight + o.fraction_planar + o.fraction_short) return TrajectoryKind::kShort;
+  return o.kind;
 }
 
 Trajectory TunnelTrajectory(const TunnelOptions& tunnel, const TrajectoryOptions& o, RandomStream& rng) {
@@ -86,7 +109,7 @@ Trajectory TunnelTrajectory(const TunnelOptions& tunnel, const TrajectoryOptions
   const double x_end = x_start + fraction * tunnel.length_m;
   const double y_offset = rng.Uniform(-o.lateral_excursion_m, o.lateral_excursion_m);  // kStraight
   const bool weaves = o.kind != TrajectoryKind::kStraight;
-  const bool climbs = o.kind == TrajectoryKind::kRandom || o.kind == TrajectoryKind::kShort;
+  const double climb_m = VerticalExcursion(o, rng);
   const double y_limit = std::max(0.0, 0.5 * tunnel.width_m - kWallClearance_m);
   const double z_low = std::min(kWallClearance_m, tunnel.height_m);
   const double z_high = std::max(z_low, tunnel.height_m - kWallClearance_m);
@@ -97,7 +120,7 @@ Trajectory TunnelTrajectory(const TunnelOptions& tunnel, const TrajectoryOptions
   for (long k = 0; x <= x_end; ++k) {
     const double t = k * dt;
     const double y = weaves ? o.lateral_excursion_m * lateral(t) : y_offset;
-    const double z = climbs ? o.height_m + o.vertical_excursion_m * vertical(t) : o.height_m;
+    const double z = o.height_m + climb_m * vertical(t);
     trajectory.t_s.push_back(t);
     trajectory.p_world_tag.emplace_back(x, std::clamp(y, -y_limit, y_limit), std::clamp(z, z_low, z_high));
     x += o.speed_mps * (1.0 + o.speed_variation * speed(t)) * dt;
@@ -114,7 +137,7 @@ Trajectory HallTrajectory(const HallOptions& hall, const TrajectoryOptions& o, R
   const double duration_s = o.hall_duration_s * (o.kind == TrajectoryKind::kShort ? o.short_fraction : 1.0);
   const double z_low = std::min(kWallClearance_m, hall.height_m);
   const double z_high = std::max(z_low, hall.height_m - kWallClearance_m);
-  const bool climbs = o.kind == TrajectoryKind::kRandom || o.kind == TrajectoryKind::kShort;
+  const double climb_m = VerticalExcursion(o, rng);
   // kStraight: one pass along the hall's long axis at a random lateral offset.
   const double y_offset = rng.Uniform(-half_y, half_y);
 
@@ -132,7 +155,7 @@ Trajectory HallTrajectory(const HallOptions& hall, const TrajectoryOptions& o, R
     }
     p.x() += 0.5 * hall.length_m;
     p.y() += 0.5 * hall.width_m;
-    p.z() = std::clamp(climbs ? o.height_m + o.vertical_excursion_m * vertical(t) : o.height_m, z_low, z_high);
+    p.z() = std::clamp(o.height_m + climb_m * vertical(t), z_low, z_high);
     trajectory.t_s.push_back(t);
     trajectory.p_world_tag.push_back(p);
   }

@@ -95,6 +95,26 @@ TEST(Scenario, IllConditionedTrajectoriesAreWhatTheySay) {
   EXPECT_NEAR(covered, o.trajectory.short_fraction * o.tunnel.length_m, 1.0);
 }
 
+TEST(Scenario, TrajectoryKindMixFollowsTheFractions) {
+  ScenarioOptions o = TunnelScenario();
+  o.trajectory.fraction_straight = 0.2;
+  o.trajectory.fraction_planar = 0.3;
+  int straight = 0, planar = 0, random = 0;
+  for (int r = 0; r < 1000; ++r) {
+    RandomStream rng(1, r, StreamId::kTrajectory);
+    switch (DrawTrajectoryKind(o.trajectory, rng)) {
+      case TrajectoryKind::kStraight: ++straight; break;
+      case TrajectoryKind::kPlanar: ++planar; break;
+      case TrajectoryKind::kRandom: ++random; break;
+      default: FAIL();
+    }
+  }
+  // Binomial standard errors: 13 and 14.5 of 1000.
+  EXPECT_NEAR(straight, 200, 45);
+  EXPECT_NEAR(planar, 300, 45);
+  EXPECT_NEAR(random, 500, 50);
+}
+
 TEST(Scenario, TrajectoryStaysInsideTheTunnel) {
   const ScenarioOptions o = TunnelScenario();
   const Scenario s = GenerateScenario(o, 11, 0);

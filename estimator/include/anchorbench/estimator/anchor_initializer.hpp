@@ -67,6 +67,8 @@ class AnchorInitializer {
   std::span<const Eigen::Vector3d> p_world_tag() const { return p_world_tag_; }
   std::span<const double> range_m() const { return range_m_; }
   const ClosestPointPdop& pdop() const { return pdop_; }
+  // The latest gated solve that failed (degenerate, non-finite), if any: why it is not initialized.
+  const std::optional<SolveResult>& last_failed_solve() const { return last_failed_solve_; }
 
  private:
   InitEvent SolveNow(double t_s);
@@ -80,6 +82,7 @@ class AnchorInitializer {
   std::vector<double> range_m_;
   bool initialized_ = false;
   std::size_t next_attempt_size_ = 0;
+  std::optional<SolveResult> last_failed_solve_;
 };
 
 }  // namespace anchorbench::estimator

@@ -32,6 +32,9 @@ class AnchorBank {
  public:
   explicit AnchorBank(const estimator::InitializerOptions& options);
 
+  // Makes the anchor known before its first range, so it is reported even if none arrives.
+  void AddAnchor(int anchor_id);
+
   // Feeds both strategies; returns the gated initializer's view (for traces).
   estimator::FeedResult Feed(const estimator::RangeSample& sample);
 
@@ -45,6 +48,7 @@ class AnchorBank {
     estimator::AnchorInitializer fixed;
     std::optional<estimator::InitEvent> gated_event;
   };
+  Anchor& Find(int anchor_id);
   AttemptOutcome Outcome(int anchor_id, const estimator::AnchorInitializer& initializer,
                          const std::optional<estimator::InitEvent>& event, const AnchorTruth* truth) const;
 

@@ -10,5 +10,6 @@ using Action = std::function<int()>;
 
 Action AddSimulateCommand(CLI::App& app);
 Action AddReplayCommand(CLI::App& app);
+Action AddRunCommand(CLI::App& app);
 
 }  // namespace anchorbench::experiments

@@ -1,7 +1,9 @@
 #pragma once
 
 #include <cstdint>
+#include <optional>
 #include <string>
+#include <vector>
 
 #include "anchorbench/estimator/anchor_initializer.hpp"
 #include "anchorbench/experiments/yaml_section.hpp"
@@ -9,14 +11,42 @@
 
 namespace anchorbench::experiments {
 
-// One experiment file (configs/*.yaml): a scenario to simulate and the estimator to run on it.
-// Keys mirror the options structs field by field; docs/config.md lists them with units.
+// A published table row to compare with, cell by cell (Table I: Avg., Med., Init., >1m, Ratio).
+struct PaperCells {
+  double avg_m = 0.0;
+  double med_m = 0.0;
+  double init = 0.0;
+  double gt1m = 0.0;
+  double ratio_pct = 0.0;
+};
+struct PaperRow {
+  PaperCells fixed;
+  PaperCells gated;
+};
+
+// One row of a Monte Carlo table: the base scenario and estimator with this row's overrides.
+struct RowConfig {
+  std::string name;
+  sim::ScenarioOptions scenario;
+  estimator::InitializerOptions estimator;
+  std::optional<PaperRow> paper;
+};
+
+// One experiment file (configs/*.yaml): a scenario to simulate and the estimator to run on it,
+// and for `run`, the rows of a Monte Carlo table. Keys mirror the options structs field by field;
+// docs/config.md lists them with units.
 struct ExperimentConfig {
   std::string name;  // the file's stem, e.g. "tunnel"
   std::uint64_t seed = 1;
+  int realizations = 100;          // per row (run)
+  int bootstrap_resamples = 1000;  // for the 95% intervals of summary.csv (run)
   sim::ScenarioOptions scenario;
   estimator::InitializerOptions estimator;  // strategy is ignored: gated and fixed both run
+  std::vector<RowConfig> rows;              // empty: one row, the base
 };
+
+// The rows `run` executes: config.rows, or the base as a single row named "base".
+std::vector<RowConfig> RowsOf(const ExperimentConfig& config);
 
 // Reads and validates the whole file; throws InputError naming the file and key path.
 ExperimentConfig LoadConfig(const std::string& path);

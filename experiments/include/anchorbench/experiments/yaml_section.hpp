@@ -1,9 +1,11 @@
 #pragma once
 
 #include <functional>
+#include <optional>
 #include <set>
 #include <string>
 #include <string_view>
+#include <vector>
 
 #include <yaml-cpp/yaml.h>
 
@@ -34,6 +36,7 @@ class YamlSection {
       Fail(key, "unknown value " + Describe(n) + " (choices: " + std::string(choices) + ")");
     }
   }
+  void Text(std::string_view key, std::string& value);
   template <typename Visit>
   void Section(std::string_view key, Visit visit) {
     YamlSection child = Has(key) ? YamlSection(Get(key), KeyPath(key), file_)
@@ -41,6 +44,28 @@ class YamlSection {
     used_.emplace(key);
     visit(child);
     child.Finish();
+  }
+  // A section that may be absent: read into a fresh value only if present.
+  template <typename T, typename Visit>
+  void OptionalSection(std::string_view key, std::optional<T>& value, Visit visit) {
+    if (!Has(key)) return;
+    value.emplace();
+    Section(key, [&](YamlSection& child) { visit(child, *value); });
+  }
+  // A list of mappings; each item starts as make_item() (e.g. a copy of the base) and is overlaid.
+  template <typename T, typename Make, typename Visit>
+  void List(std::string_view key, std::vector<T>& items, Make make_item, Visit visit) {
+    if (!Has(key)) return;
+    const YAML::Node list = Get(key);
+    if (!list.IsSequence()) Fail(key, "expected a list, got " + Describe(list));
+    items.clear();
+    for (std::size_t i = 0; i < list.size(); ++i) {
+      T item = make_item();
+      YamlSection child(list[i], KeyPath(key) + "[" + std::to_string(i) + "]", file_);
+      visit(child, item);
+      child.Finish();
+      items.push_back(std::move(item));
+    }
   }
   // A cross-field check (an options struct's IsValid), reported against this section.
   template <typename Options>
@@ -77,10 +102,27 @@ class YamlWriter {
   void Choice(std::string_view key, Enum& value, Parse, Name to_string, std::string_view) {
     node_[std::string(key)] = std::string(to_string(value));
   }
+  void Text(std::string_view key, std::string& value) { node_[std::string(key)] = value; }
   template <typename Visit>
   void Section(std::string_view key, Visit visit) {
     YamlWriter child(node_[std::string(key)]);
     visit(child);
+  }
+  template <typename T, typename Visit>
+  void OptionalSection(std::string_view key, std::optional<T>& value, Visit visit) {
+    if (value) Section(key, [&](YamlWriter& child) { visit(child, *value); });
+  }
+  template <typename T, typename Make, typename Visit>
+  void List(std::string_view key, std::vector<T>& items, Make, Visit visit) {
+    if (items.empty()) return;
+    YAML::Node list(YAML::NodeType::Sequence);
+    for (T& item : items) {
+      YAML::Node entry(YAML::NodeType::Map);
+      YamlWriter child(entry);
+      visit(child, item);
+      list.push_back(entry);
+    }
+    node_[std::string(key)] = list;
   }
   template <typename Options>
   void Check(const Options&) const {}

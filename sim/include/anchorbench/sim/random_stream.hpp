@@ -16,6 +16,7 @@ enum class StreamId : std::uint32_t {
   kPositionNoise = 6,
   kDropout = 7,
   kSolver = 8,      // for solvers that need random numbers
+  kBootstrap = 9,   // resampling in the experiments' statistics
 };
 
 // Counter-based generator: Philox4x32-10 (Salmon et al., SC'11). The key is the seed; the counter

@@ -44,6 +44,7 @@ struct SimRange {
 // One realization: ground truth, what the robot believes about its tag positions, and the range
 // stream in time order (anchor id ascending within one epoch).
 struct Scenario {
+  TrajectoryKind trajectory_kind = TrajectoryKind::kRandom;  // as drawn for this realization
   std::vector<SimAnchor> anchors;
   std::vector<double> t_s;                            // epochs (one tag, id 0)
   std::vector<Eigen::Vector3d> p_world_tag_true;

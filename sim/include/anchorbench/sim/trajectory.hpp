@@ -14,7 +14,7 @@ namespace anchorbench::sim {
 enum class TrajectoryKind {
   kRandom,    // smooth random 3D motion (lateral and vertical excursions)
   kStraight,  // ill-conditioned: straight line at constant height and lateral offset
-  kPlanar,    // ill-conditioned: lateral weaving at constant height
+  kPlanar,    // ill-conditioned: lateral weaving at (nearly) constant height
   kShort,     // ill-conditioned: random motion over a fraction of the environment only
 };
 
@@ -23,12 +23,20 @@ bool ParseTrajectoryKind(std::string_view name, TrajectoryKind* kind);
 
 struct TrajectoryOptions {
   TrajectoryKind kind = TrajectoryKind::kRandom;
+  // Monte Carlo mixes: each realization is drawn straight / planar / short with these
+  // probabilities, and `kind` otherwise (the suboptimal trajectories among random ones of Table I).
+  double fraction_straight = 0.0;
+  double fraction_planar = 0.0;
+  double fraction_short = 0.0;
   double rate_hz = 10.0;               // tag position (and range) sampling rate
   double speed_mps = 1.5;              // mean speed along the tunnel
   double speed_variation = 0.3;        // relative +- variation of the along-track speed
   double height_m = 2.0;               // mean tag height above the floor
   double lateral_excursion_m = 2.5;    // max lateral offset from the centre line
   double vertical_excursion_m = 1.5;   // max vertical offset from height_m (kRandom, kShort)
+  // kPlanar: a small height wobble, uniform in [0, this] per realization (0: exactly planar), so a
+  // mix of planar runs ranges from mirror-ambiguous to merely ill-conditioned.
+  double planar_vertical_excursion_m = 0.0;
   double min_period_s = 8.0;           // periods of the smooth random excursions
   double max_period_s = 40.0;
   double short_fraction = 0.25;        // kShort: fraction of the length (tunnel) or duration (hall)
@@ -41,6 +49,9 @@ struct Trajectory {
   std::vector<double> t_s;
   std::vector<Eigen::Vector3d> p_world_tag;
 };
+
+// The kind of one realization: `kind`, or a suboptimal one with the fractions' probabilities.
+TrajectoryKind DrawTrajectoryKind(const TrajectoryOptions& options, RandomStream& rng);
 
 // From one end of the tunnel towards the other (or a stretch of it, kShort).
 Trajectory TunnelTrajectory(const TunnelOptions& tunnel, const TrajectoryOptions& options, RandomStream& rng);

@@ -1,0 +1,46 @@
+#pragma once
+
+#include <functional>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "anchorbench/estimator/solve_result.hpp"
+#include "anchorbench/experiments/config.hpp"
+
+namespace anchorbench::experiments {
+
+// One anchor in one realization with one strategy (a row of attempts.csv).
+struct Attempt {
+  int row = 0;
+  int realization = 0;
+  int anchor_id = 0;
+  estimator::InitStrategy method = estimator::InitStrategy::kPdopGated;
+  bool initialized = false;
+  std::optional<double> t_init_s;
+  int n_used = 0;
+  double pdop_estimate = 0.0;
+  std::optional<double> pdop_true;
+  std::optional<double> crlb_m;  // sigma_d * bias-aware DOP on the attempt's data at the true anchor
+  std::optional<double> error_m;
+  Eigen::Vector3d error_xyz_m = Eigen::Vector3d::Zero();  // estimate - truth
+  std::optional<double> bias_error_m;
+  std::optional<double> alpha;
+  std::string status;  // the solver's status, or not_triggered / no_data
+};
+
+struct MonteCarloOptions {
+  int threads = 1;
+  // Called from one thread at a time with (tasks done, tasks total); tasks are (row, realization).
+  std::function<void(int, int)> progress;
+};
+
+// Runs every row's realizations (parallel over (row, realization) with OpenMP; realization k of
+// every row uses the random streams keyed (seed, k), so rows differ only by their parameters).
+// The result is ordered by row, realization, anchor, method: identical for any thread count.
+std::vector<Attempt> RunMonteCarlo(const ExperimentConfig& config, const MonteCarloOptions& options);
+
+// The attempts of one realization of one row (what each task computes).
+std::vector<Attempt> RunRealization(const RowConfig& row, int row_index, std::uint64_t seed, int realization);
+
+}  // namespace anchorbench::experiments

@@ -1,0 +1,30 @@
+#pragma once
+
+#include <cstdint>
+#include <optional>
+#include <vector>
+
+#include "anchorbench/experiments/monte_carlo.hpp"
+
+namespace anchorbench::experiments {
+
+// Table I's columns for one row and strategy, over its initialized attempts.
+struct MethodSummary {
+  int row = 0;
+  estimator::InitStrategy method = estimator::InitStrategy::kFixedWindow;
+  int attempts = 0;
+  int init = 0;                      // initialized attempts
+  std::optional<double> avg_m;       // mean error (absent when init = 0: never NaN)
+  std::optional<double> med_m;       // median error
+  int gt1m = 0;                      // initialized with error > 1 m
+  std::optional<double> ratio_pct;   // 100 gt1m / init
+  // 95% percentile intervals from a bootstrap over realizations (whole realizations are resampled:
+  // the anchors of one realization share a trajectory, so they are not independent).
+  std::optional<double> avg_lo, avg_hi, ratio_lo, ratio_hi;
+};
+
+// Summaries ordered by row, then fixed before gated (the paper's order).
+std::vector<MethodSummary> Summarize(const std::vector<Attempt>& attempts, int rows, int realizations,
+                                     int bootstrap_resamples, std::uint64_t seed);
+
+}  // namespace anchorbench::experiments

@@ -1,0 +1,87 @@
+#include "anchorbench/experiments/monte_carlo.hpp"
+
+#include <omp.h>
+
+#include "anchorbench/experiments/anchor_bank.hpp"
+#include "anchorbench/sim/scenario.hpp"
+
+namespace anchorbench::experiments {
+namespace {
+
+std::string StatusOf(const AttemptOutcome& o) {
+  if (o.solve) return std::string(estimator::ToString(o.solve->status));
+  return o.n_used == 0 ? "no_data" : "not_triggered";
+}
+
+}  // namespace
+
+std::vector<Attempt> RunRealization(const RowConfig& row, int row_index, std::uint64_t seed, int realization) {
+  const sim::Scenario scenario = sim::GenerateScenario(row.scenario, seed, static_cast<std::uint64_t>(realization));
+  std::map<int, AnchorTruth> truth;
+  AnchorBank bank(row.estimator);
+  for (const sim::SimAnchor& anchor : scenario.anchors) {
+    truth[anchor.id] = {anchor.p_world_anchor, anchor.bias_m};
+    bank.AddAnchor(anchor.id);
+  }
+  // Ranges come in epoch order, so the reported tag position is the epoch's (no interpolation).
+  std::size_t epoch = 0;
+  for (const sim::SimRange& range : scenario.ranges) {
+    while (scenario.t_s[epoch] < range.t_s) ++epoch;
+    bank.Feed({range.t_s, range.tag_id, range.anchor_id, range.range_m, scenario.p_world_tag_reported[epoch]});
+  }
+  const double t_end_s = scenario.t_s.empty() ? 0.0 : scenario.t_s.back();
+
+  std::vector<Attempt> attempts;
+  const double sigma_m = row.scenario.ranging.sigma_range_m;
+  for (const AttemptOutcome& o : bank.Finish(t_end_s, &truth)) {
+    Attempt a;
+    a.row = row_index;
+    a.realization = realization;
+    a.anchor_id = o.anchor_id;
+    a.method = o.method;
+    a.initialized = o.initialized;
+    a.t_init_s = o.t_init_s;
+    a.n_used = o.n_used;
+    a.pdop_estimate = o.pdop_estimate;
+    a.pdop_true = o.pdop_true;
+    if (o.bias_aware_dop && std::isfinite(*o.bias_aware_dop)) a.crlb_m = sigma_m * *o.bias_aware_dop;
+    a.status = StatusOf(o);
+    if (o.solve) a.alpha = o.solve->alpha;
+    if (o.initialized) {
+      const AnchorTruth& t = truth.at(o.anchor_id);
+      a.error_m = o.error_m;
+      a.error_xyz_m = o.solve->p_world_anchor - t.p_world_anchor;
+      a.bias_error_m = o.solve->bias_m - *t.bias_m;
+    }
+    attempts.push_back(std::move(a));
+  }
+  return attempts;
+}
+
+std::vector<Attempt> RunMonteCarlo(const ExperimentConfig& config, const MonteCarloOptions& options) {
+  const std::vector<RowConfig> rows = RowsOf(config);
+  const int realizations = config.realizations;
+  const int tasks = static_cast<int>(rows.size()) * realizations;
+  std::vector<std::vector<Attempt>> per_task(static_cast<std::size_t>(tasks));
+  int done = 0;
+
+#pragma omp parallel for schedule(dynamic, 1) num_threads(options.threads)
+  for (int task = 0; task < tasks; ++task) {
+    const int row = task / realizations;
+    per_task[static_cast<std::size_t>(task)] = RunRealization(rows[static_cast<std::size_t>(row)], row, config.seed,
+                                                              task % realizations);
+#pragma omp critical(anchorbench_progress)
+    {
+      ++done;
+      if (options.progress) options.progress(done, tasks);
+    }
+  }
+
+  std::vector<Attempt> attempts;
+  for (auto& task_attempts : per_task) {
+    for (Attempt& a : task_attempts) attempts.push_back(std::move(a));
+  }
+  return attempts;
+}
+
+}  // namespace anchorbench::experiments

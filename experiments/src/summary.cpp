@@ -1,0 +1,95 @@
+#include "anchorbench/experiments/summary.hpp"
+
+#include <algorithm>
+
+#include "anchorbench/sim/random_stream.hpp"
+
+namespace anchorbench::experiments {
+namespace {
+
+// Sums of one realization for one (row, method): enough to rebuild Avg and Ratio of any resample.
+struct RealizationSums {
+  double error_sum_m = 0.0;
+  int init = 0;
+  int gt1m = 0;
+};
+
+std::optional<double> Percentile(std::vector<double> values, double q) {
+  if (values.empty()) return std::nullopt;
+  std::sort(values.begin(), values.end());
+  const double position = q * static_cast<double>(values.size() - 1);
+  const auto i = static_cast<std::size_t>(position);
+  const double fraction = position - static_cast<double>(i);
+  return i + 1 < values.size() ? values[i] + fraction * (values[i + 1] - values[i]) : values[i];
+}
+
+MethodSummary SummarizeOne(const std::vector<const Attempt*>& attempts, const std::vector<RealizationSums>& sums,
+                           int bootstrap_resamples, sim::RandomStream rng) {
+  MethodSummary s;
+  std::vector<double> errors;
+  for (const Attempt* a : attempts) {
+    ++s.attempts;
+    if (!a->initialized) continue;
+    ++s.init;
+    errors.push_back(*a->error_m);
+    s.gt1m += *a->error_m > 1.0;
+  }
+  if (s.init == 0) return s;
+  double total = 0.0;
+  for (double e : errors) total += e;
+  s.avg_m = total / s.init;
+  s.med_m = Percentile(errors, 0.5);
+  s.ratio_pct = 100.0 * s.gt1m / s.init;
+
+  std::vector<double> avg_samples, ratio_samples;
+  const int realizations = static_cast<int>(sums.size());
+  for (int b = 0; b < bootstrap_resamples; ++b) {
+    RealizationSums resample;
+    for (int k = 0; k < realizations; ++k) {
+      const RealizationSums& pick = sums[static_cast<std::size_t>(rng.Uniform() * realizations)];
+      resample.error_sum_m += pick.error_sum_m;
+      resample.init += pick.init;
+      resample.gt1m += pick.gt1m;
+    }
+    if (resample.init == 0) continue;
+    avg_samples.push_back(resample.error_sum_m / resample.init);
+    ratio_samples.push_back(100.0 * resample.gt1m / resample.init);
+  }
+  s.avg_lo = Percentile(avg_samples, 0.025);
+  s.avg_hi = Percentile(avg_samples, 0.975);
+  s.ratio_lo = Percentile(ratio_samples, 0.025);
+  s.ratio_hi = Percentile(ratio_samples, 0.975);
+  return s;
+}
+
+}  // namespace
+
+std::vector<MethodSummary> Summarize(const std::vector<Attempt>& attempts, int rows, int realizations,
+                                     int bootstrap_resamples, std::uint64_t seed) {
+  std::vector<MethodSummary> summaries;
+  for (int row = 0; row < rows; ++row) {
+    for (estimator::InitStrategy method : {estimator::InitStrategy::kFixedWindow, estimator::InitStrategy::kPdopGated}) {
+      std::vector<const Attempt*> selected;
+      std::vector<RealizationSums> sums(static_cast<std::size_t>(realizations));
+      for (const Attempt& a : attempts) {
+        if (a.row != row || a.method != method) continue;
+        selected.push_back(&a);
+        if (!a.initialized) continue;
+        RealizationSums& r = sums[static_cast<std::size_t>(a.realization)];
+        r.error_sum_m += *a.error_m;
+        ++r.init;
+        r.gt1m += *a.error_m > 1.0;
+      }
+      // One bootstrap stream per (row, method), so each summary is reproducible on its own.
+      const auto substream = static_cast<std::uint32_t>(2 * row + (method == estimator::InitStrategy::kPdopGated));
+      MethodSummary s = SummarizeOne(selected, sums, bootstrap_resamples,
+                                     sim::RandomStream(seed, 0, sim::StreamId::kBootstrap, substream));
+      s.row = row;
+      s.method = method;
+      summaries.push_back(s);
+    }
+  }
+  return summaries;
+}
+
+}  // namespace anchorbench::experiments
