@@ -1,7 +1,12 @@
 #!/usr/bin/env bash
-# Installs what is missing, then configures and builds everything (Release) in build/.
+# Installs what is missing, then configures and builds (Release) in build/: everything, or only
+# the targets given as arguments (e.g. `bash scripts/build.sh anchorbench`).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 bash scripts/setup.sh
 cmake -S . -B build -DCMAKE_BUILD_TYPE=Release >/dev/null
-cmake --build build -j"$(nproc)"
+if [ $# -gt 0 ]; then
+  cmake --build build -j"$(nproc)" --target "$@"
+else
+  cmake --build build -j"$(nproc)"
+fi

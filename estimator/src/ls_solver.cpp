@@ -2,7 +2,7 @@
 
 #include <cmath>
 
-#include <Eigen/Dense>
+#include "normal_equations.hpp"
 
 namespace anchorbench::estimator {
 namespace {
@@ -98,18 +98,15 @@ SolveResult SolveDoubleDifferenceLs(std::span<const Eigen::Vector3d> p_world_tag
     rhs += row.weight * row.b * row.a;
   }
 
-  const Eigen::SelfAdjointEigenSolver<Eigen::Matrix4d> eigen(normal);
-  const Eigen::Vector4d lambda = eigen.eigenvalues();  // ascending
-  if (!std::isfinite(lambda(3)) || !rhs.allFinite()) {
+  if (!normal.allFinite() || !rhs.allFinite()) {
     result.status = SolveStatus::kNumericalFailure;
     return result;
   }
-  if (!(lambda(3) > 0.0) || lambda(0) <= 1e-12 * lambda(3)) {
+  Eigen::Matrix4d normal_inverse;
+  if (!internal::InvertNormalMatrix(normal, &normal_inverse)) {
     result.status = SolveStatus::kDegenerateGeometry;  // e.g. collinear tag positions
     return result;
   }
-  const Eigen::Matrix4d normal_inverse =
-      eigen.eigenvectors() * lambda.cwiseInverse().asDiagonal() * eigen.eigenvectors().transpose();
   const Eigen::Vector4d x = normal_inverse * rhs;
 
   // Covariance s^2 (A^T W A)^-1, s^2 the weighted residual variance of the linear system.

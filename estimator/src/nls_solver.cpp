@@ -3,7 +3,7 @@
 #include <cmath>
 #include <optional>
 
-#include <Eigen/Dense>
+#include "normal_equations.hpp"
 
 namespace anchorbench::estimator {
 namespace {
@@ -171,22 +171,21 @@ SolveResult NlsSolver::Solve(std::span<const Eigen::Vector3d> p_world_tag, std::
     result.status = SolveStatus::kNumericalFailure;
     return result;
   }
-  const Eigen::SelfAdjointEigenSolver<Eigen::Matrix4d> eigen(final_eq.information);
-  const Vector4 lambda = eigen.eigenvalues();
   result.p_world_anchor = stage.theta.head<3>();
   result.bias_m = stage.theta(3);
   result.alpha = stage.alpha;
   result.iterations = stage.iterations;
   result.final_cost = final_eq.cost;
   result.status = stage.status;
-  if (!(lambda(3) > 0.0) || lambda(0) <= 1e-12 * lambda(3)) {
+  Eigen::Matrix4d information_inverse;
+  if (!internal::InvertNormalMatrix(final_eq.information, &information_inverse)) {
     result.status = SolveStatus::kDegenerateGeometry;
     return result;
   }
   // Covariance s^2 (J^T W J)^-1 with s^2 = sum w r^2 / (N - 4): the Gauss-Newton covariance of
   // the reweighted problem (for alpha = 2, the usual sigma^2 (J^T J)^-1).
   const double s2 = final_eq.weighted_squares / static_cast<double>(n - 4);
-  result.covariance = s2 * eigen.eigenvectors() * lambda.cwiseInverse().asDiagonal() * eigen.eigenvectors().transpose();
+  result.covariance = s2 * information_inverse;
   return result;
 }
 

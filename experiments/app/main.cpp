@@ -1,32 +1,56 @@
 // anchorbench: Monte Carlo simulation and benchmarking of online UWB anchor initialization.
+// The only file that sees CLI11: it maps the command line onto the commands of commands.hpp.
 #include <iostream>
-#include <string>
-#include <utility>
-#include <vector>
 
 #include <CLI/CLI.hpp>
 
 #include "anchorbench/experiments/commands.hpp"
 #include "anchorbench/experiments/input_error.hpp"
 
+namespace ex = anchorbench::experiments;
+
 int main(int argc, char** argv) {
-  namespace ex = anchorbench::experiments;
   CLI::App app{"anchorbench: online initialization of unknown UWB anchors (Delama et al., IROS 2025)"};
   app.require_subcommand(1);
-  const std::vector<std::pair<std::string, ex::Action>> actions = {
-      {"simulate", ex::AddSimulateCommand(app)},
-      {"replay", ex::AddReplayCommand(app)},
-      {"run", ex::AddRunCommand(app)},
-  };
+
+  ex::SimulateArgs simulate;
+  CLI::App* simulate_cmd =
+      app.add_subcommand("simulate", "Simulate one realization and write poses.csv, ranges.csv, anchors.csv");
+  simulate_cmd->add_option("config", simulate.config, "Experiment config (YAML)")->required();
+  simulate_cmd->add_option("--out", simulate.out, "Output folder (created if needed)")->required();
+  simulate_cmd->add_option("--seed", simulate.seed, "Override the config's seed");
+  simulate_cmd->add_option("--realization", simulate.realization, "Realization index (default 0)");
+
+  ex::ReplayArgs replay;
+  CLI::App* replay_cmd =
+      app.add_subcommand("replay", "Run the online initializer (PDOP-gated and fixed window) on recorded data");
+  replay_cmd->add_option("--poses", replay.poses, "poses.csv: t,tag_id,x,y,z")->required();
+  replay_cmd->add_option("--ranges", replay.ranges, "ranges.csv: t,tag_id,anchor_id,range")->required();
+  replay_cmd->add_option("--anchors", replay.anchors, "anchors.csv: anchor_id,x,y,z[,bias] (truth, for errors)");
+  replay_cmd->add_option("--config", replay.config, "Config whose 'estimator' section is used (default: defaults)");
+  replay_cmd->add_option("--trace", replay.trace,
+                         "Write one row per range: t,tag_id,anchor_id,range,accepted,n_accepted,pdop");
+  replay_cmd->add_option("--out", replay.out, "Folder for estimates.csv");
+
+  ex::RunArgs run;
+  CLI::App* run_cmd = app.add_subcommand("run", "Monte Carlo: every row x realization x anchor, gated and fixed window");
+  run_cmd->add_option("config", run.config, "Experiment config (YAML) with rows")->required();
+  run_cmd->add_option("--out", run.out, "Output folder (default results/<config name>/)");
+  run_cmd->add_option("--threads", run.threads, "OpenMP threads (default: all cores)")->check(CLI::NonNegativeNumber);
+  run_cmd->add_option("--seed", run.seed, "Override the config's seed");
+  run_cmd->add_option("--realizations", run.realizations, "Override the realizations per row")->check(CLI::PositiveNumber);
+  run_cmd->add_option("--set", run.overrides, "Override a config value: KEY=VALUE, KEY a dotted path (repeatable)");
+  run_cmd->add_flag("--quiet", run.quiet, "No progress output");
+
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
     return app.exit(e);
   }
   try {
-    for (const auto& [name, action] : actions) {
-      if (app.got_subcommand(name)) return action();
-    }
+    if (simulate_cmd->parsed()) return ex::SimulateCommand(simulate);
+    if (replay_cmd->parsed()) return ex::ReplayCommand(replay);
+    if (run_cmd->parsed()) return ex::RunCommand(run);
   } catch (const ex::InputError& e) {
     std::cerr << "anchorbench: error: " << e.what() << '\n';
     return 2;

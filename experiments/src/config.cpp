@@ -1,5 +1,6 @@
 #include "anchorbench/experiments/config.hpp"
 
+#include <charconv>
 #include <filesystem>
 #include <limits>
 
@@ -68,6 +69,7 @@ void VisitRanging(V& v, sim::RangeModelOptions& o) {
   v.Number("bias_a_m", o.bias_a_m, kAny);
   v.Number("bias_b_m", o.bias_b_m, kAny);
   v.Number("outlier_probability", o.outlier_probability, kProbability);
+  v.Number("outlier_burst_length", o.outlier_burst_length, {1.0});
   v.Choice("outlier_kind", o.outlier_kind, sim::ParseOutlierKind, [](auto k) { return sim::ToString(k); },
            "positive, symmetric");
   v.Number("outlier_min_m", o.outlier_min_m, kNonNegative);
@@ -178,7 +180,56 @@ std::vector<RowConfig> RowsOf(const ExperimentConfig& config) {
   return {RowConfig{"base", config.scenario, config.estimator, std::nullopt}};
 }
 
-ExperimentConfig LoadConfig(const std::string& path) {
+namespace {
+
+// Sets root[a][b][c] = value for "a.b.c=value", creating mappings on the way; a number indexes
+// a list ("rows.1.scenario..." is the second row).
+void ApplyOverride(YAML::Node& root, const std::string& assignment) {
+  const std::size_t equals = assignment.find('=');
+  if (equals == std::string::npos || equals == 0) {
+    throw InputError("--set '" + assignment + "': expected KEY=VALUE, e.g. scenario.tunnel.width_m=12");
+  }
+  const std::string key = assignment.substr(0, equals);
+  std::vector<std::string> parts;
+  for (std::size_t start = 0;;) {
+    const std::size_t dot = key.find('.', start);
+    parts.push_back(key.substr(start, dot - start));
+    if (dot == std::string::npos) break;
+    start = dot + 1;
+  }
+  YAML::Node node = root;
+  for (std::size_t i = 0; i < parts.size(); ++i) {
+    const std::string& part = parts[i];
+    const bool last = i + 1 == parts.size();
+    if (node.IsSequence()) {
+      std::size_t index = 0;
+      const auto [end, ec] = std::from_chars(part.data(), part.data() + part.size(), index);
+      if (ec != std::errc() || end != part.data() + part.size() || index >= node.size()) {
+        throw InputError("--set '" + assignment + "': '" + part + "' is not an index of the list (0 to " +
+                         std::to_string(node.size() - 1) + ")");
+      }
+      if (last) {
+        node[index] = YAML::Load(assignment.substr(equals + 1));
+        return;
+      }
+      node.reset(node[index]);
+      continue;
+    }
+    if (node.IsDefined() && !node.IsNull() && !node.IsMap()) {
+      throw InputError("--set '" + assignment + "': '" + parts[i - 1] + "' is not a section");
+    }
+    if (last) {
+      node[part] = YAML::Load(assignment.substr(equals + 1));
+      return;
+    }
+    if (!node[part].IsDefined() || node[part].IsNull()) node[part] = YAML::Node(YAML::NodeType::Map);
+    node.reset(node[part]);
+  }
+}
+
+}  // namespace
+
+ExperimentConfig LoadConfig(const std::string& path, const std::vector<std::string>& overrides) {
   YAML::Node root;
   try {
     root = YAML::LoadFile(path);
@@ -186,6 +237,14 @@ ExperimentConfig LoadConfig(const std::string& path) {
     throw InputError(path + ": cannot open the config file");
   } catch (const YAML::ParserException& e) {
     throw InputError(path + ":" + std::to_string(e.mark.line + 1) + ": YAML syntax error: " + e.msg);
+  }
+  if (root.IsNull()) root = YAML::Node(YAML::NodeType::Map);
+  for (const std::string& assignment : overrides) {
+    try {
+      ApplyOverride(root, assignment);
+    } catch (const YAML::Exception& e) {
+      throw InputError("--set '" + assignment + "': " + e.msg);
+    }
   }
   ExperimentConfig config;
   config.name = std::filesystem::path(path).stem().string();

@@ -10,53 +10,40 @@
 
 namespace anchorbench::experiments {
 
-Action AddReplayCommand(CLI::App& app) {
-  struct Args {
-    std::string poses, ranges, anchors, config, trace, out;
-  };
-  auto args = std::make_shared<Args>();
-  CLI::App* cmd = app.add_subcommand("replay", "Run the online initializer (PDOP-gated and fixed window) on recorded data");
-  cmd->add_option("--poses", args->poses, "poses.csv: t,tag_id,x,y,z")->required();
-  cmd->add_option("--ranges", args->ranges, "ranges.csv: t,tag_id,anchor_id,range")->required();
-  cmd->add_option("--anchors", args->anchors, "anchors.csv: anchor_id,x,y,z[,bias] (truth, for errors)");
-  cmd->add_option("--config", args->config, "Experiment config whose 'estimator' section is used (default: defaults)");
-  cmd->add_option("--trace", args->trace, "Write one row per range: " + std::string(kTraceHeader));
-  cmd->add_option("--out", args->out, "Folder for estimates.csv");
-  return [args]() {
-    estimator::InitializerOptions options;
-    if (!args->config.empty()) options = LoadConfig(args->config).estimator;
-    const PoseTracks poses = PoseTracks::Load(args->poses);
-    const std::vector<RangeRecord> ranges = LoadRanges(args->ranges);
-    std::map<int, AnchorTruth> truth;
-    if (!args->anchors.empty()) truth = LoadAnchors(args->anchors);
-    if (!args->out.empty()) {
-      std::error_code error;
-      std::filesystem::create_directories(args->out, error);
-      if (error) throw InputError(args->out + ": cannot create the folder: " + error.message());
-    }
+int ReplayCommand(const ReplayArgs& args) {
+  estimator::InitializerOptions options;
+  if (!args.config.empty()) options = LoadConfig(args.config).estimator;
+  const PoseTracks poses = PoseTracks::Load(args.poses);
+  const std::vector<RangeRecord> ranges = LoadRanges(args.ranges);
+  std::map<int, AnchorTruth> truth;
+  if (!args.anchors.empty()) truth = LoadAnchors(args.anchors);
+  if (!args.out.empty()) {
+    std::error_code error;
+    std::filesystem::create_directories(args.out, error);
+    if (error) throw InputError(args.out + ": cannot create the folder: " + error.message());
+  }
 
-    std::unique_ptr<AtomicFile> trace_file;
-    TraceSink trace;
-    if (!args->trace.empty()) {
-      trace_file = std::make_unique<AtomicFile>(args->trace);
-      trace_file->stream() << kTraceHeader << '\n';
-      trace = [&](const RangeRecord& r, const estimator::FeedResult& fed) { WriteTraceRow(trace_file->stream(), r, fed); };
-    }
-    const ReplayResult result = Replay(poses, ranges, args->anchors.empty() ? nullptr : &truth, options, trace);
-    if (result.ranges_skipped > 0) {
-      std::cerr << args->ranges << ": " << result.ranges_skipped
-                << " ranges outside their tag's pose time span were skipped, never extrapolated (first at line "
-                << result.first_skipped_line << ")\n";
-    }
-    PrintEstimates(std::cout, result.outcomes);
-    if (trace_file) trace_file->Commit();
-    if (!args->out.empty()) {
-      AtomicFile estimates(std::filesystem::path(args->out) / "estimates.csv");
-      WriteEstimates(estimates.stream(), result.outcomes);
-      estimates.Commit();
-    }
-    return 0;
-  };
+  std::unique_ptr<AtomicFile> trace_file;
+  TraceSink trace;
+  if (!args.trace.empty()) {
+    trace_file = std::make_unique<AtomicFile>(args.trace);
+    trace_file->stream() << kTraceHeader << '\n';
+    trace = [&](const RangeRecord& r, const estimator::FeedResult& fed) { WriteTraceRow(trace_file->stream(), r, fed); };
+  }
+  const ReplayResult result = Replay(poses, ranges, args.anchors.empty() ? nullptr : &truth, options, trace);
+  if (result.ranges_skipped > 0) {
+    std::cerr << args.ranges << ": " << result.ranges_skipped
+              << " ranges outside their tag's pose time span were skipped, never extrapolated (first at line "
+              << result.first_skipped_line << ")\n";
+  }
+  PrintEstimates(std::cout, result.outcomes);
+  if (trace_file) trace_file->Commit();
+  if (!args.out.empty()) {
+    AtomicFile estimates(std::filesystem::path(args.out) / "estimates.csv");
+    WriteEstimates(estimates.stream(), result.outcomes);
+    estimates.Commit();
+  }
+  return 0;
 }
 
 }  // namespace anchorbench::experiments

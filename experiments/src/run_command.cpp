@@ -16,60 +16,43 @@
 
 namespace anchorbench::experiments {
 
-Action AddRunCommand(CLI::App& app) {
-  struct Args {
-    std::string config, out;
-    int threads = 0;
-    std::optional<std::uint64_t> seed;
-    std::optional<int> realizations;
-    bool quiet = false;
-  };
-  auto args = std::make_shared<Args>();
-  CLI::App* cmd = app.add_subcommand("run", "Monte Carlo: every row x realization x anchor, gated and fixed window");
-  cmd->add_option("config", args->config, "Experiment config (YAML) with rows")->required();
-  cmd->add_option("--out", args->out, "Output folder (default results/<config name>/)");
-  cmd->add_option("--threads", args->threads, "OpenMP threads (default: all cores)")->check(CLI::NonNegativeNumber);
-  cmd->add_option("--seed", args->seed, "Override the config's seed");
-  cmd->add_option("--realizations", args->realizations, "Override the realizations per row")->check(CLI::PositiveNumber);
-  cmd->add_flag("--quiet", args->quiet, "No progress output");
-  return [args]() {
-    ExperimentConfig config = LoadConfig(args->config);
-    if (args->seed) config.seed = *args->seed;
-    if (args->realizations) config.realizations = *args->realizations;
-    const int threads = args->threads > 0 ? args->threads : omp_get_num_procs();
-    const std::filesystem::path out = args->out.empty() ? std::filesystem::path("results") / config.name
-                                                        : std::filesystem::path(args->out);
-    std::error_code error;
-    std::filesystem::create_directories(out, error);
-    if (error) throw InputError(out.string() + ": cannot create the folder: " + error.message());
+int RunCommand(const RunArgs& args) {
+  ExperimentConfig config = LoadConfig(args.config, args.overrides);
+  if (args.seed) config.seed = *args.seed;
+  if (args.realizations) config.realizations = *args.realizations;
+  const int threads = args.threads > 0 ? args.threads : omp_get_num_procs();
+  const std::filesystem::path out = args.out.empty() ? std::filesystem::path("results") / config.name
+                                                      : std::filesystem::path(args.out);
+  std::error_code error;
+  std::filesystem::create_directories(out, error);
+  if (error) throw InputError(out.string() + ": cannot create the folder: " + error.message());
 
-    Progress progress("run " + config.name, args->quiet);
-    const std::vector<RowConfig> rows = RowsOf(config);
-    const std::vector<Attempt> attempts =
-        RunMonteCarlo(config, {threads, [&](int done, int total) { progress.Update(done, total); }});
-    const double wall_time_s = progress.elapsed_s();
-    progress.Finish(static_cast<int>(rows.size()) * config.realizations);
-    const std::vector<MethodSummary> summaries = Summarize(attempts, static_cast<int>(rows.size()),
-                                                           config.realizations, config.bootstrap_resamples, config.seed);
+  Progress progress("run " + config.name, args.quiet);
+  const std::vector<RowConfig> rows = RowsOf(config);
+  const std::vector<Attempt> attempts =
+      RunMonteCarlo(config, {threads, [&](int done, int total) { progress.Update(done, total); }});
+  const double wall_time_s = progress.elapsed_s();
+  progress.Finish(static_cast<int>(rows.size()) * config.realizations);
+  const std::vector<MethodSummary> summaries = Summarize(attempts, static_cast<int>(rows.size()),
+                                                         config.realizations, config.bootstrap_resamples, config.seed);
 
-    // Build every file first, then commit them together: an error leaves the old results intact.
-    AtomicFile attempts_file(out / "attempts.csv");
-    WriteAttempts(attempts_file.stream(), attempts, rows);
-    AtomicFile summary_csv(out / "summary.csv");
-    WriteSummaryCsv(summary_csv.stream(), summaries, rows);
-    std::ostringstream markdown;
-    WriteSummaryMarkdown(markdown, summaries, rows, config);
-    AtomicFile summary_md(out / "summary.md");
-    summary_md.stream() << markdown.str();
-    AtomicFile manifest(out / "manifest.json");
-    manifest.stream() << ManifestJson(config, {args->config, threads, wall_time_s});
-    attempts_file.Commit();
-    summary_csv.Commit();
-    summary_md.Commit();
-    manifest.Commit();
-    if (!args->quiet) std::cout << markdown.str();
-    return 0;
-  };
+  // Build every file first, then commit them together: an error leaves the old results intact.
+  AtomicFile attempts_file(out / "attempts.csv");
+  WriteAttempts(attempts_file.stream(), attempts, rows);
+  AtomicFile summary_csv(out / "summary.csv");
+  WriteSummaryCsv(summary_csv.stream(), summaries, rows);
+  std::ostringstream markdown;
+  WriteSummaryMarkdown(markdown, summaries, rows, config);
+  AtomicFile summary_md(out / "summary.md");
+  summary_md.stream() << markdown.str();
+  AtomicFile manifest(out / "manifest.json");
+  manifest.stream() << ManifestJson(config, {args.config, threads, wall_time_s});
+  attempts_file.Commit();
+  summary_csv.Commit();
+  summary_md.Commit();
+  manifest.Commit();
+  if (!args.quiet) std::cout << markdown.str();
+  return 0;
 }
 
 }  // namespace anchorbench::experiments

@@ -86,6 +86,33 @@ TEST(Config, RowsOverlayTheBaseAndNameTheirPath) {
   EXPECT_NE(ErrorFor("rows: 3\n").find("key 'rows': expected a list"), std::string::npos);
 }
 
+TEST(Config, OverridesAreValidatedLikeTheFile) {
+  testing::TempDir dir("set");
+  const std::string path = dir.Write("t.yaml", "scenario:\n  tunnel: {width_m: 8}\n");
+  const ExperimentConfig config = LoadConfig(path, {"scenario.tunnel.width_m=12", "estimator.trigger.pdop_threshold=0.5"});
+  EXPECT_EQ(config.scenario.tunnel.width_m, 12.0);
+  EXPECT_EQ(config.estimator.pdop_threshold, 0.5);
+  auto error_for = [&](const std::string& assignment) {
+    try {
+      LoadConfig(path, {assignment});
+    } catch (const InputError& e) {
+      return std::string(e.what());
+    }
+    return std::string();
+  };
+  EXPECT_NE(error_for("scenario.tunnel.widht_m=3").find("key 'scenario.tunnel.widht_m': unknown key"), std::string::npos);
+  EXPECT_NE(error_for("scenario.tunnel.width_m=-3").find("must be > 0"), std::string::npos);
+  EXPECT_NE(error_for("scenario.tunnel").find("expected KEY=VALUE"), std::string::npos);
+  EXPECT_NE(error_for("scenario.tunnel.width_m.x=1").find("'width_m' is not a section"), std::string::npos);
+  EXPECT_NE(error_for("seed.x=1").find("key 'seed': expected an integer"), std::string::npos);
+
+  const std::string table = dir.Write("rows.yaml", "rows:\n  - name: a\n  - name: b\n");
+  const ExperimentConfig rows = LoadConfig(table, {"rows.1.scenario.ranging.sigma_range_m=0.3"});
+  EXPECT_EQ(rows.rows[0].scenario.ranging.sigma_range_m, 0.1);
+  EXPECT_EQ(rows.rows[1].scenario.ranging.sigma_range_m, 0.3);
+  EXPECT_THROW(LoadConfig(table, {"rows.2.scenario.ranging.sigma_range_m=0.3"}), InputError);
+}
+
 TEST(Config, MissingFileIsAnInputError) {
   EXPECT_THROW(LoadConfig("/nonexistent/config.yaml"), InputError);
 }

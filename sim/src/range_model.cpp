@@ -33,6 +33,8 @@ bool RangeModelOptions::IsValid(std::string* why) const {
   if (bias_distribution == BiasDistribution::kNormal && !(bias_b_m >= 0.0))
     return fail("normal bias needs bias_b_m (sigma) >= 0");
   if (!(outlier_probability >= 0.0 && outlier_probability <= 1.0)) return fail("outlier_probability must be in [0, 1]");
+  if (!(outlier_burst_length >= 1.0) || !std::isfinite(outlier_burst_length))
+    return fail("outlier_burst_length must be >= 1");
   if (!(outlier_min_m >= 0.0 && outlier_min_m <= outlier_max_m) || !std::isfinite(outlier_max_m))
     return fail("outlier magnitudes must satisfy 0 <= min <= max");
   if (!(max_range_m > 0.0)) return fail("max_range_m must be > 0");

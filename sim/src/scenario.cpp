@@ -14,9 +14,41 @@ double DrawBias(const RangeModelOptions& o, RandomStream& rng) {
 
 double DrawOutlier(const RangeModelOptions& o, RandomStream& rng) {
   const double magnitude = rng.Uniform(o.outlier_min_m, o.outlier_max_m);
-  if (o.outlier_kind == OutlierKind::kPositive) return magnitude;
-  return rng.Uniform() < 0.5 ? -magnitude : magnitude;
+  const double sign = rng.Uniform() < 0.5 ? -1.0 : 1.0;  // drawn for both kinds: same stream use
+  return o.outlier_kind == OutlierKind::kPositive ? magnitude : sign * magnitude;
 }
+
+// Outlier episodes of one anchor, a two-state Markov chain over its ranges: an episode ends
+// with probability b = 1/L per range (mean length L) and starts with a = p b / (1 - p), so the
+// stationary fraction of outlier ranges is a / (a + b) = p. One offset holds for a whole episode.
+class OutlierProcess {
+ public:
+  OutlierProcess(const RangeModelOptions& o, RandomStream rng)
+      : options_(o),
+        rng_(rng),
+        end_probability_(1.0 / o.outlier_burst_length),
+        start_probability_(o.outlier_probability >= 1.0
+                               ? 1.0
+                               : o.outlier_probability * end_probability_ / (1.0 - o.outlier_probability)) {}
+
+  // The outlier offset of the next range, 0 if it is not an outlier.
+  double Next() {
+    const double u = rng_.Uniform();
+    if (offset_m_ != 0.0) {
+      if (u < end_probability_) offset_m_ = 0.0;  // the episode ends on a clean range
+    } else if (u < start_probability_) {
+      offset_m_ = DrawOutlier(options_, rng_);
+    }
+    return offset_m_;
+  }
+
+ private:
+  const RangeModelOptions& options_;
+  RandomStream rng_;
+  double end_probability_;
+  double start_probability_;
+  double offset_m_ = 0.0;
+};
 
 }  // namespace
 
@@ -64,11 +96,12 @@ Scenario GenerateScenario(const ScenarioOptions& options, std::uint64_t seed, st
 
   // One stream per anchor and noise source, so an anchor's noise does not depend on which other
   // anchors happen to be in range.
-  std::vector<RandomStream> noise_rng, outlier_rng, dropout_rng;
+  std::vector<RandomStream> noise_rng, dropout_rng;
+  std::vector<OutlierProcess> outliers;
   for (const SimAnchor& anchor : scenario.anchors) {
     const auto sub = static_cast<std::uint32_t>(anchor.id);
     noise_rng.emplace_back(seed, realization, StreamId::kRangeNoise, sub);
-    outlier_rng.emplace_back(seed, realization, StreamId::kOutlier, sub);
+    outliers.emplace_back(model, RandomStream(seed, realization, StreamId::kOutlier, sub));
     dropout_rng.emplace_back(seed, realization, StreamId::kDropout, sub);
   }
   for (std::size_t k = 0; k < scenario.t_s.size(); ++k) {
@@ -76,9 +109,10 @@ Scenario GenerateScenario(const ScenarioOptions& options, std::uint64_t seed, st
       const double distance_m = (scenario.p_world_tag_true[k] - anchor.p_world_anchor).norm();
       if (distance_m > model.max_range_m) continue;
       if (dropout_rng[anchor.id].Bernoulli(model.dropout_probability)) continue;
-      double range_m = distance_m + anchor.bias_m + model.sigma_range_m * noise_rng[anchor.id].Normal();  // Eq. (1)
-      const bool outlier = outlier_rng[anchor.id].Bernoulli(model.outlier_probability);
-      if (outlier) range_m += DrawOutlier(model, outlier_rng[anchor.id]);
+      const double outlier_m = outliers[anchor.id].Next();
+      const double range_m = distance_m + anchor.bias_m + model.sigma_range_m * noise_rng[anchor.id].Normal() +
+                             outlier_m;  // Eq. (1) plus the outlier, if any
+      const bool outlier = outlier_m != 0.0;
       // A ranging device never reports a negative distance.
       scenario.ranges.push_back({scenario.t_s[k], 0, anchor.id, std::max(range_m, 0.0), outlier});
     }

@@ -73,6 +73,39 @@ TEST(Scenario, RangesFollowEq1WithinMaxRangeAndOutlierRate) {
   EXPECT_NEAR(std::sqrt(sum_sq / inliers), 0.1, 0.01);
 }
 
+TEST(Scenario, OutlierEpisodesHaveTheirMeanLengthAndRate) {
+  ScenarioOptions o = TunnelScenario();
+  o.ranging.outlier_probability = 0.1;
+  o.ranging.outlier_burst_length = 20.0;
+  o.ranging.max_range_m = 1000.0;  // every anchor every epoch: episodes are runs in one anchor's sequence
+  const Scenario s = GenerateScenario(o, 2, 0);
+  std::vector<int> run(s.anchors.size(), 0);
+  std::vector<double> offset(s.anchors.size(), 0.0);
+  int outliers = 0, episodes = 0;
+  std::size_t epoch = 0;
+  for (const SimRange& r : s.ranges) {
+    while (s.t_s[epoch] < r.t_s) ++epoch;
+    if (r.is_outlier) {
+      ++outliers;
+      const double excess = r.range_m - (s.p_world_tag_true[epoch] - s.anchors[r.anchor_id].p_world_anchor).norm() -
+                            s.anchors[r.anchor_id].bias_m;
+      if (run[r.anchor_id] == 0) {
+        ++episodes;
+        offset[r.anchor_id] = excess;
+      } else {
+        EXPECT_NEAR(excess, offset[r.anchor_id], 1.0);  // one offset per episode (plus noise)
+      }
+      ++run[r.anchor_id];
+    } else {
+      run[r.anchor_id] = 0;
+    }
+  }
+  const double rate = static_cast<double>(outliers) / s.ranges.size();
+  // ~25k ranges in ~125 episodes: the rate's standard error is ~0.009, the mean length's ~2.
+  EXPECT_NEAR(rate, 0.1, 0.03);
+  EXPECT_NEAR(static_cast<double>(outliers) / episodes, 20.0, 6.0);
+}
+
 TEST(Scenario, IllConditionedTrajectoriesAreWhatTheySay) {
   ScenarioOptions o = TunnelScenario();
   o.trajectory.kind = TrajectoryKind::kStraight;

@@ -1,15 +1,38 @@
 #pragma once
 
-#include <CLI/CLI.hpp>
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <vector>
 
 namespace anchorbench::experiments {
 
-// Each subcommand registers its options on `app` and returns the action to run once parsed.
-// Actions return the process exit code; InputError propagates to main(), which reports it.
-using Action = std::function<int()>;
+// The subcommands as plain functions on their arguments; app/main.cpp maps the command line onto
+// them (and is the only file that sees CLI11). Each returns the process exit code; bad input
+// throws InputError, which main() reports.
 
-Action AddSimulateCommand(CLI::App& app);
-Action AddReplayCommand(CLI::App& app);
-Action AddRunCommand(CLI::App& app);
+struct SimulateArgs {
+  std::string config;
+  std::string out;
+  std::optional<std::uint64_t> seed;
+  std::uint64_t realization = 0;
+};
+int SimulateCommand(const SimulateArgs& args);
+
+struct ReplayArgs {
+  std::string poses, ranges, anchors, config, trace, out;
+};
+int ReplayCommand(const ReplayArgs& args);
+
+struct RunArgs {
+  std::string config;
+  std::string out;
+  int threads = 0;  // 0: all cores
+  std::optional<std::uint64_t> seed;
+  std::optional<int> realizations;
+  std::vector<std::string> overrides;  // --set KEY=VALUE
+  bool quiet = false;
+};
+int RunCommand(const RunArgs& args);
 
 }  // namespace anchorbench::experiments

@@ -49,7 +49,9 @@ struct ExperimentConfig {
 std::vector<RowConfig> RowsOf(const ExperimentConfig& config);
 
 // Reads and validates the whole file; throws InputError naming the file and key path.
-ExperimentConfig LoadConfig(const std::string& path);
+// `overrides` are KEY=VALUE pairs (KEY a dotted path such as scenario.tunnel.width_m) applied to
+// the YAML before validation, so an override is checked exactly like a value in the file.
+ExperimentConfig LoadConfig(const std::string& path, const std::vector<std::string>& overrides = {});
 
 // Section parsers. Absent keys keep the values already in `options`, so a section can be laid
 // over defaults or over another configuration; unknown keys and invalid values throw InputError.

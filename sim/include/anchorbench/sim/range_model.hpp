@@ -24,7 +24,10 @@ struct RangeModelOptions {
   BiasDistribution bias_distribution = BiasDistribution::kUniform;
   double bias_a_m = -0.3;
   double bias_b_m = 0.3;
-  double outlier_probability = 0.0;  // per range
+  double outlier_probability = 0.0;  // long-run fraction of ranges that are outliers
+  // Mean number of consecutive outlier ranges of one episode (geometric); one offset holds for
+  // the whole episode, like a sustained NLOS excess path. 1: isolated spikes.
+  double outlier_burst_length = 1.0;
   OutlierKind outlier_kind = OutlierKind::kPositive;
   double outlier_min_m = 1.0;  // outlier magnitude, uniform in [min, max]
   double outlier_max_m = 10.0;
