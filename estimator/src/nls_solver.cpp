@@ -95,7 +95,8 @@ NlsSolver::NlsSolver(const NlsOptions& options) : options_(options) {
 }
 
 NlsSolver::Stage NlsSolver::Refine(std::span<const Eigen::Vector3d> p, std::span<const double> d,
-                                   const Eigen::Vector4d& theta_initial, bool adaptive) const {
+                                   const Eigen::Vector4d& theta_initial, bool adaptive,
+                                   double step_tolerance_m) const {
   const double c = options_.kernel_scale_m;
   std::optional<AlphaSelector> selector;
   if (adaptive) selector.emplace(table_);
@@ -136,7 +137,7 @@ NlsSolver::Stage NlsSolver::Refine(std::span<const Eigen::Vector3d> p, std::span
       stage.status = SolveStatus::kConverged;
       break;
     }
-    if (delta.norm() < options_.step_tolerance_m && std::abs(stage.alpha - previous_alpha) < options_.alpha_tolerance) {
+    if (delta.norm() < step_tolerance_m && std::abs(stage.alpha - previous_alpha) < options_.alpha_tolerance) {
       stage.status = SolveStatus::kConverged;
       break;
     }
@@ -157,11 +158,13 @@ SolveResult NlsSolver::Solve(std::span<const Eigen::Vector3d> p_world_tag, std::
   theta << p_world_anchor_initial, bias_initial_m;
   Stage stage{theta, 2.0, 0, SolveStatus::kConverged};
   if (!adaptive || options_.l2_warm_start) {
-    stage = Refine(p_world_tag, range_m, theta, /*adaptive=*/false);
+    // As the final stage (L2 mode) to full tolerance; as a warm start, only into the basin.
+    const double tolerance_m = adaptive ? 10.0 * options_.step_tolerance_m : options_.step_tolerance_m;
+    stage = Refine(p_world_tag, range_m, theta, /*adaptive=*/false, tolerance_m);
   }
   if (adaptive && stage.status != SolveStatus::kNumericalFailure) {
     const int used = stage.iterations;
-    stage = Refine(p_world_tag, range_m, stage.theta, /*adaptive=*/true);
+    stage = Refine(p_world_tag, range_m, stage.theta, /*adaptive=*/true, options_.step_tolerance_m);
     stage.iterations += used;
   }
   const NormalEquations final_eq =

@@ -24,13 +24,17 @@ KernelValue EvaluateKernel(double x, double alpha) {
   const double x2 = x * x;
   if (IsL2(alpha)) return {0.5 * x2, 1.0};
   const double abs_alpha_minus_2 = std::abs(alpha - 2.0);
-  const double base = x2 / abs_alpha_minus_2 + 1.0;        // x^2/|alpha-2| + 1
-  const double log_base = std::log1p(x2 / abs_alpha_minus_2);
-  if (IsCauchy(alpha)) return {log_base, 1.0 / base};        // |alpha-2| = 2: log(x^2/2 + 1), 2/(x^2+2)
-  // Eq. (13) with expm1, so the alpha -> 0 approach keeps its precision; the weight
-  // base^(alpha/2 - 1) = base^(alpha/2) / base reuses the same power.
-  const double power_minus_1 = std::expm1(0.5 * alpha * log_base);
-  return {abs_alpha_minus_2 / alpha * power_minus_1, (power_minus_1 + 1.0) / base};
+  const double u = x2 / abs_alpha_minus_2;  // base = u + 1 = x^2/|alpha-2| + 1
+  // log1p only where it earns its cost (glibc's log1p is several times slower than log): for
+  // u >= 1e-3, log(1 + u) is within ~1e-13 relative.
+  const double log_base = u < 1e-3 ? std::log1p(u) : std::log(1.0 + u);
+  if (IsCauchy(alpha)) return {log_base, 1.0 / (1.0 + u)};  // |alpha-2| = 2: log(x^2/2 + 1), 2/(x^2+2)
+  // One power serves both: weight = base^(alpha/2 - 1), base^(alpha/2) = weight * base.
+  const double weight = std::exp((0.5 * alpha - 1.0) * log_base);
+  const double power_minus_1 = 0.5 * alpha * log_base < 1e-3 && 0.5 * alpha * log_base > -1e-3
+                                   ? std::expm1(0.5 * alpha * log_base)  // keep precision near alpha = 0
+                                   : weight * (1.0 + u) - 1.0;
+  return {abs_alpha_minus_2 / alpha * power_minus_1, weight};  // Eq. (13)
 }
 
 double Rho(double x, double alpha) { return EvaluateKernel(x, alpha).rho; }
@@ -84,10 +88,23 @@ void AlphaSelector::Clear() {
   total_count_ = 0.0;
 }
 
+// Upper edges of the histogram bins in |x|: even in log(1 + |x|) up to kMaxAbsX.
+static const std::array<double, AlphaSelector::kBins - 1>& BinEdges() {
+  static const auto edges = [] {
+    std::array<double, AlphaSelector::kBins - 1> e{};
+    for (int b = 0; b < AlphaSelector::kBins - 1; ++b) {
+      e[b] = std::expm1((b + 1) * std::log1p(AlphaSelector::kMaxAbsX) / AlphaSelector::kBins);
+    }
+    return e;
+  }();
+  return edges;
+}
+
 void AlphaSelector::Add(double x) {
-  static const double kScale = kBins / std::log1p(kMaxAbsX);
   const double abs_x = std::abs(x);
-  const int bin = std::min(kBins - 1, static_cast<int>(std::log1p(abs_x) * kScale));
+  const auto& edges = BinEdges();
+  // A binary search over the edges costs less than the log1p it replaces.
+  const auto bin = static_cast<int>(std::upper_bound(edges.begin(), edges.end(), abs_x) - edges.begin());
   bin_count_[bin] += 1.0;
   bin_sum_x_squared_[bin] += abs_x * abs_x;
   total_count_ += 1.0;

@@ -24,7 +24,8 @@ struct NlsOptions {
   double kernel_scale_m = 0.1;    // c of Eq. (13); the residual scale the kernel treats as "normal"
   double truncation = 10.0;       // |r/c| bound of the truncated density's normalizer Z~(alpha)
   int max_iterations = 50;        // LM iterations per stage (L2 warm start, adaptive)
-  double step_tolerance_m = 1e-4;  // converged when ||delta theta|| falls below this...
+  double step_tolerance_m = 1e-3;  // converged when ||delta theta|| falls below this (1 mm: far below
+                                   // any UWB accuracy; the L2 warm start stops at 10x this)...
   double alpha_tolerance = 1e-2;   // ...and alpha moved less than this
   double initial_damping = 1e-4;   // LM lambda, relative to diag(J^T W J)
   // Adaptive mode: first converge with alpha = 2 from the LS seed, then adapt. With outliers the
@@ -58,7 +59,7 @@ class NlsSolver {
     SolveStatus status;
   };
   Stage Refine(std::span<const Eigen::Vector3d> p, std::span<const double> d, const Eigen::Vector4d& theta,
-               bool adaptive) const;
+               bool adaptive, double step_tolerance_m) const;
 
   NlsOptions options_;
   std::shared_ptr<const LogPartitionTable> table_;  // only for KernelMode::kAdaptive
