@@ -42,6 +42,15 @@ int main(int argc, char** argv) {
   run_cmd->add_option("--set", run.overrides, "Override a config value: KEY=VALUE, KEY a dotted path (repeatable)");
   run_cmd->add_flag("--quiet", run.quiet, "No progress output");
 
+  ex::SweepArgs sweep;
+  CLI::App* sweep_cmd = app.add_subcommand("sweep", "Run a config over a grid of values and tabulate each point");
+  sweep_cmd->add_option("config", sweep.config, "Experiment config (YAML); its 'sweep' section gives axes")->required();
+  sweep_cmd->add_option("--set", sweep.axes, "An axis: KEY=VALUES, a list a,b,c or a range start:stop:step (repeatable)");
+  sweep_cmd->add_option("--out", sweep.out, "Output folder (default results/<config name>/)");
+  sweep_cmd->add_option("--threads", sweep.threads, "OpenMP threads (default: all cores)")->check(CLI::NonNegativeNumber);
+  sweep_cmd->add_option("--realizations", sweep.realizations, "Override the realizations per row")->check(CLI::PositiveNumber);
+  sweep_cmd->add_flag("--quiet", sweep.quiet, "No progress output");
+
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
@@ -51,6 +60,7 @@ int main(int argc, char** argv) {
     if (simulate_cmd->parsed()) return ex::SimulateCommand(simulate);
     if (replay_cmd->parsed()) return ex::ReplayCommand(replay);
     if (run_cmd->parsed()) return ex::RunCommand(run);
+    if (sweep_cmd->parsed()) return ex::SweepCommand(sweep);
   } catch (const ex::InputError& e) {
     std::cerr << "anchorbench: error: " << e.what() << '\n';
     return 2;

@@ -1,9 +1,10 @@
 #include "anchorbench/experiments/config.hpp"
 
-#include <charconv>
+#include <algorithm>
 #include <filesystem>
 #include <limits>
 
+#include "anchorbench/experiments/config_yaml.hpp"
 #include "anchorbench/experiments/input_error.hpp"
 
 namespace anchorbench::experiments {
@@ -156,6 +157,8 @@ void VisitExperiment(V& v, ExperimentConfig& c) {
   v.Integer("bootstrap_resamples", c.bootstrap_resamples, 0, 1000000);
   v.Section("scenario", [&](auto& s) { VisitScenario(s, c.scenario); });
   v.Section("estimator", [&](auto& s) { VisitEstimator(s, c.estimator); });
+  v.TextList("only_rows", c.only_rows);
+  v.TextMap("sweep", c.sweep);
   // Rows start from the base read above, so the base must come first in the visit.
   int index = 0;
   v.List("rows", c.rows,
@@ -176,81 +179,28 @@ void ParseEstimator(YamlSection& section, estimator::InitializerOptions& options
 }
 
 std::vector<RowConfig> RowsOf(const ExperimentConfig& config) {
-  if (!config.rows.empty()) return config.rows;
-  return {RowConfig{"base", config.scenario, config.estimator, std::nullopt}};
+  if (config.rows.empty()) return {RowConfig{"base", config.scenario, config.estimator, std::nullopt}};
+  if (config.only_rows.empty()) return config.rows;
+  std::vector<RowConfig> selected;
+  for (const RowConfig& row : config.rows) {
+    if (std::find(config.only_rows.begin(), config.only_rows.end(), row.name) != config.only_rows.end()) {
+      selected.push_back(row);
+    }
+  }
+  return selected;
 }
-
-namespace {
-
-// Sets root[a][b][c] = value for "a.b.c=value", creating mappings on the way; a number indexes
-// a list ("rows.1.scenario..." is the second row).
-void ApplyOverride(YAML::Node& root, const std::string& assignment) {
-  const std::size_t equals = assignment.find('=');
-  if (equals == std::string::npos || equals == 0) {
-    throw InputError("--set '" + assignment + "': expected KEY=VALUE, e.g. scenario.tunnel.width_m=12");
-  }
-  const std::string key = assignment.substr(0, equals);
-  std::vector<std::string> parts;
-  for (std::size_t start = 0;;) {
-    const std::size_t dot = key.find('.', start);
-    parts.push_back(key.substr(start, dot - start));
-    if (dot == std::string::npos) break;
-    start = dot + 1;
-  }
-  YAML::Node node = root;
-  for (std::size_t i = 0; i < parts.size(); ++i) {
-    const std::string& part = parts[i];
-    const bool last = i + 1 == parts.size();
-    if (node.IsSequence()) {
-      std::size_t index = 0;
-      const auto [end, ec] = std::from_chars(part.data(), part.data() + part.size(), index);
-      if (ec != std::errc() || end != part.data() + part.size() || index >= node.size()) {
-        throw InputError("--set '" + assignment + "': '" + part + "' is not an index of the list (0 to " +
-                         std::to_string(node.size() - 1) + ")");
-      }
-      if (last) {
-        node[index] = YAML::Load(assignment.substr(equals + 1));
-        return;
-      }
-      node.reset(node[index]);
-      continue;
-    }
-    if (node.IsDefined() && !node.IsNull() && !node.IsMap()) {
-      throw InputError("--set '" + assignment + "': '" + parts[i - 1] + "' is not a section");
-    }
-    if (last) {
-      node[part] = YAML::Load(assignment.substr(equals + 1));
-      return;
-    }
-    if (!node[part].IsDefined() || node[part].IsNull()) node[part] = YAML::Node(YAML::NodeType::Map);
-    node.reset(node[part]);
-  }
-}
-
-}  // namespace
 
 ExperimentConfig LoadConfig(const std::string& path, const std::vector<std::string>& overrides) {
-  YAML::Node root;
-  try {
-    root = YAML::LoadFile(path);
-  } catch (const YAML::BadFile&) {
-    throw InputError(path + ": cannot open the config file");
-  } catch (const YAML::ParserException& e) {
-    throw InputError(path + ":" + std::to_string(e.mark.line + 1) + ": YAML syntax error: " + e.msg);
-  }
-  if (root.IsNull()) root = YAML::Node(YAML::NodeType::Map);
-  for (const std::string& assignment : overrides) {
-    try {
-      ApplyOverride(root, assignment);
-    } catch (const YAML::Exception& e) {
-      throw InputError("--set '" + assignment + "': " + e.msg);
-    }
-  }
+  YAML::Node root = LoadConfigYaml(path, overrides);
   ExperimentConfig config;
   config.name = std::filesystem::path(path).stem().string();
   YamlSection top(root, "", path);
   VisitExperiment(top, config);
   top.Finish();
+  for (const std::string& name : config.only_rows) {
+    const bool known = std::any_of(config.rows.begin(), config.rows.end(), [&](const RowConfig& r) { return r.name == name; });
+    if (!known) top.Fail("only_rows", "no row named '" + name + "'");
+  }
   return config;
 }
 

@@ -46,7 +46,7 @@ int RunCommand(const RunArgs& args) {
   AtomicFile summary_md(out / "summary.md");
   summary_md.stream() << markdown.str();
   AtomicFile manifest(out / "manifest.json");
-  manifest.stream() << ManifestJson(config, {args.config, threads, wall_time_s});
+  manifest.stream() << ManifestJson(config, {args.config, threads, wall_time_s, {}});
   attempts_file.Commit();
   summary_csv.Commit();
   summary_md.Commit();

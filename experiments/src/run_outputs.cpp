@@ -102,14 +102,17 @@ void WriteAttempts(std::ostream& out, const std::vector<Attempt>& attempts, cons
   }
 }
 
+std::string SummaryCsvFields(const MethodSummary& s, const std::vector<RowConfig>& rows) {
+  std::ostringstream out;
+  out << rows[static_cast<std::size_t>(s.row)].name << ',' << MethodName(s.method) << ',' << Optional(s.avg_m) << ','
+      << Optional(s.med_m) << ',' << s.init << ',' << s.gt1m << ',' << Optional(s.ratio_pct) << ','
+      << Optional(s.avg_lo) << ',' << Optional(s.avg_hi) << ',' << Optional(s.ratio_lo) << ',' << Optional(s.ratio_hi);
+  return out.str();
+}
+
 void WriteSummaryCsv(std::ostream& out, const std::vector<MethodSummary>& summaries, const std::vector<RowConfig>& rows) {
-  out << "row,method,avg_m,med_m,init,gt1m,ratio_pct,avg_lo,avg_hi,ratio_lo,ratio_hi\n";
-  for (const MethodSummary& s : summaries) {
-    out << rows[static_cast<std::size_t>(s.row)].name << ',' << MethodName(s.method) << ',' << Optional(s.avg_m)
-        << ',' << Optional(s.med_m) << ',' << s.init << ',' << s.gt1m << ',' << Optional(s.ratio_pct) << ','
-        << Optional(s.avg_lo) << ',' << Optional(s.avg_hi) << ',' << Optional(s.ratio_lo) << ','
-        << Optional(s.ratio_hi) << '\n';
-  }
+  out << kSummaryColumns << '\n';
+  for (const MethodSummary& s : summaries) out << SummaryCsvFields(s, rows) << '\n';
 }
 
 void WriteSummaryMarkdown(std::ostream& out, const std::vector<MethodSummary>& summaries,

@@ -83,6 +83,39 @@ void YamlSection::Text(std::string_view key, std::string& value) {
   value = n.Scalar();
 }
 
+void YamlSection::TextList(std::string_view key, std::vector<std::string>& values) {
+  if (!Has(key)) return;
+  const YAML::Node n = Get(key);
+  if (!n.IsSequence()) Fail(key, "expected a list, got " + Describe(n));
+  values.clear();
+  for (const auto& item : n) {
+    if (!item.IsScalar()) Fail(key, "expected a list of names, got " + Describe(item));
+    values.push_back(item.Scalar());
+  }
+}
+
+void YamlSection::TextMap(std::string_view key, std::vector<std::pair<std::string, std::string>>& entries) {
+  if (!Has(key)) return;
+  const YAML::Node n = Get(key);
+  if (!n.IsMap()) Fail(key, "expected a mapping, got " + Describe(n));
+  entries.clear();
+  for (const auto& entry : n) {
+    const std::string name = entry.first.as<std::string>();
+    std::string text;
+    if (entry.second.IsScalar()) {
+      text = entry.second.Scalar();
+    } else if (entry.second.IsSequence()) {
+      for (const auto& item : entry.second) {
+        if (!item.IsScalar()) Fail(std::string(key) + "." + name, "expected values, got " + Describe(item));
+        text += (text.empty() ? "" : ",") + item.Scalar();
+      }
+    } else {
+      Fail(std::string(key) + "." + name, "expected a value, a list or a range, got " + Describe(entry.second));
+    }
+    entries.emplace_back(name, text);
+  }
+}
+
 void YamlSection::Finish() const {
   if (!node_.IsMap()) return;
   for (const auto& entry : node_) {

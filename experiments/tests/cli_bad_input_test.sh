@@ -74,5 +74,21 @@ done
 summary_line=$("$bin" run "$dir/small.yaml" --out "$dir/run" 2>&1 >/dev/null)
 grep -q "realizations in" <<<"$summary_line" || { echo "FAIL: no summary line when stderr is not a terminal: $summary_line"; failures=$((failures + 1)); }
 
+# sweep: every grid point is validated before any trial; results do not depend on threads.
+expect_error "sweep unknown key" "key 'estimator.trigger.pdop_treshold': unknown key" \
+  "$bin" sweep "$dir/small.yaml" --set estimator.trigger.pdop_treshold=0.5,1 --out "$dir/sw0"
+expect_error "sweep bad value" "key 'estimator.trigger.pdop_threshold': must be > 0" \
+  "$bin" sweep "$dir/small.yaml" --set estimator.trigger.pdop_threshold=1,0 --out "$dir/sw0"
+expect_error "sweep bad range" "a range is START:STOP:STEP" \
+  "$bin" sweep "$dir/small.yaml" --set estimator.trigger.pdop_threshold=1:2 --out "$dir/sw0"
+expect_error "sweep without axes" "nothing to sweep" "$bin" sweep "$dir/small.yaml" --out "$dir/sw0"
+[ -e "$dir/sw0/sweep.csv" ] && { echo "FAIL: sweep wrote output on bad input"; failures=$((failures + 1)); }
+"$bin" sweep "$dir/small.yaml" --set estimator.trigger.pdop_threshold=0.5,2 --set scenario.ranging.sigma_range_m=0.1,0.3 \
+  --out "$dir/sw1" --threads 1 --quiet || { echo "FAIL: sweep 1 thread"; failures=$((failures + 1)); }
+"$bin" sweep "$dir/small.yaml" --set estimator.trigger.pdop_threshold=0.5,2 --set scenario.ranging.sigma_range_m=0.1,0.3 \
+  --out "$dir/sw2" --threads 2 --quiet || { echo "FAIL: sweep 2 threads"; failures=$((failures + 1)); }
+cmp -s "$dir/sw1/sweep.csv" "$dir/sw2/sweep.csv" || { echo "FAIL: sweep.csv differs between 1 and 2 threads"; failures=$((failures + 1)); }
+[ "$(wc -l <"$dir/sw1/sweep.csv")" -eq 9 ] || { echo "FAIL: sweep.csv should have 4 points x 2 methods + header"; failures=$((failures + 1)); }
+
 [ $failures -eq 0 ] && echo "all CLI bad-input cases passed"
 exit $failures

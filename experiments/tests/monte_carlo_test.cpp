@@ -124,7 +124,7 @@ TEST(Summary, TableColumnsWorkedByHand) {
 }
 
 TEST(Summary, ManifestNamesWhatReproducesTheRun) {
-  const std::string json = ManifestJson(SmallTable(), {"configs/small.yaml", 2, 1.25});
+  const std::string json = ManifestJson(SmallTable(), {"configs/small.yaml", 2, 1.25, {}});
   for (const char* key : {"\"seed\": 7", "\"threads\": 2", "\"realizations\": 6", "\"git_revision\"", "\"compiler\"",
                           "\"wall_time_s\": 1.250", "\"resolved_config\"", "\"sigma_range_m\": 0.4"}) {
     EXPECT_NE(json.find(key), std::string::npos) << key;

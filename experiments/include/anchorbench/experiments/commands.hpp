@@ -35,4 +35,14 @@ struct RunArgs {
 };
 int RunCommand(const RunArgs& args);
 
+struct SweepArgs {
+  std::string config;
+  std::string out;
+  int threads = 0;
+  std::optional<int> realizations;
+  std::vector<std::string> axes;  // --set KEY=VALUES (a list "a,b,c" or a range "start:stop:step")
+  bool quiet = false;
+};
+int SweepCommand(const SweepArgs& args);
+
 }  // namespace anchorbench::experiments

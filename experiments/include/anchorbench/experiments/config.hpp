@@ -43,9 +43,13 @@ struct ExperimentConfig {
   sim::ScenarioOptions scenario;
   estimator::InitializerOptions estimator;  // strategy is ignored: gated and fixed both run
   std::vector<RowConfig> rows;              // empty: one row, the base
+  std::vector<std::string> only_rows;       // run these rows only (names); empty: all
+  // Sweep axes (anchorbench sweep): dotted key -> values ("0.5,1,2" or a range "0.25:3:0.25").
+  std::vector<std::pair<std::string, std::string>> sweep;
 };
 
-// The rows `run` executes: config.rows, or the base as a single row named "base".
+// The rows `run` executes: config.rows (those in only_rows, if given), or the base as a single
+// row named "base".
 std::vector<RowConfig> RowsOf(const ExperimentConfig& config);
 
 // Reads and validates the whole file; throws InputError naming the file and key path.

@@ -16,6 +16,8 @@ namespace anchorbench::experiments {
 void WriteAttempts(std::ostream& out, const std::vector<Attempt>& attempts, const std::vector<RowConfig>& rows);
 
 // summary.csv: row,method,avg_m,med_m,init,gt1m,ratio_pct,avg_lo,avg_hi,ratio_lo,ratio_hi
+constexpr const char* kSummaryColumns = "row,method,avg_m,med_m,init,gt1m,ratio_pct,avg_lo,avg_hi,ratio_lo,ratio_hi";
+std::string SummaryCsvFields(const MethodSummary& summary, const std::vector<RowConfig>& rows);
 void WriteSummaryCsv(std::ostream& out, const std::vector<MethodSummary>& summaries, const std::vector<RowConfig>& rows);
 
 // summary.md: our table, and where rows carry the paper's values, the two side by side cell by
@@ -27,6 +29,7 @@ struct RunInfo {
   std::string config_path;
   int threads = 1;
   double wall_time_s = 0.0;
+  std::vector<std::string> sweep_axes;  // "KEY=VALUES" of a sweep, empty for run
 };
 // manifest.json: resolved config, seed, realizations, threads, git revision, compiler, wall time.
 std::string ManifestJson(const ExperimentConfig& config, const RunInfo& info);

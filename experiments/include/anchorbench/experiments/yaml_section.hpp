@@ -37,6 +37,9 @@ class YamlSection {
     }
   }
   void Text(std::string_view key, std::string& value);
+  void TextList(std::string_view key, std::vector<std::string>& values);
+  // A mapping of free-form keys to a scalar or a list (joined with ','), in file order.
+  void TextMap(std::string_view key, std::vector<std::pair<std::string, std::string>>& entries);
   template <typename Visit>
   void Section(std::string_view key, Visit visit) {
     YamlSection child = Has(key) ? YamlSection(Get(key), KeyPath(key), file_)
@@ -103,6 +106,12 @@ class YamlWriter {
     node_[std::string(key)] = std::string(to_string(value));
   }
   void Text(std::string_view key, std::string& value) { node_[std::string(key)] = value; }
+  void TextList(std::string_view key, std::vector<std::string>& values) {
+    if (!values.empty()) node_[std::string(key)] = values;
+  }
+  void TextMap(std::string_view key, std::vector<std::pair<std::string, std::string>>& entries) {
+    for (const auto& [name, text] : entries) node_[std::string(key)][name] = text;
+  }
   template <typename Visit>
   void Section(std::string_view key, Visit visit) {
     YamlWriter child(node_[std::string(key)]);
