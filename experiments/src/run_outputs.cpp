@@ -1,5 +1,6 @@
 #include "anchorbench/experiments/run_outputs.hpp"
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstdio>
@@ -111,8 +112,23 @@ std::string SummaryCsvFields(const MethodSummary& s, const std::vector<RowConfig
 }
 
 void WriteSummaryCsv(std::ostream& out, const std::vector<MethodSummary>& summaries, const std::vector<RowConfig>& rows) {
-  out << kSummaryColumns << '\n';
-  for (const MethodSummary& s : summaries) out << SummaryCsvFields(s, rows) << '\n';
+  // Where rows carry the paper's values, they follow the documented columns (for plots).
+  const bool with_paper = std::any_of(rows.begin(), rows.end(), [](const RowConfig& r) { return r.paper.has_value(); });
+  out << kSummaryColumns << (with_paper ? ",paper_avg_m,paper_med_m,paper_init,paper_gt1m,paper_ratio_pct" : "") << '\n';
+  for (const MethodSummary& s : summaries) {
+    out << SummaryCsvFields(s, rows);
+    if (with_paper) {
+      const std::optional<PaperRow>& paper = rows[static_cast<std::size_t>(s.row)].paper;
+      if (paper) {
+        const PaperCells& c = s.method == estimator::InitStrategy::kFixedWindow ? paper->fixed : paper->gated;
+        out << ',' << FormatNumber(c.avg_m) << ',' << FormatNumber(c.med_m) << ',' << FormatNumber(c.init) << ','
+            << FormatNumber(c.gt1m) << ',' << FormatNumber(c.ratio_pct);
+      } else {
+        out << ",,,,,";
+      }
+    }
+    out << '\n';
+  }
 }
 
 void WriteSummaryMarkdown(std::ostream& out, const std::vector<MethodSummary>& summaries,

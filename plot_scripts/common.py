@@ -1,0 +1,39 @@
+"""Shared helpers for the figure scripts: paths, CSV loading, a paper-sized style."""
+import csv
+import pathlib
+
+import matplotlib
+
+matplotlib.use("Agg")  # files only, no display
+import matplotlib.pyplot as plt  # noqa: E402
+
+RESULTS = pathlib.Path(__file__).resolve().parent.parent / "results"
+
+plt.rcParams.update({
+    "figure.figsize": (7.0, 2.6),  # a two-column paper figure, in inches
+    "figure.dpi": 150,
+    "font.size": 8,
+    "axes.titlesize": 8,
+    "axes.labelsize": 8,
+    "legend.fontsize": 7,
+    "axes.grid": True,
+    "grid.alpha": 0.3,
+})
+COLORS = {"fixed": "#d95f02", "gated": "#1b9e77", "paper": "#444444"}
+
+
+def read_csv(path):
+    with open(path, newline="") as f:
+        return list(csv.DictReader(f))
+
+
+def number(text):
+    """A CSV cell as a float; empty cells (not applicable) become NaN for plotting only."""
+    return float(text) if text not in ("", None) else float("nan")
+
+
+def save(fig, path):
+    fig.tight_layout()
+    fig.savefig(path)
+    plt.close(fig)
+    print(f"wrote {path.relative_to(RESULTS.parent)}")
