@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # The main command (README): set up, build the anchorbench executable, and regenerate everything
 # in results/: first the paper's Table I (results/table1/, within a minute of a fresh checkout on
-# 2 cores), then the threshold sweeps and all figures (about half a minute more).
+# 2 cores), then the threshold sweeps, the PDOP study and all figures (about half a minute more).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 bash scripts/build.sh anchorbench
@@ -10,4 +10,5 @@ bin=build/experiments/anchorbench
 for sweep in sweep_pdop_threshold sweep_tau sweep_noise_outliers; do
   "$bin" sweep "configs/$sweep.yaml" --out "results/$sweep" --quiet
 done
+"$bin" pdop-study configs/pdop_study.yaml --out results/pdop_study --quiet
 bash scripts/plots.sh

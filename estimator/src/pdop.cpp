@@ -46,6 +46,14 @@ double TruePdop(std::span<const Eigen::Vector3d> p_world_tag, const Eigen::Vecto
   return PdopFromInformation(information);
 }
 
+double BiasAwareDopFromSums(const Eigen::Matrix3d& sum_outer, const Eigen::Vector3d& sum_unit, double n) {
+  // It is >= the 3-column PDOP; where that one is already singular, so is this one (the relative
+  // rank test would otherwise judge the two matrices against different scales).
+  if (n < 2.0 || std::isinf(PdopFromInformation(sum_outer))) return std::numeric_limits<double>::infinity();
+  // sum (u - u_mean)(u - u_mean)^T = sum u u^T - (sum u)(sum u)^T / n
+  return PdopFromInformation(sum_outer - sum_unit * sum_unit.transpose() / n);
+}
+
 double BiasAwareDop(std::span<const Eigen::Vector3d> p_world_tag, const Eigen::Vector3d& p_world_anchor) {
   Eigen::Matrix3d sum_outer = Eigen::Matrix3d::Zero();
   Eigen::Vector3d sum_unit = Eigen::Vector3d::Zero();
@@ -59,9 +67,7 @@ double BiasAwareDop(std::span<const Eigen::Vector3d> p_world_tag, const Eigen::V
     sum_unit += unit;
     n += 1.0;
   }
-  if (n < 2.0) return std::numeric_limits<double>::infinity();
-  // sum (u - u_mean)(u - u_mean)^T = sum u u^T - (sum u)(sum u)^T / n
-  return PdopFromInformation(sum_outer - sum_unit * sum_unit.transpose() / n);
+  return BiasAwareDopFromSums(sum_outer, sum_unit, n);
 }
 
 }  // namespace anchorbench::estimator

@@ -51,6 +51,17 @@ int main(int argc, char** argv) {
   sweep_cmd->add_option("--realizations", sweep.realizations, "Override the realizations per row")->check(CLI::PositiveNumber);
   sweep_cmd->add_flag("--quiet", sweep.quiet, "No progress output");
 
+  ex::PdopStudyArgs study;
+  CLI::App* study_cmd = app.add_subcommand(
+      "pdop-study", "Closest-point, LS, NLS and true PDOP side by side along random runs (Figs. 6-8)");
+  study_cmd->add_option("config", study.config, "Experiment config (YAML); its base scenario is used")->required();
+  study_cmd->add_option("--out", study.out, "Output folder (default results/<config name>/)");
+  study_cmd->add_option("--threads", study.threads, "OpenMP threads (default: all cores)")->check(CLI::NonNegativeNumber);
+  study_cmd->add_option("--realizations", study.realizations, "Override the realizations")->check(CLI::PositiveNumber);
+  study_cmd->add_option("--every", study.every, "Checkpoint every N accepted samples (default 10)")->check(CLI::PositiveNumber);
+  study_cmd->add_option("--bin-s", study.bin_s, "Summary time bins in seconds (default 10)")->check(CLI::PositiveNumber);
+  study_cmd->add_flag("--quiet", study.quiet, "No progress output");
+
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
@@ -61,6 +72,7 @@ int main(int argc, char** argv) {
     if (replay_cmd->parsed()) return ex::ReplayCommand(replay);
     if (run_cmd->parsed()) return ex::RunCommand(run);
     if (sweep_cmd->parsed()) return ex::SweepCommand(sweep);
+    if (study_cmd->parsed()) return ex::PdopStudyCommand(study);
   } catch (const ex::InputError& e) {
     std::cerr << "anchorbench: error: " << e.what() << '\n';
     return 2;

@@ -44,7 +44,10 @@ std::vector<Attempt> RunRealization(const RowConfig& row, int row_index, std::ui
     a.n_used = o.n_used;
     a.pdop_estimate = o.pdop_estimate;
     a.pdop_true = o.pdop_true;
-    if (o.bias_aware_dop && std::isfinite(*o.bias_aware_dop)) a.crlb_m = sigma_m * *o.bias_aware_dop;
+    if (o.bias_aware_dop && std::isfinite(*o.bias_aware_dop)) {
+      a.bias_aware_dop = o.bias_aware_dop;
+      a.crlb_m = sigma_m * *o.bias_aware_dop;
+    }
     a.status = StatusOf(o);
     if (o.solve) a.alpha = o.solve->alpha;
     if (o.initialized) {

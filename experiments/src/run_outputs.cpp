@@ -90,7 +90,7 @@ std::string Compare(double paper, const std::optional<double>& ours, int decimal
 
 void WriteAttempts(std::ostream& out, const std::vector<Attempt>& attempts, const std::vector<RowConfig>& rows) {
   out << "row,realization,anchor_id,method,initialized,t_init,n_used,pdop_est,pdop_true,crlb_m,err_m,err_x,err_y,"
-         "err_z,bias_err,alpha,status\n";
+         "err_z,bias_err,alpha,status,bias_aware_dop\n";
   for (const Attempt& a : attempts) {
     const bool has_error = a.error_m.has_value();
     out << rows[static_cast<std::size_t>(a.row)].name << ',' << a.realization << ',' << a.anchor_id << ','
@@ -99,7 +99,7 @@ void WriteAttempts(std::ostream& out, const std::vector<Attempt>& attempts, cons
         << Optional(a.error_m) << ',' << (has_error ? FormatNumber(a.error_xyz_m.x()) : "") << ','
         << (has_error ? FormatNumber(a.error_xyz_m.y()) : "") << ','
         << (has_error ? FormatNumber(a.error_xyz_m.z()) : "") << ',' << Optional(a.bias_error_m) << ','
-        << Optional(a.alpha) << ',' << a.status << '\n';
+        << Optional(a.alpha) << ',' << a.status << ',' << Optional(a.bias_aware_dop) << '\n';
   }
 }
 

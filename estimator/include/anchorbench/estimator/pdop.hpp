@@ -23,5 +23,7 @@ double TruePdop(std::span<const Eigen::Vector3d> p_world_tag, const Eigen::Vecto
 // sigma_d times its root trace is the Cramer-Rao bound on the position error of (p_A, gamma);
 // it is always >= TruePdop, since only the spread of the viewing directions counts.
 double BiasAwareDop(std::span<const Eigen::Vector3d> p_world_tag, const Eigen::Vector3d& p_world_anchor);
+// The same from running sums of the unit vectors: sum u u^T, sum u, and their count.
+double BiasAwareDopFromSums(const Eigen::Matrix3d& sum_outer, const Eigen::Vector3d& sum_unit, double n);
 
 }  // namespace anchorbench::estimator

@@ -45,4 +45,15 @@ struct SweepArgs {
 };
 int SweepCommand(const SweepArgs& args);
 
+struct PdopStudyArgs {
+  std::string config;
+  std::string out;
+  int threads = 0;
+  std::optional<int> realizations;
+  int every = 10;       // a checkpoint (LS and NLS solves) every this many accepted samples
+  double bin_s = 10.0;  // time bins of the summary
+  bool quiet = false;
+};
+int PdopStudyCommand(const PdopStudyArgs& args);
+
 }  // namespace anchorbench::experiments

@@ -22,6 +22,7 @@ struct Attempt {
   double pdop_estimate = 0.0;
   std::optional<double> pdop_true;
   std::optional<double> crlb_m;  // sigma_d * bias-aware DOP on the attempt's data at the true anchor
+  std::optional<double> bias_aware_dop;
   std::optional<double> error_m;
   Eigen::Vector3d error_xyz_m = Eigen::Vector3d::Zero();  // estimate - truth
   std::optional<double> bias_error_m;

@@ -12,7 +12,7 @@ namespace anchorbench::experiments {
 
 // attempts.csv: one row per attempt, columns
 // row,realization,anchor_id,method,initialized,t_init,n_used,pdop_est,pdop_true,crlb_m,err_m,
-// err_x,err_y,err_z,bias_err,alpha,status (empty where not applicable; never NaN).
+// err_x,err_y,err_z,bias_err,alpha,status,bias_aware_dop (empty where not applicable; never NaN).
 void WriteAttempts(std::ostream& out, const std::vector<Attempt>& attempts, const std::vector<RowConfig>& rows);
 
 // summary.csv: row,method,avg_m,med_m,init,gt1m,ratio_pct,avg_lo,avg_hi,ratio_lo,ratio_hi
