@@ -15,6 +15,8 @@ std::string StatusOf(const AttemptOutcome& o) {
 
 }  // namespace
 
+int ResolveThreads(int requested) { return requested > 0 ? requested : omp_get_num_procs(); }
+
 std::vector<Attempt> RunRealization(const RowConfig& row, int row_index, std::uint64_t seed, int realization) {
   const sim::Scenario scenario = sim::GenerateScenario(row.scenario, seed, static_cast<std::uint64_t>(realization));
   std::map<int, AnchorTruth> truth;

@@ -1,5 +1,3 @@
-#include <omp.h>
-
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
@@ -12,6 +10,8 @@
 #include "anchorbench/experiments/commands.hpp"
 #include "anchorbench/experiments/csv_reader.hpp"
 #include "anchorbench/experiments/input_error.hpp"
+#include "anchorbench/experiments/monte_carlo.hpp"
+#include "anchorbench/experiments/output_folder.hpp"
 #include "anchorbench/experiments/pdop_study.hpp"
 #include "anchorbench/experiments/progress.hpp"
 #include "anchorbench/experiments/run_outputs.hpp"
@@ -119,12 +119,8 @@ int PdopStudyCommand(const PdopStudyArgs& args) {
   if (args.realizations) config.realizations = *args.realizations;
   if (args.every < 1) throw InputError("--every must be >= 1");
   if (!(args.bin_s > 0.0)) throw InputError("--bin-s must be > 0");
-  const int threads = args.threads > 0 ? args.threads : omp_get_num_procs();
-  const std::filesystem::path out = args.out.empty() ? std::filesystem::path("results") / config.name
-                                                     : std::filesystem::path(args.out);
-  std::error_code error;
-  std::filesystem::create_directories(out, error);
-  if (error) throw InputError(out.string() + ": cannot create the folder: " + error.message());
+  const int threads = ResolveThreads(args.threads);
+  const std::filesystem::path out = OutputFolder(args.out, config.name);
 
   Progress progress("pdop-study " + config.name, args.quiet);
   const PdopStudy study = RunPdopStudy(config, args.every, threads);

@@ -6,6 +6,7 @@
 #include "anchorbench/experiments/commands.hpp"
 #include "anchorbench/experiments/config.hpp"
 #include "anchorbench/experiments/input_error.hpp"
+#include "anchorbench/experiments/output_folder.hpp"
 #include "anchorbench/experiments/replay.hpp"
 
 namespace anchorbench::experiments {
@@ -17,11 +18,7 @@ int ReplayCommand(const ReplayArgs& args) {
   const std::vector<RangeRecord> ranges = LoadRanges(args.ranges);
   std::map<int, AnchorTruth> truth;
   if (!args.anchors.empty()) truth = LoadAnchors(args.anchors);
-  if (!args.out.empty()) {
-    std::error_code error;
-    std::filesystem::create_directories(args.out, error);
-    if (error) throw InputError(args.out + ": cannot create the folder: " + error.message());
-  }
+  if (!args.out.empty()) CreateFolder(args.out);
 
   std::unique_ptr<AtomicFile> trace_file;
   TraceSink trace;

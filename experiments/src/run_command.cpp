@@ -1,5 +1,3 @@
-#include <omp.h>
-
 #include <filesystem>
 #include <iostream>
 #include <memory>
@@ -10,6 +8,7 @@
 #include "anchorbench/experiments/config.hpp"
 #include "anchorbench/experiments/input_error.hpp"
 #include "anchorbench/experiments/monte_carlo.hpp"
+#include "anchorbench/experiments/output_folder.hpp"
 #include "anchorbench/experiments/progress.hpp"
 #include "anchorbench/experiments/run_outputs.hpp"
 #include "anchorbench/experiments/summary.hpp"
@@ -20,12 +19,8 @@ int RunCommand(const RunArgs& args) {
   ExperimentConfig config = LoadConfig(args.config, args.overrides);
   if (args.seed) config.seed = *args.seed;
   if (args.realizations) config.realizations = *args.realizations;
-  const int threads = args.threads > 0 ? args.threads : omp_get_num_procs();
-  const std::filesystem::path out = args.out.empty() ? std::filesystem::path("results") / config.name
-                                                      : std::filesystem::path(args.out);
-  std::error_code error;
-  std::filesystem::create_directories(out, error);
-  if (error) throw InputError(out.string() + ": cannot create the folder: " + error.message());
+  const int threads = ResolveThreads(args.threads);
+  const std::filesystem::path out = OutputFolder(args.out, config.name);
 
   Progress progress("run " + config.name, args.quiet);
   const std::vector<RowConfig> rows = RowsOf(config);

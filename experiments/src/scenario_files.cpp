@@ -3,13 +3,12 @@
 #include "anchorbench/experiments/atomic_file.hpp"
 #include "anchorbench/experiments/csv_reader.hpp"
 #include "anchorbench/experiments/input_error.hpp"
+#include "anchorbench/experiments/output_folder.hpp"
 
 namespace anchorbench::experiments {
 
 void WriteScenarioFiles(const sim::Scenario& scenario, const std::filesystem::path& folder) {
-  std::error_code error;
-  std::filesystem::create_directories(folder, error);
-  if (error) throw InputError(folder.string() + ": cannot create the folder: " + error.message());
+  CreateFolder(folder);
 
   AtomicFile poses(folder / "poses.csv");
   poses.stream() << "t,tag_id,x,y,z\n";

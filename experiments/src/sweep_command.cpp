@@ -1,5 +1,3 @@
-#include <omp.h>
-
 #include <filesystem>
 #include <iomanip>
 #include <iostream>
@@ -11,6 +9,7 @@
 #include "anchorbench/experiments/config.hpp"
 #include "anchorbench/experiments/input_error.hpp"
 #include "anchorbench/experiments/monte_carlo.hpp"
+#include "anchorbench/experiments/output_folder.hpp"
 #include "anchorbench/experiments/progress.hpp"
 #include "anchorbench/experiments/run_outputs.hpp"
 #include "anchorbench/experiments/summary.hpp"
@@ -66,12 +65,8 @@ int SweepCommand(const SweepArgs& args) {
     total_tasks += static_cast<int>(RowsOf(config).size()) * config.realizations;
     configs.push_back(std::move(config));
   }
-  const int threads = args.threads > 0 ? args.threads : omp_get_num_procs();
-  const std::filesystem::path out = args.out.empty() ? std::filesystem::path("results") / base.name
-                                                     : std::filesystem::path(args.out);
-  std::error_code error;
-  std::filesystem::create_directories(out, error);
-  if (error) throw InputError(out.string() + ": cannot create the folder: " + error.message());
+  const int threads = ResolveThreads(args.threads);
+  const std::filesystem::path out = OutputFolder(args.out, base.name);
 
   Progress progress("sweep " + base.name, args.quiet);
   std::vector<PointResult> results;

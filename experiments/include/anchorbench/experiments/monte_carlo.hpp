@@ -30,6 +30,9 @@ struct Attempt {
   std::string status;  // the solver's status, or not_triggered / no_data
 };
 
+// The OpenMP thread count for a request: 0 means every core.
+int ResolveThreads(int requested);
+
 struct MonteCarloOptions {
   int threads = 1;
   // Called from one thread at a time with (tasks done, tasks total); tasks are (row, realization).
