@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # The main command (README): set up, build the anchorbench executable, and regenerate everything
 # in results/: first the paper's Table I (results/table1/, within a minute of a fresh checkout on
-# 2 cores), then the threshold sweeps, the PDOP study and all figures (about half a minute more).
+# 2 cores), then the threshold sweeps, the PDOP study, all figures and the replays of the real
+# Hanyang recordings (about half a minute more).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 bash scripts/build.sh anchorbench
@@ -12,3 +13,4 @@ for sweep in sweep_pdop_threshold sweep_tau sweep_noise_outliers; do
 done
 "$bin" pdop-study configs/pdop_study.yaml --out results/pdop_study --quiet
 bash scripts/plots.sh
+bash scripts/hanyang.sh   # the real recordings in ../shared, if present

@@ -62,6 +62,12 @@ int main(int argc, char** argv) {
   study_cmd->add_option("--bin-s", study.bin_s, "Summary time bins in seconds (default 10)")->check(CLI::PositiveNumber);
   study_cmd->add_flag("--quiet", study.quiet, "No progress output");
 
+  ex::ConvertHanyangArgs convert;
+  CLI::App* convert_cmd = app.add_subcommand(
+      "convert-hanyang", "Convert a Hanyang outdoor UWB dataset case into poses.csv, ranges.csv, anchors.csv");
+  convert_cmd->add_option("case", convert.case_folder, "Case folder (A3.csv ... A12.csv, trajectory.csv)")->required();
+  convert_cmd->add_option("--out", convert.out, "Output folder (created if needed)")->required();
+
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
@@ -73,6 +79,7 @@ int main(int argc, char** argv) {
     if (run_cmd->parsed()) return ex::RunCommand(run);
     if (sweep_cmd->parsed()) return ex::SweepCommand(sweep);
     if (study_cmd->parsed()) return ex::PdopStudyCommand(study);
+    if (convert_cmd->parsed()) return ex::ConvertHanyangCommand(convert);
   } catch (const ex::InputError& e) {
     std::cerr << "anchorbench: error: " << e.what() << '\n';
     return 2;

@@ -2,6 +2,7 @@
 
 #include "anchorbench/experiments/commands.hpp"
 #include "anchorbench/experiments/config.hpp"
+#include "anchorbench/experiments/hanyang.hpp"
 #include "anchorbench/experiments/scenario_files.hpp"
 
 namespace anchorbench::experiments {
@@ -15,6 +16,15 @@ int SimulateCommand(const SimulateArgs& args) {
   for (const sim::SimRange& r : scenario.ranges) outliers += r.is_outlier;
   std::cout << "simulate: " << scenario.t_s.size() << " poses, " << scenario.ranges.size() << " ranges (" << outliers
             << " outliers), " << scenario.anchors.size() << " anchors -> " << args.out << '\n';
+  return 0;
+}
+
+int ConvertHanyangCommand(const ConvertHanyangArgs& args) {
+  const HanyangSummary s = ConvertHanyangCase(args.case_folder, args.out);
+  std::cout << "convert-hanyang: " << s.poses << " poses, " << s.ranges << " ranges, " << s.anchors << " anchors -> "
+            << args.out;
+  if (s.dropped_poses > 0) std::cout << " (" << s.dropped_poses << " trajectory rows with non-increasing time dropped)";
+  std::cout << '\n';
   return 0;
 }
 

@@ -56,4 +56,10 @@ struct PdopStudyArgs {
 };
 int PdopStudyCommand(const PdopStudyArgs& args);
 
+struct ConvertHanyangArgs {
+  std::string case_folder;
+  std::string out;
+};
+int ConvertHanyangCommand(const ConvertHanyangArgs& args);
+
 }  // namespace anchorbench::experiments

@@ -1,0 +1,20 @@
+#!/usr/bin/env bash
+# Converts and replays every case of the Hanyang outdoor UWB dataset (../shared/data/hanyang-uwb)
+# with the PDOP-gated initializer and the fixed window: results/hanyang/<case>/estimates.csv and
+# results/hanyang/summary.md. Skips (exit 0) when the dataset is not beside the checkout.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+data=${HANYANG_DATA:-../shared/data/hanyang-uwb}
+if [ ! -d "$data" ]; then
+  echo "hanyang: $data not found; skipped" >&2
+  exit 0
+fi
+bin=build/experiments/anchorbench
+for case_dir in "$data"/*/Trajectory_*/Case_*; do
+  name=$(echo "${case_dir#"$data"/}" | tr '/' '_')   # e.g. LOS_Trajectory_A_Case_1
+  "$bin" convert-hanyang "$case_dir" --out "build/hanyang/$name" >/dev/null
+  "$bin" replay --poses "build/hanyang/$name/poses.csv" --ranges "build/hanyang/$name/ranges.csv" \
+    --anchors "build/hanyang/$name/anchors.csv" --config configs/hanyang.yaml \
+    --trace "build/hanyang/$name/trace.csv" --out "results/hanyang/$name" >/dev/null 2>&1
+done
+/usr/bin/python3 plot_scripts/hanyang_summary.py
