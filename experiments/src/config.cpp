@@ -85,6 +85,7 @@ template <typename V>
 void VisitScenario(V& v, sim::ScenarioOptions& o) {
   v.Choice("environment", o.environment, sim::ParseEnvironmentKind, [](auto k) { return sim::ToString(k); },
            "tunnel, hall");
+  v.VectorList("tag_offsets_m", o.tag_offsets_m);
   v.Section("tunnel", [&](auto& s) { VisitTunnel(s, o.tunnel); });
   v.Section("hall", [&](auto& s) { VisitHall(s, o.hall); });
   v.Section("trajectory", [&](auto& s) { VisitTrajectory(s, o.trajectory); });

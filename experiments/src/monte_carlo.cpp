@@ -29,7 +29,7 @@ std::vector<Attempt> RunRealization(const RowConfig& row, int row_index, std::ui
   std::size_t epoch = 0;
   for (const sim::SimRange& range : scenario.ranges) {
     while (scenario.t_s[epoch] < range.t_s) ++epoch;
-    bank.Feed({range.t_s, range.tag_id, range.anchor_id, range.range_m, scenario.p_world_tag_reported[epoch]});
+    bank.Feed({range.t_s, range.tag_id, range.anchor_id, range.range_m, scenario.p_world_tag_reported[static_cast<std::size_t>(range.tag_id)][epoch]});
   }
   const double t_end_s = scenario.t_s.empty() ? 0.0 : scenario.t_s.back();
 

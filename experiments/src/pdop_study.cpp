@@ -67,7 +67,7 @@ RealizationResult StudyRealization(const ExperimentConfig& config, int realizati
     for (const sim::SimRange& range : scenario.ranges) {
       while (scenario.t_s[epoch] < range.t_s) ++epoch;
       if (range.anchor_id != anchor.id || !(range.range_m > 0.0)) continue;
-      const Eigen::Vector3d& p_tag = scenario.p_world_tag_reported[epoch];
+      const Eigen::Vector3d& p_tag = scenario.p_world_tag_reported[static_cast<std::size_t>(range.tag_id)][epoch];
       if (!filter.Accept(range.tag_id, p_tag, range.range_m)) continue;
       if (p.empty()) t_first = range.t_s;
       p.push_back(p_tag);

@@ -13,9 +13,11 @@ void WriteScenarioFiles(const sim::Scenario& scenario, const std::filesystem::pa
   AtomicFile poses(folder / "poses.csv");
   poses.stream() << "t,tag_id,x,y,z\n";
   for (std::size_t k = 0; k < scenario.t_s.size(); ++k) {
-    const Eigen::Vector3d& p = scenario.p_world_tag_reported[k];
-    poses.stream() << FormatNumber(scenario.t_s[k]) << ",0," << FormatNumber(p.x()) << ',' << FormatNumber(p.y())
-                   << ',' << FormatNumber(p.z()) << '\n';
+    for (std::size_t tag = 0; tag < scenario.p_world_tag_reported.size(); ++tag) {
+      const Eigen::Vector3d& p = scenario.p_world_tag_reported[tag][k];
+      poses.stream() << FormatNumber(scenario.t_s[k]) << ',' << tag << ',' << FormatNumber(p.x()) << ','
+                     << FormatNumber(p.y()) << ',' << FormatNumber(p.z()) << '\n';
+    }
   }
   AtomicFile ranges(folder / "ranges.csv");
   ranges.stream() << "t,tag_id,anchor_id,range\n";

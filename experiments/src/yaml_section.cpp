@@ -94,6 +94,20 @@ void YamlSection::TextList(std::string_view key, std::vector<std::string>& value
   }
 }
 
+void YamlSection::VectorList(std::string_view key, std::vector<Eigen::Vector3d>& values) {
+  if (!Has(key)) return;
+  const YAML::Node n = Get(key);
+  if (!n.IsSequence()) Fail(key, "expected a list of [x, y, z], got " + Describe(n));
+  values.clear();
+  for (const auto& item : n) {
+    Eigen::Vector3d v;
+    bool ok = item.IsSequence() && item.size() == 3;
+    for (std::size_t i = 0; ok && i < 3; ++i) ok = item[i].IsScalar() && YAML::convert<double>::decode(item[i], v[i]);
+    if (!ok || !v.allFinite()) Fail(key, "expected a list of [x, y, z] (metres), got an entry " + Describe(item));
+    values.push_back(v);
+  }
+}
+
 void YamlSection::TextMap(std::string_view key, std::vector<std::pair<std::string, std::string>>& entries) {
   if (!Has(key)) return;
   const YAML::Node n = Get(key);

@@ -1,6 +1,9 @@
 #include "anchorbench/sim/scenario.hpp"
 
 #include <algorithm>
+#include <cmath>
+
+#include <Eigen/Geometry>
 
 #include "anchorbench/sim/random_stream.hpp"
 
@@ -62,6 +65,11 @@ bool ParseEnvironmentKind(std::string_view name, EnvironmentKind* kind) {
 }
 
 bool ScenarioOptions::IsValid(std::string* why) const {
+  if (tag_offsets_m.empty() || tag_offsets_m.size() > 16 ||
+      !std::all_of(tag_offsets_m.begin(), tag_offsets_m.end(), [](const Eigen::Vector3d& p) { return p.allFinite(); })) {
+    if (why) *why = "tag_offsets_m must list 1 to 16 finite offsets [x, y, z]";
+    return false;
+  }
   const bool environment_ok = environment == EnvironmentKind::kTunnel ? tunnel.IsValid(why) : hall.IsValid(why);
   return environment_ok && trajectory.IsValid(why) && ranging.IsValid(why);
 }
@@ -85,36 +93,59 @@ Scenario GenerateScenario(const ScenarioOptions& options, std::uint64_t seed, st
     scenario.anchors.push_back({static_cast<int>(i), positions[i], DrawBias(model, bias_rng)});
   }
 
-  RandomStream position_rng(seed, realization, StreamId::kPositionNoise);
+  // Heading along the direction of travel (central differences; kept while standing still).
   scenario.t_s = std::move(trajectory.t_s);
-  scenario.p_world_tag_true = std::move(trajectory.p_world_tag);
-  scenario.p_world_tag_reported.reserve(scenario.p_world_tag_true.size());
-  for (const Eigen::Vector3d& p : scenario.p_world_tag_true) {
-    const Eigen::Vector3d noise(position_rng.Normal(), position_rng.Normal(), position_rng.Normal());
-    scenario.p_world_tag_reported.push_back(p + model.sigma_position_m * noise);
+  scenario.p_world_body = std::move(trajectory.p_world_tag);
+  const std::size_t epochs = scenario.t_s.size();
+  scenario.yaw_rad.assign(epochs, 0.0);
+  for (std::size_t k = 0; k < epochs; ++k) {
+    const Eigen::Vector3d step = scenario.p_world_body[std::min(k + 1, epochs - 1)] - scenario.p_world_body[k > 0 ? k - 1 : 0];
+    scenario.yaw_rad[k] = step.head<2>().norm() > 1e-9 ? std::atan2(step.y(), step.x()) : (k > 0 ? scenario.yaw_rad[k - 1] : 0.0);
   }
 
-  // One stream per anchor and noise source, so an anchor's noise does not depend on which other
-  // anchors happen to be in range.
+  RandomStream position_rng(seed, realization, StreamId::kPositionNoise);
+  const std::size_t tags = options.tag_offsets_m.size();
+  scenario.p_world_tag_true.assign(tags, {});
+  scenario.p_world_tag_reported.assign(tags, {});
+  for (std::size_t k = 0; k < epochs; ++k) {
+    const Eigen::Vector3d noise(position_rng.Normal(), position_rng.Normal(), position_rng.Normal());
+    const Eigen::Matrix3d R_world_body = Eigen::AngleAxisd(scenario.yaw_rad[k], Eigen::Vector3d::UnitZ()).toRotationMatrix();
+    for (std::size_t tag = 0; tag < tags; ++tag) {
+      const Eigen::Vector3d p_true = scenario.p_world_body[k] + R_world_body * options.tag_offsets_m[tag];
+      scenario.p_world_tag_true[tag].push_back(p_true);
+      scenario.p_world_tag_reported[tag].push_back(p_true + model.sigma_position_m * noise);
+    }
+  }
+
+  // One stream per (tag, anchor) and noise source, so a pair's noise does not depend on which
+  // other anchors happen to be in range; tag 0 keeps the sub-stream of a single-tag robot.
+  const auto substream = [](std::size_t tag, const SimAnchor& anchor) {
+    return static_cast<std::uint32_t>((tag << 16) | static_cast<std::uint32_t>(anchor.id));
+  };
   std::vector<RandomStream> noise_rng, dropout_rng;
   std::vector<OutlierProcess> outliers;
-  for (const SimAnchor& anchor : scenario.anchors) {
-    const auto sub = static_cast<std::uint32_t>(anchor.id);
-    noise_rng.emplace_back(seed, realization, StreamId::kRangeNoise, sub);
-    outliers.emplace_back(model, RandomStream(seed, realization, StreamId::kOutlier, sub));
-    dropout_rng.emplace_back(seed, realization, StreamId::kDropout, sub);
-  }
-  for (std::size_t k = 0; k < scenario.t_s.size(); ++k) {
+  for (std::size_t tag = 0; tag < tags; ++tag) {
     for (const SimAnchor& anchor : scenario.anchors) {
-      const double distance_m = (scenario.p_world_tag_true[k] - anchor.p_world_anchor).norm();
-      if (distance_m > model.max_range_m) continue;
-      if (dropout_rng[anchor.id].Bernoulli(model.dropout_probability)) continue;
-      const double outlier_m = outliers[anchor.id].Next();
-      const double range_m = distance_m + anchor.bias_m + model.sigma_range_m * noise_rng[anchor.id].Normal() +
-                             outlier_m;  // Eq. (1) plus the outlier, if any
-      const bool outlier = outlier_m != 0.0;
-      // A ranging device never reports a negative distance.
-      scenario.ranges.push_back({scenario.t_s[k], 0, anchor.id, std::max(range_m, 0.0), outlier});
+      noise_rng.emplace_back(seed, realization, StreamId::kRangeNoise, substream(tag, anchor));
+      outliers.emplace_back(model, RandomStream(seed, realization, StreamId::kOutlier, substream(tag, anchor)));
+      dropout_rng.emplace_back(seed, realization, StreamId::kDropout, substream(tag, anchor));
+    }
+  }
+  const std::size_t anchors = scenario.anchors.size();
+  for (std::size_t k = 0; k < epochs; ++k) {
+    for (std::size_t tag = 0; tag < tags; ++tag) {
+      for (const SimAnchor& anchor : scenario.anchors) {
+        const std::size_t pair = tag * anchors + static_cast<std::size_t>(anchor.id);
+        const double distance_m = (scenario.p_world_tag_true[tag][k] - anchor.p_world_anchor).norm();
+        if (distance_m > model.max_range_m) continue;
+        if (dropout_rng[pair].Bernoulli(model.dropout_probability)) continue;
+        const double outlier_m = outliers[pair].Next();
+        const double range_m = distance_m + anchor.bias_m + model.sigma_range_m * noise_rng[pair].Normal() +
+                               outlier_m;  // Eq. (1) plus the outlier, if any
+        // A ranging device never reports a negative distance.
+        scenario.ranges.push_back({scenario.t_s[k], static_cast<int>(tag), anchor.id, std::max(range_m, 0.0),
+                                   outlier_m != 0.0});
+      }
     }
   }
   return scenario;

@@ -56,7 +56,7 @@ TEST(Scenario, RangesFollowEq1WithinMaxRangeAndOutlierRate) {
   for (const SimRange& r : s.ranges) {
     while (s.t_s[epoch] < r.t_s) ++epoch;
     const SimAnchor& a = s.anchors[r.anchor_id];
-    const double distance = (s.p_world_tag_true[epoch] - a.p_world_anchor).norm();
+    const double distance = (s.p_world_tag_true[0][epoch] - a.p_world_anchor).norm();
     EXPECT_LE(distance, o.ranging.max_range_m);
     EXPECT_GE(r.range_m, 0.0);
     if (r.is_outlier) {
@@ -87,7 +87,7 @@ TEST(Scenario, OutlierEpisodesHaveTheirMeanLengthAndRate) {
     while (s.t_s[epoch] < r.t_s) ++epoch;
     if (r.is_outlier) {
       ++outliers;
-      const double excess = r.range_m - (s.p_world_tag_true[epoch] - s.anchors[r.anchor_id].p_world_anchor).norm() -
+      const double excess = r.range_m - (s.p_world_tag_true[0][epoch] - s.anchors[r.anchor_id].p_world_anchor).norm() -
                             s.anchors[r.anchor_id].bias_m;
       if (run[r.anchor_id] == 0) {
         ++episodes;
@@ -110,21 +110,21 @@ TEST(Scenario, IllConditionedTrajectoriesAreWhatTheySay) {
   ScenarioOptions o = TunnelScenario();
   o.trajectory.kind = TrajectoryKind::kStraight;
   const Scenario straight = GenerateScenario(o, 3, 0);
-  for (const auto& p : straight.p_world_tag_true) {
-    EXPECT_EQ(p.y(), straight.p_world_tag_true[0].y());
+  for (const auto& p : straight.p_world_tag_true[0]) {
+    EXPECT_EQ(p.y(), straight.p_world_tag_true[0][0].y());
     EXPECT_EQ(p.z(), o.trajectory.height_m);
   }
   o.trajectory.kind = TrajectoryKind::kPlanar;
   const Scenario planar = GenerateScenario(o, 3, 0);
   double y_span = 0.0;
-  for (const auto& p : planar.p_world_tag_true) {
+  for (const auto& p : planar.p_world_tag_true[0]) {
     EXPECT_EQ(p.z(), o.trajectory.height_m);
     y_span = std::max(y_span, std::abs(p.y()));
   }
   EXPECT_GT(y_span, 0.5);
   o.trajectory.kind = TrajectoryKind::kShort;
   const Scenario short_run = GenerateScenario(o, 3, 0);
-  const double covered = short_run.p_world_tag_true.back().x() - short_run.p_world_tag_true.front().x();
+  const double covered = short_run.p_world_tag_true[0].back().x() - short_run.p_world_tag_true[0].front().x();
   EXPECT_NEAR(covered, o.trajectory.short_fraction * o.tunnel.length_m, 1.0);
 }
 
@@ -151,7 +151,7 @@ TEST(Scenario, TrajectoryKindMixFollowsTheFractions) {
 TEST(Scenario, TrajectoryStaysInsideTheTunnel) {
   const ScenarioOptions o = TunnelScenario();
   const Scenario s = GenerateScenario(o, 11, 0);
-  for (const auto& p : s.p_world_tag_true) {
+  for (const auto& p : s.p_world_tag_true[0]) {
     EXPECT_LE(std::abs(p.y()), 0.5 * o.tunnel.width_m);
     EXPECT_GE(p.z(), 0.0);
     EXPECT_LE(p.z(), o.tunnel.height_m);
@@ -170,6 +170,32 @@ TEST(Scenario, HallAnchorsOnWalls) {
                          std::abs(p.y()) < 1e-9 || std::abs(p.y() - o.hall.width_m) < 1e-9;
     EXPECT_TRUE(on_wall) << p.transpose();
   }
+}
+
+TEST(Scenario, TwoTagsAtRigidOffsetsAcrossTheDirectionOfTravel) {
+  ScenarioOptions o = TunnelScenario();
+  o.tag_offsets_m = {Eigen::Vector3d(0, 0.425, 0), Eigen::Vector3d(0, -0.425, 0)};  // 0.85 m apart, left/right
+  const Scenario s = GenerateScenario(o, 4, 0);
+  ASSERT_EQ(s.p_world_tag_true.size(), 2u);
+  for (std::size_t k = 1; k + 1 < s.t_s.size(); k += 50) {
+    const Eigen::Vector3d baseline = s.p_world_tag_true[0][k] - s.p_world_tag_true[1][k];
+    EXPECT_NEAR(baseline.norm(), 0.85, 1e-9);
+    const Eigen::Vector3d travel = s.p_world_body[k + 1] - s.p_world_body[k - 1];
+    EXPECT_NEAR(baseline.head<2>().dot(travel.head<2>()), 0.0, 1e-9);  // across the direction of travel
+    EXPECT_GT(travel.x() * baseline.y() - travel.y() * baseline.x(), 0.0);  // tag 0 on the left
+  }
+  int from_tag1 = 0;
+  for (const SimRange& r : s.ranges) from_tag1 += r.tag_id == 1;
+  EXPECT_NEAR(from_tag1, static_cast<double>(s.ranges.size()) / 2, 0.05 * s.ranges.size());
+  // Adding a tag leaves tag 0's ranges as they were for a single-tag robot.
+  ScenarioOptions single = TunnelScenario();
+  single.tag_offsets_m = {Eigen::Vector3d(0, 0.425, 0)};
+  const Scenario one = GenerateScenario(single, 4, 0);
+  std::vector<double> tag0;
+  for (const SimRange& r : s.ranges)
+    if (r.tag_id == 0) tag0.push_back(r.range_m);
+  ASSERT_EQ(tag0.size(), one.ranges.size());
+  for (std::size_t i = 0; i < tag0.size(); ++i) EXPECT_EQ(tag0[i], one.ranges[i].range_m);
 }
 
 TEST(ScenarioOptions, RejectsImpossibleValues) {

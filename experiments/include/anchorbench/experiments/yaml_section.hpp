@@ -7,6 +7,7 @@
 #include <string_view>
 #include <vector>
 
+#include <Eigen/Core>
 #include <yaml-cpp/yaml.h>
 
 namespace anchorbench::experiments {
@@ -38,6 +39,7 @@ class YamlSection {
   }
   void Text(std::string_view key, std::string& value);
   void TextList(std::string_view key, std::vector<std::string>& values);
+  void VectorList(std::string_view key, std::vector<Eigen::Vector3d>& values);  // [[x, y, z], ...]
   // A mapping of free-form keys to a scalar or a list (joined with ','), in file order.
   void TextMap(std::string_view key, std::vector<std::pair<std::string, std::string>>& entries);
   template <typename Visit>
@@ -108,6 +110,11 @@ class YamlWriter {
   void Text(std::string_view key, std::string& value) { node_[std::string(key)] = value; }
   void TextList(std::string_view key, std::vector<std::string>& values) {
     if (!values.empty()) node_[std::string(key)] = values;
+  }
+  void VectorList(std::string_view key, std::vector<Eigen::Vector3d>& values) {
+    YAML::Node list(YAML::NodeType::Sequence);
+    for (const Eigen::Vector3d& v : values) list.push_back(std::vector<double>{v.x(), v.y(), v.z()});
+    node_[std::string(key)] = list;
   }
   void TextMap(std::string_view key, std::vector<std::pair<std::string, std::string>>& entries) {
     for (const auto& [name, text] : entries) node_[std::string(key)][name] = text;

@@ -19,6 +19,9 @@ bool ParseEnvironmentKind(std::string_view name, EnvironmentKind* kind);
 
 struct ScenarioOptions {
   EnvironmentKind environment = EnvironmentKind::kTunnel;
+  // Tags at rigid offsets in the body frame (x forward along the direction of travel, y left,
+  // z up); the trajectory is the body's. Every tag ranges to every anchor in reach at every epoch.
+  std::vector<Eigen::Vector3d> tag_offsets_m = {Eigen::Vector3d::Zero()};
   TunnelOptions tunnel;
   HallOptions hall;
   TrajectoryOptions trajectory;
@@ -42,13 +45,17 @@ struct SimRange {
 };
 
 // One realization: ground truth, what the robot believes about its tag positions, and the range
-// stream in time order (anchor id ascending within one epoch).
+// stream in time order (tag, then anchor id ascending within one epoch).
 struct Scenario {
   TrajectoryKind trajectory_kind = TrajectoryKind::kRandom;  // as drawn for this realization
   std::vector<SimAnchor> anchors;
-  std::vector<double> t_s;                            // epochs (one tag, id 0)
-  std::vector<Eigen::Vector3d> p_world_tag_true;
-  std::vector<Eigen::Vector3d> p_world_tag_reported;  // true + sigma_position_m noise
+  std::vector<double> t_s;                        // epochs
+  std::vector<Eigen::Vector3d> p_world_body;      // the trajectory
+  std::vector<double> yaw_rad;                    // heading: the direction of travel
+  // [tag][epoch]; reported = true + one navigation error per epoch (sigma_position_m per axis),
+  // shared by the rigidly mounted tags.
+  std::vector<std::vector<Eigen::Vector3d>> p_world_tag_true;
+  std::vector<std::vector<Eigen::Vector3d>> p_world_tag_reported;
   std::vector<SimRange> ranges;
 };
 
