@@ -1,8 +1,8 @@
 #!/usr/bin/env bash
 # The main command (README): set up, build the anchorbench executable, and regenerate everything
 # in results/: first the paper's Table I (results/table1/, within a minute of a fresh checkout on
-# 2 cores), then the threshold sweeps, the PDOP study, all figures and the replays of the real
-# Hanyang recordings (about half a minute more).
+# 2 cores), then the threshold sweeps, the PDOP study, the halls, all figures and the replays of
+# the real Hanyang recordings (under a minute more).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 bash scripts/build.sh anchorbench
@@ -12,5 +12,6 @@ for sweep in sweep_pdop_threshold sweep_tau sweep_noise_outliers; do
   "$bin" sweep "configs/$sweep.yaml" --out "results/$sweep" --quiet
 done
 "$bin" pdop-study configs/pdop_study.yaml --out results/pdop_study --quiet
+bash scripts/halls.sh
 bash scripts/plots.sh
 bash scripts/hanyang.sh   # the real recordings in ../shared, if present

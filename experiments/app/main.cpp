@@ -20,6 +20,7 @@ int main(int argc, char** argv) {
   simulate_cmd->add_option("--out", simulate.out, "Output folder (created if needed)")->required();
   simulate_cmd->add_option("--seed", simulate.seed, "Override the config's seed");
   simulate_cmd->add_option("--realization", simulate.realization, "Realization index (default 0)");
+  simulate_cmd->add_option("--set", simulate.overrides, "Override a config value: KEY=VALUE (repeatable)");
 
   ex::ReplayArgs replay;
   CLI::App* replay_cmd =

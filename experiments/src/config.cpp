@@ -38,6 +38,7 @@ void VisitTunnel(V& v, sim::TunnelOptions& o) {
 template <typename V>
 void VisitHall(V& v, sim::HallOptions& o) {
   VisitBox(v, o);
+  v.Choice("anchor_walls", o.anchor_walls, sim::ParseHallWalls, [](auto w) { return sim::ToString(w); }, "all, front");
   v.Check(o);
 }
 

@@ -114,9 +114,10 @@ std::string SummaryCsvFields(const MethodSummary& s, const std::vector<RowConfig
 void WriteSummaryCsv(std::ostream& out, const std::vector<MethodSummary>& summaries, const std::vector<RowConfig>& rows) {
   // Where rows carry the paper's values, they follow the documented columns (for plots).
   const bool with_paper = std::any_of(rows.begin(), rows.end(), [](const RowConfig& r) { return r.paper.has_value(); });
-  out << kSummaryColumns << (with_paper ? ",paper_avg_m,paper_med_m,paper_init,paper_gt1m,paper_ratio_pct" : "") << '\n';
+  out << kSummaryColumns << ",t_init_mean_s,t_init_med_s"
+      << (with_paper ? ",paper_avg_m,paper_med_m,paper_init,paper_gt1m,paper_ratio_pct" : "") << '\n';
   for (const MethodSummary& s : summaries) {
-    out << SummaryCsvFields(s, rows);
+    out << SummaryCsvFields(s, rows) << ',' << Optional(s.t_init_mean_s) << ',' << Optional(s.t_init_med_s);
     if (with_paper) {
       const std::optional<PaperRow>& paper = rows[static_cast<std::size_t>(s.row)].paper;
       if (paper) {
@@ -136,7 +137,8 @@ void WriteSummaryMarkdown(std::ostream& out, const std::vector<MethodSummary>& s
   out << "# " << config.name << ": PDOP-gated vs fixed window\n\n"
       << config.realizations << " realizations per row, seed " << config.seed
       << ". Errors over initialized attempts; [95% bootstrap interval over realizations].\n\n"
-      << "| # | Method | Avg. (m) | Med. (m) | Init. | >1m | Ratio (%) |\n|---|---|---|---|---|---|---|\n";
+      << "| # | Method | Avg. (m) | Med. (m) | Init. | >1m | Ratio (%) | t_init mean / median (s) |\n"
+      << "|---|---|---|---|---|---|---|---|\n";
   auto interval = [](const std::optional<double>& lo, const std::optional<double>& hi, int decimals) {
     return lo ? " [" + Fixed(*lo, decimals) + ", " + Fixed(*hi, decimals) + "]" : std::string();
   };
@@ -145,7 +147,8 @@ void WriteSummaryMarkdown(std::ostream& out, const std::vector<MethodSummary>& s
         << (s.method == estimator::InitStrategy::kFixedWindow ? "Fixed" : "Our (gated)") << " | "
         << (s.avg_m ? Fixed(*s.avg_m, 3) + interval(s.avg_lo, s.avg_hi, 3) : "-") << " | "
         << (s.med_m ? Fixed(*s.med_m, 3) : "-") << " | " << s.init << " / " << s.attempts << " | " << s.gt1m << " | "
-        << (s.ratio_pct ? Fixed(*s.ratio_pct, 2) + interval(s.ratio_lo, s.ratio_hi, 2) : "-") << " |\n";
+        << (s.ratio_pct ? Fixed(*s.ratio_pct, 2) + interval(s.ratio_lo, s.ratio_hi, 2) : "-") << " | "
+        << (s.t_init_mean_s ? Fixed(*s.t_init_mean_s, 1) + " / " + Fixed(*s.t_init_med_s, 1) : "-") << " |\n";
   }
 
   bool any_paper = false;

@@ -8,7 +8,7 @@
 namespace anchorbench::experiments {
 
 int SimulateCommand(const SimulateArgs& args) {
-  ExperimentConfig config = LoadConfig(args.config);
+  ExperimentConfig config = LoadConfig(args.config, args.overrides);
   if (args.seed) config.seed = *args.seed;
   const sim::Scenario scenario = sim::GenerateScenario(config.scenario, config.seed, args.realization);
   WriteScenarioFiles(scenario, args.out);

@@ -26,18 +26,22 @@ std::optional<double> Percentile(std::vector<double> values, double q) {
 MethodSummary SummarizeOne(const std::vector<const Attempt*>& attempts, const std::vector<RealizationSums>& sums,
                            int bootstrap_resamples, sim::RandomStream rng) {
   MethodSummary s;
-  std::vector<double> errors;
+  std::vector<double> errors, times;
   for (const Attempt* a : attempts) {
     ++s.attempts;
     if (!a->initialized) continue;
     ++s.init;
     errors.push_back(*a->error_m);
+    times.push_back(*a->t_init_s);
     s.gt1m += *a->error_m > 1.0;
   }
   if (s.init == 0) return s;
-  double total = 0.0;
+  double total = 0.0, total_time = 0.0;
   for (double e : errors) total += e;
+  for (double t : times) total_time += t;
   s.avg_m = total / s.init;
+  s.t_init_mean_s = total_time / s.init;
+  s.t_init_med_s = Percentile(times, 0.5);
   s.med_m = Percentile(errors, 0.5);
   s.ratio_pct = 100.0 * s.gt1m / s.init;
 

@@ -53,9 +53,25 @@ std::vector<Eigen::Vector3d> TunnelAnchors(const TunnelOptions& o, RandomStream&
   return anchors;
 }
 
+std::string_view ToString(HallWalls walls) { return walls == HallWalls::kAll ? "all" : "front"; }
+
+bool ParseHallWalls(std::string_view name, HallWalls* walls) {
+  if (name == "all") *walls = HallWalls::kAll;
+  else if (name == "front") *walls = HallWalls::kFront;
+  else return false;
+  return true;
+}
+
 std::vector<Eigen::Vector3d> HallAnchors(const HallOptions& o, RandomStream& layout) {
   std::vector<Eigen::Vector3d> anchors;
   anchors.reserve(o.num_anchors);
+  if (o.anchor_walls == HallWalls::kFront) {
+    for (int i = 0; i < o.num_anchors; ++i) {
+      anchors.emplace_back((i + 0.5) * o.length_m / o.num_anchors, 0.0,
+                           layout.Uniform(o.anchor_height_min_m, o.anchor_height_max_m));
+    }
+    return anchors;
+  }
   const double perimeter = 2.0 * (o.length_m + o.width_m);
   const double offset = layout.Uniform(0.0, perimeter / o.num_anchors);
   for (int i = 0; i < o.num_anchors; ++i) {

@@ -132,9 +132,14 @@ Trajectory HallTrajectory(const HallOptions& hall, const TrajectoryOptions& o, R
   const SmoothSignal along(rng, o.min_period_s, o.max_period_s);
   const SmoothSignal across(rng, o.min_period_s, o.max_period_s);
   const SmoothSignal vertical(rng, o.min_period_s, o.max_period_s);
-  const double half_x = std::max(0.0, 0.5 * hall.length_m - kWallClearance_m);
+  double half_x = std::max(0.0, 0.5 * hall.length_m - kWallClearance_m);
   const double half_y = std::max(0.0, 0.5 * hall.width_m - kWallClearance_m);
-  const double duration_s = o.hall_duration_s * (o.kind == TrajectoryKind::kShort ? o.short_fraction : 1.0);
+  const double duration_s = o.hall_duration_s;
+  // kShort: a partial run, wandering over a random stretch of short_fraction of the hall's length
+  // (drawn for every kind, so the rest of the stream does not depend on the kind).
+  const double center_u = rng.Uniform(-1.0, 1.0);
+  const double center_x = o.kind == TrajectoryKind::kShort ? center_u * (1.0 - o.short_fraction) * half_x : 0.0;
+  if (o.kind == TrajectoryKind::kShort) half_x *= o.short_fraction;
   const double z_low = std::min(kWallClearance_m, hall.height_m);
   const double z_high = std::max(z_low, hall.height_m - kWallClearance_m);
   const double climb_m = VerticalExcursion(o, rng);
@@ -150,7 +155,7 @@ Trajectory HallTrajectory(const HallOptions& hall, const TrajectoryOptions& o, R
       p.x() = -half_x + 2.0 * half_x * t / duration_s;
       p.y() = y_offset;
     } else {
-      p.x() = half_x * along(t);
+      p.x() = center_x + half_x * along(t);
       p.y() = half_y * across(t);
     }
     p.x() += 0.5 * hall.length_m;

@@ -198,6 +198,25 @@ TEST(Scenario, TwoTagsAtRigidOffsetsAcrossTheDirectionOfTravel) {
   for (std::size_t i = 0; i < tag0.size(); ++i) EXPECT_EQ(tag0[i], one.ranges[i].range_m);
 }
 
+TEST(Scenario, FrontWallAnchorsAndPartialHallRuns) {
+  ScenarioOptions o;
+  o.environment = EnvironmentKind::kHall;
+  o.hall.num_anchors = 11;
+  o.hall.anchor_walls = HallWalls::kFront;
+  o.trajectory.kind = TrajectoryKind::kShort;
+  o.trajectory.short_fraction = 0.15;
+  const Scenario s = GenerateScenario(o, 2, 0);
+  for (const SimAnchor& a : s.anchors) EXPECT_EQ(a.p_world_anchor.y(), 0.0);
+  EXPECT_NEAR(s.anchors.front().p_world_anchor.x(), 0.5 * o.hall.length_m / 11, 1e-12);
+  double min_x = 1e9, max_x = -1e9;
+  for (const Eigen::Vector3d& p : s.p_world_body) {
+    min_x = std::min(min_x, p.x());
+    max_x = std::max(max_x, p.x());
+  }
+  EXPECT_LE(max_x - min_x, 0.15 * o.hall.length_m + 1e-9);  // wanders over 15% of the length only
+  EXPECT_GT(max_x - min_x, 0.05 * o.hall.length_m);
+}
+
 TEST(ScenarioOptions, RejectsImpossibleValues) {
   ScenarioOptions o;
   std::string why;

@@ -16,6 +16,7 @@ struct SimulateArgs {
   std::string out;
   std::optional<std::uint64_t> seed;
   std::uint64_t realization = 0;
+  std::vector<std::string> overrides;  // --set KEY=VALUE
 };
 int SimulateCommand(const SimulateArgs& args);
 

@@ -18,6 +18,7 @@ struct MethodSummary {
   std::optional<double> med_m;       // median error
   int gt1m = 0;                      // initialized with error > 1 m
   std::optional<double> ratio_pct;   // 100 gt1m / init
+  std::optional<double> t_init_mean_s, t_init_med_s;  // when the initialized attempts initialized
   // 95% percentile intervals from a bootstrap over realizations (whole realizations are resampled:
   // the anchors of one realization share a trajectory, so they are not independent).
   std::optional<double> avg_lo, avg_hi, ratio_lo, ratio_hi;

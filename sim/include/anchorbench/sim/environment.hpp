@@ -1,6 +1,7 @@
 #pragma once
 
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include <Eigen/Core>
@@ -24,8 +25,15 @@ struct TunnelOptions {
   bool IsValid(std::string* why) const;
 };
 
-// Hall frame: a box [0, length] x [0, width] x [0, height]; anchors on the four walls, evenly
-// spaced around the perimeter, heights uniform in [min, max].
+enum class HallWalls {
+  kAll,    // evenly spaced around the perimeter
+  kFront,  // evenly spaced along the front wall (y = 0), e.g. in front of a machine hall
+};
+std::string_view ToString(HallWalls walls);
+bool ParseHallWalls(std::string_view name, HallWalls* walls);
+
+// Hall frame: a box [0, length] x [0, width] x [0, height]; anchors on its walls, heights
+// uniform in [min, max].
 struct HallOptions {
   double length_m = 40.0;
   double width_m = 20.0;
@@ -33,6 +41,7 @@ struct HallOptions {
   int num_anchors = 8;
   double anchor_height_min_m = 1.0;
   double anchor_height_max_m = 4.0;
+  HallWalls anchor_walls = HallWalls::kAll;
 
   bool IsValid(std::string* why) const;
 };

@@ -39,7 +39,8 @@ struct TrajectoryOptions {
   double planar_vertical_excursion_m = 0.0;
   double min_period_s = 8.0;           // periods of the smooth random excursions
   double max_period_s = 40.0;
-  double short_fraction = 0.25;        // kShort: fraction of the length (tunnel) or duration (hall)
+  double short_fraction = 0.25;        // kShort: fraction of the length covered (tunnel: one stretch;
+                                       // hall: the run wanders over that fraction of the length)
   double hall_duration_s = 300.0;      // hall trajectories: duration
 
   bool IsValid(std::string* why) const;
