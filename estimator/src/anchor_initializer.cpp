@@ -21,7 +21,11 @@ bool InitializerOptions::IsValid(std::string* why) const {
 }
 
 AnchorInitializer::AnchorInitializer(int anchor_id, const InitializerOptions& options)
-    : anchor_id_(anchor_id), options_(options), filter_(options.filter), solver_(options.solver) {}
+    : AnchorInitializer(anchor_id, options, std::make_shared<AnchorSolver>(options.solver)) {}
+
+AnchorInitializer::AnchorInitializer(int anchor_id, const InitializerOptions& options,
+                                     std::shared_ptr<const Solver> solver)
+    : anchor_id_(anchor_id), options_(options), filter_(options.filter), solver_(std::move(solver)) {}
 
 InitEvent AnchorInitializer::SolveNow(double t_s) {
   InitEvent event;
@@ -29,7 +33,7 @@ InitEvent AnchorInitializer::SolveNow(double t_s) {
   event.t_s = t_s;
   event.n_used = static_cast<int>(range_m_.size());
   event.pdop_estimate = pdop_.Value();
-  event.solve = solver_.Solve(p_world_tag_, range_m_);
+  event.solve = solver_->Solve(p_world_tag_, range_m_);
   return event;
 }
 

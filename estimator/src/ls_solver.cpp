@@ -2,6 +2,8 @@
 
 #include <cmath>
 
+#include <Eigen/Cholesky>
+
 #include "normal_equations.hpp"
 
 namespace anchorbench::estimator {
@@ -121,6 +123,45 @@ SolveResult SolveDoubleDifferenceLs(std::span<const Eigen::Vector3d> p_world_tag
   result.p_world_anchor = p_world_tag[j] + x.head<3>();
   result.bias_m = x(3);
   result.covariance = (weighted_squares / dof) * normal_inverse;
+  result.status = SolveStatus::kConverged;
+  result.iterations = 1;
+  return result;
+}
+
+SolveResult SolveSingleDifferenceLs(std::span<const Eigen::Vector3d> p_world_tag, std::span<const double> range_m) {
+  SolveResult result;
+  const std::size_t n = range_m.size();
+  if (n < 6 || p_world_tag.size() != n) {
+    result.status = SolveStatus::kTooFewSamples;
+    return result;
+  }
+  Eigen::Vector3d origin = Eigen::Vector3d::Zero();
+  for (const Eigen::Vector3d& p : p_world_tag) origin += p / static_cast<double>(n);
+  using Vector5 = Eigen::Matrix<double, 5, 1>;
+  Eigen::Matrix<double, 5, 5> normal = Eigen::Matrix<double, 5, 5>::Zero();
+  Vector5 rhs = Vector5::Zero();
+  for (std::size_t k = 0; k < n; ++k) {
+    const Eigen::Vector3d p = p_world_tag[k] - origin;
+    Vector5 a;
+    a << -2.0 * p, 2.0 * range_m[k], 1.0;
+    const double b = range_m[k] * range_m[k] - p.squaredNorm();
+    normal.noalias() += a * a.transpose();
+    rhs += b * a;
+  }
+  const Eigen::LDLT<Eigen::Matrix<double, 5, 5>> ldlt(normal);
+  const Vector5 pivots = ldlt.vectorD();
+  if (ldlt.info() != Eigen::Success || !normal.allFinite() || !(pivots.maxCoeff() > 0.0) ||
+      !(pivots.minCoeff() > 1e-12 * pivots.maxCoeff())) {
+    result.status = SolveStatus::kDegenerateGeometry;
+    return result;
+  }
+  const Vector5 x = ldlt.solve(rhs);
+  if (!x.allFinite()) {
+    result.status = SolveStatus::kNumericalFailure;
+    return result;
+  }
+  result.p_world_anchor = origin + x.head<3>();
+  result.bias_m = x(3);
   result.status = SolveStatus::kConverged;
   result.iterations = 1;
   return result;

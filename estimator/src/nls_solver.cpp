@@ -64,13 +64,23 @@ double Cost(std::span<const Eigen::Vector3d> p, std::span<const double> d, const
 
 }  // namespace
 
-std::string_view ToString(KernelMode kernel) { return kernel == KernelMode::kL2 ? "l2" : "adaptive"; }
+std::string_view ToString(KernelMode kernel) {
+  switch (kernel) {
+    case KernelMode::kL2: return "l2";
+    case KernelMode::kAdaptive: return "adaptive";
+    case KernelMode::kFixed: return "fixed";
+  }
+  return "unknown";
+}
 
 bool ParseKernelMode(std::string_view name, KernelMode* kernel) {
-  if (name == "l2") *kernel = KernelMode::kL2;
-  else if (name == "adaptive") *kernel = KernelMode::kAdaptive;
-  else return false;
-  return true;
+  for (KernelMode k : {KernelMode::kL2, KernelMode::kAdaptive, KernelMode::kFixed}) {
+    if (name == ToString(k)) {
+      *kernel = k;
+      return true;
+    }
+  }
+  return false;
 }
 
 bool NlsOptions::IsValid(std::string* why) const {
@@ -79,6 +89,7 @@ bool NlsOptions::IsValid(std::string* why) const {
     return false;
   };
   if (!(alpha_min < 2.0) || !std::isfinite(alpha_min)) return fail("alpha_min must be finite and < 2");
+  if (!(fixed_alpha <= 2.0) || !std::isfinite(fixed_alpha)) return fail("fixed_alpha must be finite and <= 2");
   if (!(kernel_scale_m > 0.0) || !std::isfinite(kernel_scale_m)) return fail("kernel_scale_m must be > 0");
   if (!(truncation > 0.0) || !std::isfinite(truncation)) return fail("truncation must be > 0");
   if (max_iterations < 1) return fail("max_iterations must be >= 1");
@@ -95,14 +106,15 @@ NlsSolver::NlsSolver(const NlsOptions& options) : options_(options) {
 }
 
 NlsSolver::Stage NlsSolver::Refine(std::span<const Eigen::Vector3d> p, std::span<const double> d,
-                                   const Eigen::Vector4d& theta_initial, bool adaptive,
+                                   const Eigen::Vector4d& theta_initial, std::optional<double> fixed_alpha,
                                    double step_tolerance_m) const {
+  const bool adaptive = !fixed_alpha.has_value();
   const double c = options_.kernel_scale_m;
   std::optional<AlphaSelector> selector;
   if (adaptive) selector.emplace(table_);
   AlphaSelector* histogram = adaptive ? &*selector : nullptr;
 
-  Stage stage{theta_initial, 2.0, 0, SolveStatus::kMaxIterations};
+  Stage stage{theta_initial, fixed_alpha.value_or(2.0), 0, SolveStatus::kMaxIterations};
   double damping = options_.initial_damping;
   Cost(p, d, stage.theta, stage.alpha, c, histogram);
   while (stage.iterations < options_.max_iterations) {
@@ -153,41 +165,53 @@ SolveResult NlsSolver::Solve(std::span<const Eigen::Vector3d> p_world_tag, std::
     result.status = SolveStatus::kTooFewSamples;
     return result;
   }
-  const bool adaptive = options_.kernel == KernelMode::kAdaptive;
   Vector4 theta;
   theta << p_world_anchor_initial, bias_initial_m;
   Stage stage{theta, 2.0, 0, SolveStatus::kConverged};
-  if (!adaptive || options_.l2_warm_start) {
-    // As the final stage (L2 mode) to full tolerance; as a warm start, only into the basin.
-    const double tolerance_m = adaptive ? 10.0 * options_.step_tolerance_m : options_.step_tolerance_m;
-    stage = Refine(p_world_tag, range_m, theta, /*adaptive=*/false, tolerance_m);
+  if (options_.kernel == KernelMode::kL2) {
+    stage = Refine(p_world_tag, range_m, theta, 2.0, options_.step_tolerance_m);
+  } else {
+    if (options_.l2_warm_start) {  // only into the basin: 10x the step tolerance
+      stage = Refine(p_world_tag, range_m, theta, 2.0, 10.0 * options_.step_tolerance_m);
+    }
+    if (stage.status != SolveStatus::kNumericalFailure) {
+      const int used = stage.iterations;
+      const std::optional<double> alpha =
+          options_.kernel == KernelMode::kFixed ? std::optional<double>(options_.fixed_alpha) : std::nullopt;
+      stage = Refine(p_world_tag, range_m, stage.theta, alpha, options_.step_tolerance_m);
+      stage.iterations += used;
+    }
   }
-  if (adaptive && stage.status != SolveStatus::kNumericalFailure) {
-    const int used = stage.iterations;
-    stage = Refine(p_world_tag, range_m, stage.theta, /*adaptive=*/true, options_.step_tolerance_m);
-    stage.iterations += used;
+  if (stage.status == SolveStatus::kNumericalFailure) {
+    result.status = stage.status;
+    return result;
   }
-  const NormalEquations final_eq =
-      BuildNormalEquations(p_world_tag, range_m, stage.theta, stage.alpha, options_.kernel_scale_m);
-  if (stage.status == SolveStatus::kNumericalFailure || !stage.theta.allFinite() ||
-      !final_eq.information.allFinite()) {
+  return SummarizeSolution(p_world_tag, range_m, stage.theta, stage.alpha, options_.kernel_scale_m, stage.status,
+                           stage.iterations);
+}
+
+SolveResult SummarizeSolution(std::span<const Eigen::Vector3d> p_world_tag, std::span<const double> range_m,
+                              const Eigen::Vector4d& theta, double alpha, double kernel_scale_m, SolveStatus status,
+                              int iterations) {
+  SolveResult result;
+  const NormalEquations eq = BuildNormalEquations(p_world_tag, range_m, theta, alpha, kernel_scale_m);
+  if (!theta.allFinite() || !eq.information.allFinite() || !std::isfinite(eq.cost)) {
     result.status = SolveStatus::kNumericalFailure;
     return result;
   }
-  result.p_world_anchor = stage.theta.head<3>();
-  result.bias_m = stage.theta(3);
-  result.alpha = stage.alpha;
-  result.iterations = stage.iterations;
-  result.final_cost = final_eq.cost;
-  result.status = stage.status;
+  result.p_world_anchor = theta.head<3>();
+  result.bias_m = theta(3);
+  result.alpha = alpha;
+  result.iterations = iterations;
+  result.final_cost = eq.cost;
+  result.status = status;
   Eigen::Matrix4d information_inverse;
-  if (!internal::InvertNormalMatrix(final_eq.information, &information_inverse)) {
+  if (!internal::InvertNormalMatrix(eq.information, &information_inverse)) {
     result.status = SolveStatus::kDegenerateGeometry;
     return result;
   }
-  // Covariance s^2 (J^T W J)^-1 with s^2 = sum w r^2 / (N - 4): the Gauss-Newton covariance of
-  // the reweighted problem (for alpha = 2, the usual sigma^2 (J^T J)^-1).
-  const double s2 = final_eq.weighted_squares / static_cast<double>(n - 4);
+  // For alpha = 2 this is the usual sigma^2 (J^T J)^-1.
+  const double s2 = eq.weighted_squares / static_cast<double>(range_m.size() - 4);
   result.covariance = s2 * information_inverse;
   return result;
 }

@@ -69,6 +69,8 @@ int main(int argc, char** argv) {
   convert_cmd->add_option("case", convert.case_folder, "Case folder (A3.csv ... A12.csv, trajectory.csv)")->required();
   convert_cmd->add_option("--out", convert.out, "Output folder (created if needed)")->required();
 
+  CLI::App* list_cmd = app.add_subcommand("list", "List the registered solvers, filters and triggers");
+
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
@@ -81,6 +83,7 @@ int main(int argc, char** argv) {
     if (sweep_cmd->parsed()) return ex::SweepCommand(sweep);
     if (study_cmd->parsed()) return ex::PdopStudyCommand(study);
     if (convert_cmd->parsed()) return ex::ConvertHanyangCommand(convert);
+    if (list_cmd->parsed()) return ex::ListCommand();
   } catch (const ex::InputError& e) {
     std::cerr << "anchorbench: error: " << e.what() << '\n';
     return 2;

@@ -1,5 +1,7 @@
 #include "anchorbench/experiments/anchor_bank.hpp"
 
+#include <stdexcept>
+
 #include "anchorbench/estimator/pdop.hpp"
 
 namespace anchorbench::experiments {
@@ -10,17 +12,31 @@ std::string_view MethodName(InitStrategy strategy) {
   return strategy == InitStrategy::kPdopGated ? "gated" : "fixed";
 }
 
-AnchorBank::AnchorBank(const estimator::InitializerOptions& options) : gated_options_(options), fixed_options_(options) {
+const estimator::SolverRegistry& BuiltinSolvers() {
+  static const estimator::SolverRegistry registry = [] {
+    estimator::SolverRegistry r;
+    estimator::RegisterBuiltinSolvers(r);
+    return r;
+  }();
+  return registry;
+}
+
+AnchorBank::AnchorBank(const estimator::InitializerOptions& options, const estimator::SolverRegistry* registry)
+    : gated_options_(options), fixed_options_(options) {
   gated_options_.strategy = InitStrategy::kPdopGated;
   fixed_options_.strategy = InitStrategy::kFixedWindow;
+  std::string why;
+  solver_ = (registry ? *registry : BuiltinSolvers()).Create(options.solver_name, options.solver, 0, &why);
+  if (!solver_) throw std::invalid_argument(why);  // configs are validated before; this is a programming error
 }
 
 AnchorBank::Anchor& AnchorBank::Find(int anchor_id) {
   auto found = anchors_.find(anchor_id);
   if (found == anchors_.end()) {
     found = anchors_
-                .emplace(anchor_id, Anchor{estimator::AnchorInitializer(anchor_id, gated_options_),
-                                           estimator::AnchorInitializer(anchor_id, fixed_options_), std::nullopt})
+                .emplace(anchor_id, Anchor{estimator::AnchorInitializer(anchor_id, gated_options_, solver_),
+                                           estimator::AnchorInitializer(anchor_id, fixed_options_, solver_),
+                                           std::nullopt})
                 .first;
   }
   return found->second;

@@ -4,6 +4,7 @@
 #include <filesystem>
 #include <limits>
 
+#include "anchorbench/experiments/anchor_bank.hpp"
 #include "anchorbench/experiments/config_yaml.hpp"
 #include "anchorbench/experiments/input_error.hpp"
 
@@ -94,8 +95,16 @@ void VisitScenario(V& v, sim::ScenarioOptions& o) {
   v.Check(o);
 }
 
+bool ParseSolverName(std::string_view name, std::string* solver_name) {
+  if (!BuiltinSolvers().Knows(std::string(name))) return false;
+  *solver_name = name;
+  return true;
+}
+
 template <typename V>
 void VisitEstimator(V& v, estimator::InitializerOptions& o) {
+  v.Choice("solver", o.solver_name, ParseSolverName, [](const std::string& name) { return name; },
+           "anchorbench list shows them: ls_single, ls_double, lm_l2, lm_huber, lm_cauchy, lm_adaptive, nlopt:<ALGORITHM>");
   v.Section("filter", [&](auto& s) {
     s.Flag("enabled", o.filter.enabled);
     s.Number("tau_m", o.filter.tau_m, kNonNegative);
@@ -116,7 +125,8 @@ void VisitEstimator(V& v, estimator::InitializerOptions& o) {
   v.Section("nls", [&](auto& s) {
     estimator::NlsOptions& n = o.solver.nls;
     s.Choice("kernel", n.kernel, estimator::ParseKernelMode, [](auto k) { return estimator::ToString(k); },
-             "adaptive, l2");
+             "adaptive, l2, fixed");
+    s.Number("fixed_alpha", n.fixed_alpha, {-1000.0, 2.0});
     s.Number("alpha_min", n.alpha_min, {-1000.0, 2.0});
     s.Number("kernel_scale_m", n.kernel_scale_m, kPositive);
     s.Number("truncation", n.truncation, kPositive);

@@ -1,6 +1,7 @@
 #include "anchorbench/experiments/sweep.hpp"
 
 #include <charconv>
+#include <cctype>
 #include <cmath>
 #include <cstdio>
 
@@ -32,7 +33,11 @@ double Number(const std::string& key, const std::string& text) {
 SweepAxis ParseSweepAxis(const std::string& key, const std::string& values) {
   SweepAxis axis{key, {}};
   if (key.empty()) throw InputError("sweep: an axis needs a key, e.g. estimator.trigger.pdop_threshold=0.5,1,2");
-  if (values.find(':') != std::string::npos) {
+  // A range only where the text starts like a number: names such as nlopt:LN_BOBYQA are values.
+  const std::string first_part = Trim(values.substr(0, values.find(':')));
+  const bool numeric_start = !first_part.empty() && (std::isdigit(static_cast<unsigned char>(first_part[0])) ||
+                                                    first_part[0] == '-' || first_part[0] == '+' || first_part[0] == '.');
+  if (values.find(':') != std::string::npos && numeric_start) {
     const std::size_t first = values.find(':');
     const std::size_t second = values.find(':', first + 1);
     if (second == std::string::npos || values.find(':', second + 1) != std::string::npos) {

@@ -93,5 +93,9 @@ expect_error "sweep without axes" "nothing to sweep" "$bin" sweep "$dir/small.ya
 cmp -s "$dir/sw1/sweep.csv" "$dir/sw2/sweep.csv" || { echo "FAIL: sweep.csv differs between 1 and 2 threads"; failures=$((failures + 1)); }
 [ "$(wc -l <"$dir/sw1/sweep.csv")" -eq 9 ] || { echo "FAIL: sweep.csv should have 4 points x 2 methods + header"; failures=$((failures + 1)); }
 
+"$bin" list | grep -q "lm_adaptive" || { echo "FAIL: list does not show lm_adaptive"; failures=$((failures + 1)); }
+"$bin" sweep "$dir/small.yaml" --set estimator.solver=lm_l2,nlopt:LN_BOBYQA --out "$dir/sw3" --quiet \
+  || { echo "FAIL: sweep over solvers"; failures=$((failures + 1)); }
+
 [ $failures -eq 0 ] && echo "all CLI bad-input cases passed"
 exit $failures

@@ -113,6 +113,14 @@ TEST(Config, OverridesAreValidatedLikeTheFile) {
   EXPECT_THROW(LoadConfig(table, {"rows.2.scenario.ranging.sigma_range_m=0.3"}), InputError);
 }
 
+TEST(Config, SolverByRegistryName) {
+  testing::TempDir dir("solver");
+  EXPECT_EQ(LoadConfig(dir.Write("a.yaml", "estimator: {solver: nlopt:LN_BOBYQA}\n")).estimator.solver_name,
+            "nlopt:LN_BOBYQA");
+  EXPECT_NE(ErrorFor("estimator: {solver: lm_magic}\n").find("key 'estimator.solver': unknown value 'lm_magic'"),
+            std::string::npos);
+}
+
 TEST(Config, MissingFileIsAnInputError) {
   EXPECT_THROW(LoadConfig("/nonexistent/config.yaml"), InputError);
 }

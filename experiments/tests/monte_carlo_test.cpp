@@ -86,6 +86,23 @@ TEST(MonteCarlo, ExactlyStraightRunsRecordDegenerateStatusesAndNeverAbort) {
   EXPECT_EQ(Outputs(config, 1).find("nan"), std::string::npos);
 }
 
+TEST(MonteCarlo, TheConfiguredSolverIsTheOneThatRuns) {
+  ExperimentConfig config = SmallTable();
+  config.rows.resize(1);
+  const std::vector<Attempt> adaptive = RunMonteCarlo(config, {1, nullptr});
+  config.rows[0].estimator.solver_name = "ls_double";  // closed form: no kernel, alpha stays 2
+  const std::vector<Attempt> ls = RunMonteCarlo(config, {1, nullptr});
+  ASSERT_EQ(adaptive.size(), ls.size());
+  int differ = 0;
+  for (std::size_t i = 0; i < ls.size(); ++i) {
+    if (ls[i].alpha) {
+      EXPECT_EQ(*ls[i].alpha, 2.0);
+    }
+    differ += adaptive[i].error_m != ls[i].error_m;
+  }
+  EXPECT_GT(differ, 0);
+}
+
 Attempt Initialized(int realization, double error_m) {
   Attempt a;
   a.realization = realization;

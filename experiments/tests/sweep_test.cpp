@@ -19,13 +19,15 @@ TEST(Sweep, ListsAndInclusiveRanges) {
   EXPECT_EQ(pdop.values.back(), "3");
   EXPECT_EQ(ParseSweepAssignment("scenario.ranging.outlier_kind=positive,symmetric").values,
             (Values{"positive", "symmetric"}));
+  EXPECT_EQ(ParseSweepAssignment("estimator.solver=lm_adaptive,nlopt:LN_BOBYQA").values,
+            (Values{"lm_adaptive", "nlopt:LN_BOBYQA"}));  // a name with ':' is not a range
 }
 
 TEST(Sweep, BadValuesNameTheKey) {
   EXPECT_THROW(ParseSweepAxis("a.b", "1:2"), InputError);
   EXPECT_THROW(ParseSweepAxis("a.b", "1:0:0.5"), InputError);
   EXPECT_THROW(ParseSweepAxis("a.b", "1:2:0"), InputError);
-  EXPECT_THROW(ParseSweepAxis("a.b", "x:2:1"), InputError);
+  EXPECT_THROW(ParseSweepAxis("a.b", "1:x:1"), InputError);  // starts like a range, is not one
   EXPECT_THROW(ParseSweepAxis("a.b", "1,,2"), InputError);
   EXPECT_THROW(ParseSweepAssignment("no_equals"), InputError);
   try {

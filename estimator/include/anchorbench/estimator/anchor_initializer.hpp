@@ -1,5 +1,6 @@
 #pragma once
 
+#include <memory>
 #include <optional>
 #include <span>
 #include <string>
@@ -26,6 +27,9 @@ struct InitializerOptions {
   // this factor, so a bad geometry does not cost a solve per sample.
   double retry_growth = 1.2;
   AnchorSolverOptions solver;
+  // A solver registry name (SolverRegistry); resolved by whoever owns the registry. The
+  // initializer itself uses the solver it is given, or lm_adaptive built from `solver`.
+  std::string solver_name = "lm_adaptive";
 
   bool IsValid(std::string* why) const;
 };
@@ -53,7 +57,9 @@ struct FeedResult {
 // updating (for traces) but no more data is buffered.
 class AnchorInitializer {
  public:
+  // With the paper's solver (LS + adaptive LM from options.solver), or with any other one.
   AnchorInitializer(int anchor_id, const InitializerOptions& options);
+  AnchorInitializer(int anchor_id, const InitializerOptions& options, std::shared_ptr<const Solver> solver);
 
   FeedResult Feed(const RangeSample& sample);
 
@@ -77,7 +83,7 @@ class AnchorInitializer {
   InitializerOptions options_;
   ConsistencyFilter filter_;
   ClosestPointPdop pdop_;
-  AnchorSolver solver_;
+  std::shared_ptr<const Solver> solver_;
   std::vector<Eigen::Vector3d> p_world_tag_;
   std::vector<double> range_m_;
   bool initialized_ = false;

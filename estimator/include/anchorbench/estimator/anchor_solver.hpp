@@ -5,6 +5,7 @@
 
 #include "anchorbench/estimator/ls_solver.hpp"
 #include "anchorbench/estimator/nls_solver.hpp"
+#include "anchorbench/estimator/solver.hpp"
 
 namespace anchorbench::estimator {
 
@@ -16,11 +17,11 @@ struct AnchorSolverOptions {
 };
 
 // Sec. III-D in full: the double-difference LS coarse solution seeds the NLS refinement.
-class AnchorSolver {
+class AnchorSolver : public Solver {
  public:
   explicit AnchorSolver(const AnchorSolverOptions& options = {}) : options_(options), nls_(options.nls) {}
 
-  SolveResult Solve(std::span<const Eigen::Vector3d> p_world_tag, std::span<const double> range_m) const {
+  SolveResult Solve(std::span<const Eigen::Vector3d> p_world_tag, std::span<const double> range_m) const override {
     const SolveResult coarse = SolveDoubleDifferenceLs(p_world_tag, range_m, options_.ls);
     if (!Succeeded(coarse.status)) return coarse;
     return nls_.Solve(p_world_tag, range_m, coarse.p_world_anchor, coarse.bias_m);

@@ -34,4 +34,10 @@ struct LsOptions {
 SolveResult SolveDoubleDifferenceLs(std::span<const Eigen::Vector3d> p_world_tag,
                                     std::span<const double> range_m, const LsOptions& options = {});
 
+// The single-difference LS of the authors' earlier library ("SINGLE", constant bias):
+// d_k^2 - ||p_k||^2 = -2 p_k^T p_A + 2 d_k gamma + (||p_A||^2 - gamma^2), linear in
+// x = [p_A; gamma; ||p_A||^2 - gamma^2] (the last one treated as independent). Positions are taken
+// relative to their mean for conditioning.
+SolveResult SolveSingleDifferenceLs(std::span<const Eigen::Vector3d> p_world_tag, std::span<const double> range_m);
+
 }  // namespace anchorbench::estimator

@@ -1,6 +1,7 @@
 #pragma once
 
 #include <memory>
+#include <optional>
 #include <span>
 #include <string>
 #include <string_view>
@@ -13,6 +14,7 @@ namespace anchorbench::estimator {
 enum class KernelMode {
   kL2,        // alpha fixed at 2: plain least squares, Eq. (11)
   kAdaptive,  // alpha estimated jointly, Eq. (12)
+  kFixed,     // alpha fixed at fixed_alpha (1: smooth Huber / pseudo-Huber, 0: Cauchy, -2: Geman-McClure)
 };
 
 std::string_view ToString(KernelMode kernel);
@@ -21,6 +23,7 @@ bool ParseKernelMode(std::string_view name, KernelMode* kernel);
 struct NlsOptions {
   KernelMode kernel = KernelMode::kAdaptive;
   double alpha_min = -10.0;       // lower end of the alpha search; 2 is the upper end
+  double fixed_alpha = 1.0;       // KernelMode::kFixed
   double kernel_scale_m = 0.1;    // c of Eq. (13); the residual scale the kernel treats as "normal"
   double truncation = 10.0;       // |r/c| bound of the truncated density's normalizer Z~(alpha)
   int max_iterations = 50;        // LM iterations per stage (L2 warm start, adaptive)
@@ -36,6 +39,13 @@ struct NlsOptions {
 
   bool IsValid(std::string* why) const;
 };
+
+// The summary of a refined estimate theta = (p_A, gamma) under the kernel shape alpha: the robust
+// cost, the Gauss-Newton covariance s^2 (J^T W J)^-1 with s^2 = sum w r^2 / (N - 4), and
+// kDegenerateGeometry when J^T W J is singular. `status` is kept otherwise.
+SolveResult SummarizeSolution(std::span<const Eigen::Vector3d> p_world_tag, std::span<const double> range_m,
+                              const Eigen::Vector4d& theta, double alpha, double kernel_scale_m, SolveStatus status,
+                              int iterations);
 
 // Nonlinear refinement of Sec. III-D: Levenberg-Marquardt on theta = (p_A, gamma) with residuals
 // r_k = ||p_k - p_A|| + gamma - d_k (Eq. (11)). In adaptive mode each iteration first picks alpha
@@ -58,8 +68,9 @@ class NlsSolver {
     int iterations;
     SolveStatus status;
   };
+  // LM from theta with the kernel shape fixed at *fixed_alpha, or adaptive when it is empty.
   Stage Refine(std::span<const Eigen::Vector3d> p, std::span<const double> d, const Eigen::Vector4d& theta,
-               bool adaptive, double step_tolerance_m) const;
+               std::optional<double> fixed_alpha, double step_tolerance_m) const;
 
   NlsOptions options_;
   std::shared_ptr<const LogPartitionTable> table_;  // only for KernelMode::kAdaptive

@@ -10,6 +10,7 @@ namespace anchorbench::estimator {
 enum class SolveStatus {
   kConverged,           // step and kernel shape stopped changing (see NlsOptions tolerances)
   kMaxIterations,       // iteration budget spent; the estimate is the best one reached
+  kNoConvergence,       // stopped without a trustworthy minimum (e.g. on the edge of a search box)
   kTooFewSamples,       // fewer samples than unknowns (4) plus one
   kDegenerateGeometry,  // normal equations numerically singular (e.g. collinear tag positions)
   kNumericalFailure,    // a non-finite value appeared; no estimate

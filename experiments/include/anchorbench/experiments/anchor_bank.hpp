@@ -6,11 +6,15 @@
 #include <vector>
 
 #include "anchorbench/estimator/anchor_initializer.hpp"
+#include "anchorbench/estimator/solver_registry.hpp"
 #include "anchorbench/experiments/recorded_data.hpp"
 
 namespace anchorbench::experiments {
 
 std::string_view MethodName(estimator::InitStrategy strategy);  // "gated" | "fixed"
+
+// The built-in solvers (ls_single, ..., nlopt:<ALGORITHM>), registered once.
+const estimator::SolverRegistry& BuiltinSolvers();
 
 // One anchor, one strategy: what happened, and how good it was when the truth is known.
 struct AttemptOutcome {
@@ -30,7 +34,8 @@ struct AttemptOutcome {
 // stream of samples (simulated or recorded).
 class AnchorBank {
  public:
-  explicit AnchorBank(const estimator::InitializerOptions& options);
+  // The solver named options.solver_name comes from `registry` (default: the built-ins).
+  explicit AnchorBank(const estimator::InitializerOptions& options, const estimator::SolverRegistry* registry = nullptr);
 
   // Makes the anchor known before its first range, so it is reported even if none arrives.
   void AddAnchor(int anchor_id);
@@ -54,6 +59,7 @@ class AnchorBank {
 
   estimator::InitializerOptions gated_options_;
   estimator::InitializerOptions fixed_options_;
+  std::shared_ptr<const estimator::Solver> solver_;  // shared by all anchors: Solve is const
   std::map<int, Anchor> anchors_;
 };
 

@@ -63,4 +63,7 @@ struct ConvertHanyangArgs {
 };
 int ConvertHanyangCommand(const ConvertHanyangArgs& args);
 
+// Every registered component with a one-line description.
+int ListCommand();
+
 }  // namespace anchorbench::experiments
