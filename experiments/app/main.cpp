@@ -9,6 +9,19 @@
 
 namespace ex = anchorbench::experiments;
 
+namespace {
+
+// The options every Monte Carlo command shares (run, sweep, pdop-study).
+template <typename Args>
+void AddMonteCarloOptions(CLI::App* cmd, Args& args) {
+  cmd->add_option("--out", args.out, "Output folder (default results/<config name>/)");
+  cmd->add_option("--threads", args.threads, "OpenMP threads (default: all cores)")->check(CLI::NonNegativeNumber);
+  cmd->add_option("--realizations", args.realizations, "Override the realizations per row")->check(CLI::PositiveNumber);
+  cmd->add_flag("--quiet", args.quiet, "No progress output");
+}
+
+}  // namespace
+
 int main(int argc, char** argv) {
   CLI::App app{"anchorbench: online initialization of unknown UWB anchors (Delama et al., IROS 2025)"};
   app.require_subcommand(1);
@@ -36,32 +49,23 @@ int main(int argc, char** argv) {
   ex::RunArgs run;
   CLI::App* run_cmd = app.add_subcommand("run", "Monte Carlo: every row x realization x anchor, gated and fixed window");
   run_cmd->add_option("config", run.config, "Experiment config (YAML) with rows")->required();
-  run_cmd->add_option("--out", run.out, "Output folder (default results/<config name>/)");
-  run_cmd->add_option("--threads", run.threads, "OpenMP threads (default: all cores)")->check(CLI::NonNegativeNumber);
+  AddMonteCarloOptions(run_cmd, run);
   run_cmd->add_option("--seed", run.seed, "Override the config's seed");
-  run_cmd->add_option("--realizations", run.realizations, "Override the realizations per row")->check(CLI::PositiveNumber);
   run_cmd->add_option("--set", run.overrides, "Override a config value: KEY=VALUE, KEY a dotted path (repeatable)");
-  run_cmd->add_flag("--quiet", run.quiet, "No progress output");
 
   ex::SweepArgs sweep;
   CLI::App* sweep_cmd = app.add_subcommand("sweep", "Run a config over a grid of values and tabulate each point");
   sweep_cmd->add_option("config", sweep.config, "Experiment config (YAML); its 'sweep' section gives axes")->required();
   sweep_cmd->add_option("--set", sweep.axes, "An axis: KEY=VALUES, a list a,b,c or a range start:stop:step (repeatable)");
-  sweep_cmd->add_option("--out", sweep.out, "Output folder (default results/<config name>/)");
-  sweep_cmd->add_option("--threads", sweep.threads, "OpenMP threads (default: all cores)")->check(CLI::NonNegativeNumber);
-  sweep_cmd->add_option("--realizations", sweep.realizations, "Override the realizations per row")->check(CLI::PositiveNumber);
-  sweep_cmd->add_flag("--quiet", sweep.quiet, "No progress output");
+  AddMonteCarloOptions(sweep_cmd, sweep);
 
   ex::PdopStudyArgs study;
   CLI::App* study_cmd = app.add_subcommand(
       "pdop-study", "Closest-point, LS, NLS and true PDOP side by side along random runs (Figs. 6-8)");
   study_cmd->add_option("config", study.config, "Experiment config (YAML); its base scenario is used")->required();
-  study_cmd->add_option("--out", study.out, "Output folder (default results/<config name>/)");
-  study_cmd->add_option("--threads", study.threads, "OpenMP threads (default: all cores)")->check(CLI::NonNegativeNumber);
-  study_cmd->add_option("--realizations", study.realizations, "Override the realizations")->check(CLI::PositiveNumber);
+  AddMonteCarloOptions(study_cmd, study);
   study_cmd->add_option("--every", study.every, "Checkpoint every N accepted samples (default 10)")->check(CLI::PositiveNumber);
   study_cmd->add_option("--bin-s", study.bin_s, "Summary time bins in seconds (default 10)")->check(CLI::PositiveNumber);
-  study_cmd->add_flag("--quiet", study.quiet, "No progress output");
 
   ex::ConvertHanyangArgs convert;
   CLI::App* convert_cmd = app.add_subcommand(
