@@ -17,10 +17,11 @@ std::string StatusOf(const AttemptOutcome& o) {
 
 int ResolveThreads(int requested) { return requested > 0 ? requested : omp_get_num_procs(); }
 
-std::vector<Attempt> RunRealization(const RowConfig& row, int row_index, std::uint64_t seed, int realization) {
+std::vector<Attempt> RunRealization(const RowConfig& row, int row_index, std::uint64_t seed, int realization,
+                                    const estimator::SolverRegistry* solvers) {
   const sim::Scenario scenario = sim::GenerateScenario(row.scenario, seed, static_cast<std::uint64_t>(realization));
   std::map<int, AnchorTruth> truth;
-  AnchorBank bank(row.estimator);
+  AnchorBank bank(row.estimator, solvers);
   for (const sim::SimAnchor& anchor : scenario.anchors) {
     truth[anchor.id] = {anchor.p_world_anchor, anchor.bias_m};
     bank.AddAnchor(anchor.id);
@@ -73,8 +74,8 @@ std::vector<Attempt> RunMonteCarlo(const ExperimentConfig& config, const MonteCa
 #pragma omp parallel for schedule(dynamic, 1) num_threads(options.threads)
   for (int task = 0; task < tasks; ++task) {
     const int row = task / realizations;
-    per_task[static_cast<std::size_t>(task)] = RunRealization(rows[static_cast<std::size_t>(row)], row, config.seed,
-                                                              task % realizations);
+    per_task[static_cast<std::size_t>(task)] =
+        RunRealization(rows[static_cast<std::size_t>(row)], row, config.seed, task % realizations, options.solvers);
 #pragma omp critical(anchorbench_progress)
     {
       ++done;

@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "anchorbench/estimator/solve_result.hpp"
+#include "anchorbench/estimator/solver_registry.hpp"
 #include "anchorbench/experiments/config.hpp"
 
 namespace anchorbench::experiments {
@@ -37,6 +38,9 @@ struct MonteCarloOptions {
   int threads = 1;
   // Called from one thread at a time with (tasks done, tasks total); tasks are (row, realization).
   std::function<void(int, int)> progress;
+  // Where estimator.solver names are looked up (a registry with your own solvers); default: the
+  // built-ins.
+  const estimator::SolverRegistry* solvers = nullptr;
 };
 
 // Runs every row's realizations (parallel over (row, realization) with OpenMP; realization k of
@@ -45,6 +49,7 @@ struct MonteCarloOptions {
 std::vector<Attempt> RunMonteCarlo(const ExperimentConfig& config, const MonteCarloOptions& options);
 
 // The attempts of one realization of one row (what each task computes).
-std::vector<Attempt> RunRealization(const RowConfig& row, int row_index, std::uint64_t seed, int realization);
+std::vector<Attempt> RunRealization(const RowConfig& row, int row_index, std::uint64_t seed, int realization,
+                                    const estimator::SolverRegistry* solvers = nullptr);
 
 }  // namespace anchorbench::experiments
