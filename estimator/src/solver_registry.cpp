@@ -15,10 +15,10 @@ void SolverRegistry::RegisterPrefix(const std::string& prefix, const std::string
 
 std::unique_ptr<Solver> SolverRegistry::Create(const std::string& name, const AnchorSolverOptions& options,
                                                std::uint64_t seed, std::string* why) const {
-  if (const auto found = exact_.find(name); found != exact_.end()) return found->second.factory(name, options, seed);
+  if (const auto found = exact_.find(name); found != exact_.end()) return found->second.factory(name, options, seed, *this);
   for (const auto& [prefix, entry] : prefix_) {
     if (name.rfind(prefix, 0) == 0) {
-      std::unique_ptr<Solver> solver = entry.factory(name, options, seed);
+      std::unique_ptr<Solver> solver = entry.factory(name, options, seed, *this);
       if (!solver && why) {  // a stream: GCC 12 warns falsely on string concatenation here (bug 105329)
         std::ostringstream message;
         message << "'" << std::string_view(name).substr(prefix.size()) << "' is not a known " << prefix << " choice";
@@ -43,7 +43,7 @@ bool SolverRegistry::Knows(const std::string& name) const {
 std::vector<std::pair<std::string, std::string>> SolverRegistry::List() const {
   std::vector<std::pair<std::string, std::string>> entries;
   for (const auto& [name, entry] : exact_) entries.emplace_back(name, entry.description);
-  for (const auto& [prefix, entry] : prefix_) entries.emplace_back(prefix + "<ALGORITHM>", entry.description);
+  for (const auto& [prefix, entry] : prefix_) entries.emplace_back(prefix + "<NAME>", entry.description);
   return entries;
 }
 

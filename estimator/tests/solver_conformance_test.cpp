@@ -15,11 +15,12 @@ std::vector<std::string> SolverNames() {
   RegisterBuiltinSolvers(registry);
   std::vector<std::string> names;
   for (const auto& [name, description] : registry.List()) {
-    if (name.back() != '>') names.push_back(name);  // prefix entries are tested through examples
+    if (name.back() != '>') names.push_back(name);  // prefix entries are tested through examples below
   }
   for (const char* algorithm : {"LN_BOBYQA", "LN_NELDERMEAD", "LN_SBPLX", "LD_LBFGS"}) {
     names.push_back(std::string("nlopt:") + algorithm);
   }
+  names.push_back("ransac:lm_l2");
   return names;
 }
 
@@ -89,6 +90,13 @@ INSTANTIATE_TEST_SUITE_P(AllRegistered, SolverConformance, ::testing::ValuesIn(S
                            return name;
                          });
 
+// RANSAC's iteration count: n = log(1 - p) / log(1 - (1 - e)^s); the paper's p = 0.95, s = 60,
+// e = 0.1 give 1666 (its printed formula omits the log in the denominator, its number does not).
+TEST(Ransac, IterationsOfThePapersTableII) {
+  RansacOptions options;
+  EXPECT_EQ(options.Iterations(), 1666);
+}
+
 TEST(SolverRegistry, UnknownNamesAreRefusedWithAReason) {
   SolverRegistry registry;
   RegisterBuiltinSolvers(registry);
@@ -98,6 +106,8 @@ TEST(SolverRegistry, UnknownNamesAreRefusedWithAReason) {
   EXPECT_EQ(registry.Create("nlopt:LN_NOPE", {}, 0, &why), nullptr);
   EXPECT_NE(why.find("'LN_NOPE' is not a known nlopt: choice"), std::string::npos);
   EXPECT_TRUE(registry.Knows("nlopt:GN_CRS2_LM"));
+  EXPECT_TRUE(registry.Knows("ransac:nlopt:LN_BOBYQA"));  // wrappers nest
+  EXPECT_FALSE(registry.Knows("ransac:lm_magic"));
 }
 
 }  // namespace

@@ -56,7 +56,7 @@ int main(int argc, char** argv) {
   est::SolverRegistry registry;
   est::RegisterBuiltinSolvers(registry);
   registry.Register("ls_thirds_cauchy", "median of LS on thirds, then a Cauchy-kernel LM",
-                    [](const std::string&, const est::AnchorSolverOptions& options, std::uint64_t) {
+                    [](const std::string&, const est::AnchorSolverOptions& options, std::uint64_t, const est::SolverRegistry&) {
                       return std::unique_ptr<est::Solver>(new ThirdsCauchySolver(options));
                     });
   ex::ExperimentConfig config = ex::LoadConfig(argv[1]);

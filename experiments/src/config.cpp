@@ -122,6 +122,14 @@ void VisitEstimator(V& v, estimator::InitializerOptions& o) {
     s.Number("sigma_range_m", ls.sigma_range_m, kPositive);
     s.Number("sigma_position_m", ls.sigma_position_m, kNonNegative);
   });
+  v.Section("ransac", [&](auto& s) {
+    estimator::RansacOptions& r = o.solver.ransac;
+    s.Number("success_probability", r.success_probability, {0.0, 1.0, true});
+    s.Integer("subset_size", r.subset_size, 6, 100000);
+    s.Number("outlier_fraction", r.outlier_fraction, {0.0, 0.99});
+    s.Number("inlier_threshold_m", r.inlier_threshold_m, kPositive);
+    s.Check(r);
+  });
   v.Section("nls", [&](auto& s) {
     estimator::NlsOptions& n = o.solver.nls;
     s.Choice("kernel", n.kernel, estimator::ParseKernelMode, [](auto k) { return estimator::ToString(k); },

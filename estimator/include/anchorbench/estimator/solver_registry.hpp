@@ -18,8 +18,9 @@ namespace anchorbench::estimator {
 // solvers that draw random numbers; a prefix entry ("nlopt:") serves every name it starts.
 class SolverRegistry {
  public:
+  // The registry itself is passed in, so a wrapper (ransac:<SOLVER>) can build the solver it wraps.
   using Factory = std::function<std::unique_ptr<Solver>(const std::string& name, const AnchorSolverOptions& options,
-                                                        std::uint64_t seed)>;
+                                                        std::uint64_t seed, const SolverRegistry& registry)>;
 
   void Register(const std::string& name, const std::string& description, Factory factory);
   // For names that start with `prefix` (e.g. "nlopt:" + an NLopt algorithm).
@@ -29,7 +30,7 @@ class SolverRegistry {
   std::unique_ptr<Solver> Create(const std::string& name, const AnchorSolverOptions& options, std::uint64_t seed,
                                  std::string* why = nullptr) const;
   bool Knows(const std::string& name) const;
-  // (name, description), sorted by name; prefix entries end in ':' plus a placeholder.
+  // (name, description), sorted by name; prefix entries read "prefix:<NAME>".
   std::vector<std::pair<std::string, std::string>> List() const;
 
  private:
@@ -41,7 +42,7 @@ class SolverRegistry {
   std::map<std::string, Entry> prefix_;
 };
 
-// ls_single, ls_double, lm_l2, lm_huber, lm_cauchy, lm_adaptive, nlopt:<ALGORITHM>.
+// ls_single, ls_double, lm_l2, lm_huber, lm_cauchy, lm_adaptive, nlopt:<ALGORITHM>, ransac:<SOLVER>.
 void RegisterBuiltinSolvers(SolverRegistry& registry);
 
 }  // namespace anchorbench::estimator
