@@ -2,7 +2,7 @@
 # The main command (README): set up, build the anchorbench executable, and regenerate everything
 # in results/: first the paper's Table I (results/table1/, within a minute of a fresh checkout on
 # 2 cores), then the threshold sweeps, the PDOP study, the halls, all figures and the replays of
-# the real Hanyang recordings (under a minute more).
+# the real Hanyang recordings (about a minute more).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 bash scripts/build.sh anchorbench
