@@ -8,7 +8,7 @@ cd "$(dirname "$0")/.."
 bash scripts/build.sh anchorbench
 bin=build/experiments/anchorbench
 "$bin" run configs/table1.yaml --out results/table1
-for sweep in sweep_pdop_threshold sweep_tau sweep_noise_outliers; do
+for sweep in sweep_pdop_threshold sweep_tau sweep_noise_outliers stress; do
   "$bin" sweep "configs/$sweep.yaml" --out "results/$sweep" --quiet
 done
 "$bin" pdop-study configs/pdop_study.yaml --out results/pdop_study --quiet
