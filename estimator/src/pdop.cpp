@@ -34,40 +34,42 @@ double GeometryPdop(std::span<const Eigen::Vector3d> p_world_tag, std::span<cons
   return PdopFromInformation(information);
 }
 
-double TruePdop(std::span<const Eigen::Vector3d> p_world_tag, const Eigen::Vector3d& p_world_anchor) {
-  Eigen::Matrix3d information = Eigen::Matrix3d::Zero();
-  for (const Eigen::Vector3d& p : p_world_tag) {
-    const Eigen::Vector3d diff = p - p_world_anchor;
-    const double distance_m = diff.norm();
-    if (distance_m <= 0.0) continue;  // a tag exactly at the anchor has no direction
-    const Eigen::Vector3d unit = diff / distance_m;
-    information += unit * unit.transpose();
-  }
-  return PdopFromInformation(information);
+void TrueGeometry::Add(const Eigen::Vector3d& p_world_tag) {
+  const Eigen::Vector3d diff = p_world_tag - p_world_anchor_;
+  const double distance_m = diff.norm();
+  if (distance_m <= 0.0) return;  // a tag exactly at the anchor has no direction
+  const Eigen::Vector3d unit = diff / distance_m;
+  sum_outer_ += unit * unit.transpose();
+  sum_unit_ += unit;
+  count_ += 1.0;
 }
 
-double BiasAwareDopFromSums(const Eigen::Matrix3d& sum_outer, const Eigen::Vector3d& sum_unit, double n) {
+double TrueGeometry::Pdop() const { return PdopFromInformation(sum_outer_); }
+
+double TrueGeometry::BiasAwareDop() const {
   // It is >= the 3-column PDOP; where that one is already singular, so is this one (the relative
   // rank test would otherwise judge the two matrices against different scales).
-  if (n < 2.0 || std::isinf(PdopFromInformation(sum_outer))) return std::numeric_limits<double>::infinity();
+  if (count_ < 2.0 || std::isinf(Pdop())) return std::numeric_limits<double>::infinity();
   // sum (u - u_mean)(u - u_mean)^T = sum u u^T - (sum u)(sum u)^T / n
-  return PdopFromInformation(sum_outer - sum_unit * sum_unit.transpose() / n);
+  return PdopFromInformation(sum_outer_ - sum_unit_ * sum_unit_.transpose() / count_);
+}
+
+namespace {
+
+TrueGeometry Accumulate(std::span<const Eigen::Vector3d> p_world_tag, const Eigen::Vector3d& p_world_anchor) {
+  TrueGeometry geometry(p_world_anchor);
+  for (const Eigen::Vector3d& p : p_world_tag) geometry.Add(p);
+  return geometry;
+}
+
+}  // namespace
+
+double TruePdop(std::span<const Eigen::Vector3d> p_world_tag, const Eigen::Vector3d& p_world_anchor) {
+  return Accumulate(p_world_tag, p_world_anchor).Pdop();
 }
 
 double BiasAwareDop(std::span<const Eigen::Vector3d> p_world_tag, const Eigen::Vector3d& p_world_anchor) {
-  Eigen::Matrix3d sum_outer = Eigen::Matrix3d::Zero();
-  Eigen::Vector3d sum_unit = Eigen::Vector3d::Zero();
-  double n = 0.0;
-  for (const Eigen::Vector3d& p : p_world_tag) {
-    const Eigen::Vector3d diff = p - p_world_anchor;
-    const double distance_m = diff.norm();
-    if (distance_m <= 0.0) continue;
-    const Eigen::Vector3d unit = diff / distance_m;
-    sum_outer += unit * unit.transpose();
-    sum_unit += unit;
-    n += 1.0;
-  }
-  return BiasAwareDopFromSums(sum_outer, sum_unit, n);
+  return Accumulate(p_world_tag, p_world_anchor).BiasAwareDop();
 }
 
 }  // namespace anchorbench::estimator

@@ -80,7 +80,17 @@ double LogPartitionTable::LogZ(double alpha) const {
   return log_z_[i] + fraction * (log_z_[i + 1] - log_z_[i]);
 }
 
-AlphaSelector::AlphaSelector(std::shared_ptr<const LogPartitionTable> table) : table_(std::move(table)) {}
+AlphaSelector::AlphaSelector(std::shared_ptr<const LogPartitionTable> table)
+    : table_(std::move(table)), optimizer_(std::make_unique<nlopt::opt>(nlopt::LN_COBYLA, 1)) {
+  auto objective = [](unsigned, const double* a, double*, void* self) {
+    return static_cast<const AlphaSelector*>(self)->Nll(a[0]);
+  };
+  optimizer_->set_min_objective(objective, this);
+  optimizer_->set_xtol_abs(kAlphaTolerance);
+  optimizer_->set_maxeval(40);
+}
+
+AlphaSelector::~AlphaSelector() = default;
 
 void AlphaSelector::Clear() {
   bin_count_.fill(0.0);
@@ -152,16 +162,10 @@ double AlphaSelector::Select(std::optional<double> previous_alpha) const {
     lower = std::max(alpha_min, best_alpha - grid_step);
     upper = std::min(2.0, best_alpha + grid_step);
   }
-  nlopt::opt optimizer(nlopt::LN_COBYLA, 1);
+  nlopt::opt& optimizer = *optimizer_;
   optimizer.set_lower_bounds(lower);
   optimizer.set_upper_bounds(upper);
-  optimizer.set_xtol_abs(kAlphaTolerance);
-  optimizer.set_maxeval(40);
   optimizer.set_initial_step(0.25 * grid_step);
-  auto objective = [](unsigned, const double* a, double*, void* self) {
-    return static_cast<const AlphaSelector*>(self)->Nll(a[0]);
-  };
-  optimizer.set_min_objective(objective, const_cast<AlphaSelector*>(this));
   std::vector<double> alpha{best_alpha};
   double nll = best_nll;
   try {

@@ -7,6 +7,7 @@
 #include "anchorbench/experiments/anchor_bank.hpp"
 #include "anchorbench/experiments/config_yaml.hpp"
 #include "anchorbench/experiments/input_error.hpp"
+#include "anchorbench/experiments/yaml_section.hpp"
 
 namespace anchorbench::experiments {
 namespace {
@@ -187,16 +188,6 @@ void VisitExperiment(V& v, ExperimentConfig& c) {
 }
 
 }  // namespace
-
-void ParseScenario(YamlSection& section, sim::ScenarioOptions& options) {
-  VisitScenario(section, options);
-  section.Finish();
-}
-
-void ParseEstimator(YamlSection& section, estimator::InitializerOptions& options) {
-  VisitEstimator(section, options);
-  section.Finish();
-}
 
 std::vector<RowConfig> RowsOf(const ExperimentConfig& config) {
   if (config.rows.empty()) return {RowConfig{"base", config.scenario, config.estimator, std::nullopt}};

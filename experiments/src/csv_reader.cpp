@@ -2,6 +2,7 @@
 
 #include <charconv>
 #include <cmath>
+#include <cstdio>
 
 #include "anchorbench/experiments/input_error.hpp"
 
@@ -101,6 +102,13 @@ std::string FormatNumber(double value) {
   char buffer[64];
   const auto [ptr, ec] = std::to_chars(buffer, buffer + sizeof(buffer), value);
   return std::string(buffer, ptr);
+}
+
+std::string FormatFixed(double value, int decimals) {
+  if (!std::isfinite(value)) return "-";
+  char buffer[64];
+  std::snprintf(buffer, sizeof(buffer), "%.*f", decimals, value);
+  return buffer;
 }
 
 }  // namespace anchorbench::experiments

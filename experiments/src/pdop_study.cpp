@@ -15,30 +15,6 @@ namespace {
 
 constexpr double kInf = std::numeric_limits<double>::infinity();
 
-// The true PDOP and bias-aware DOP in O(1) per sample: running sums of the unit vectors from the
-// true anchor (the rows of Eq. (3) at the truth).
-class TrueGeometry {
- public:
-  explicit TrueGeometry(const Eigen::Vector3d& p_world_anchor) : p_anchor_(p_world_anchor) {}
-  void Add(const Eigen::Vector3d& p_world_tag) {
-    const Eigen::Vector3d diff = p_world_tag - p_anchor_;
-    const double distance = diff.norm();
-    if (distance <= 0.0) return;
-    const Eigen::Vector3d u = diff / distance;
-    sum_outer_ += u * u.transpose();
-    sum_unit_ += u;
-    ++n_;
-  }
-  double Pdop() const { return estimator::PdopFromInformation(sum_outer_); }
-  double BiasAwareDop() const { return estimator::BiasAwareDopFromSums(sum_outer_, sum_unit_, n_); }
-
- private:
-  Eigen::Vector3d p_anchor_;
-  Eigen::Matrix3d sum_outer_ = Eigen::Matrix3d::Zero();
-  Eigen::Vector3d sum_unit_ = Eigen::Vector3d::Zero();
-  double n_ = 0.0;
-};
-
 struct RealizationResult {
   std::vector<PdopCheckpoint> checkpoints;
   UnderestimateStats stats;
@@ -51,7 +27,7 @@ RealizationResult StudyRealization(const ExperimentConfig& config, int realizati
   for (const sim::SimAnchor& anchor : scenario.anchors) {
     estimator::ConsistencyFilter filter(config.estimator.filter);
     estimator::ClosestPointPdop closest;
-    TrueGeometry truth(anchor.p_world_anchor);
+    estimator::TrueGeometry truth(anchor.p_world_anchor);
     std::vector<Eigen::Vector3d> p;
     std::vector<double> d;
     double t_first = 0.0;

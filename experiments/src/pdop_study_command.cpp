@@ -15,23 +15,12 @@
 #include "anchorbench/experiments/pdop_study.hpp"
 #include "anchorbench/experiments/progress.hpp"
 #include "anchorbench/experiments/run_outputs.hpp"
+#include "anchorbench/experiments/summary.hpp"
 
 namespace anchorbench::experiments {
 namespace {
 
-std::string Fixed(double value, int decimals) {
-  if (!std::isfinite(value)) return "-";
-  std::ostringstream s;
-  s << std::fixed << std::setprecision(decimals) << value;
-  return s.str();
-}
-
-double Median(std::vector<double> values) {
-  if (values.empty()) return std::nan("");
-  std::sort(values.begin(), values.end());
-  const std::size_t n = values.size();
-  return n % 2 ? values[n / 2] : 0.5 * (values[n / 2 - 1] + values[n / 2]);
-}
+double Median(const std::vector<double>& values) { return Percentile(values, 0.5).value_or(std::nan("")); }
 
 double Mean(const std::vector<double>& values) {
   if (values.empty()) return std::nan("");
@@ -74,8 +63,8 @@ void WriteBins(std::ostream& md, const std::vector<PdopCheckpoint>& checkpoints,
         differences.push_back(estimate - truth);
         overconfident += estimate < truth;
       }
-      md << ' ' << Fixed(Median(differences), 2) << " / "
-         << (differences.empty() ? "-" : Fixed(100.0 * overconfident / differences.size(), 0) + "%") << " |";
+      md << ' ' << FormatFixed(Median(differences), 2) << " / "
+         << (differences.empty() ? "-" : FormatFixed(100.0 * overconfident / differences.size(), 0) + "%") << " |";
     }
     md << ' ' << members.size() << " |\n";
   }
@@ -105,10 +94,10 @@ void WriteTriggers(std::ostream& md, const std::vector<PdopCheckpoint>& checkpoi
     }
     const double count = static_cast<double>(first.size());
     md << "| " << PdopMethodName(m) << (m == PdopMethod::kTrue ? " (oracle)" : "") << " | " << first.size() << " / "
-       << anchors << " | " << Fixed(Median(times), 1) << " | " << Fixed(Median(samples), 0) << " | "
-       << Fixed(Median(errors), 3) << " | " << Fixed(Mean(errors), 3) << " | "
-       << (count > 0 ? Fixed(100.0 * bad / count, 1) + "%" : "-") << " | "
-       << (count > 0 ? Fixed(100.0 * bias_aware_above / count, 0) + "%" : "-") << " |\n";
+       << anchors << " | " << FormatFixed(Median(times), 1) << " | " << FormatFixed(Median(samples), 0) << " | "
+       << FormatFixed(Median(errors), 3) << " | " << FormatFixed(Mean(errors), 3) << " | "
+       << (count > 0 ? FormatFixed(100.0 * bad / count, 1) + "%" : "-") << " | "
+       << (count > 0 ? FormatFixed(100.0 * bias_aware_above / count, 0) + "%" : "-") << " |\n";
   }
 }
 
@@ -136,12 +125,12 @@ int PdopStudyCommand(const PdopStudyArgs& args) {
      << " realizations, sigma_d = " << config.scenario.ranging.sigma_range_m << " m, a checkpoint every " << args.every
      << " accepted samples.\n\n## Is the closest-point PDOP conservative? (Theorem 3.1)\n\n"
      << "Over all " << s.samples << " accepted samples with both values finite, the closest-point PDOP was below the "
-     << "true PDOP in " << s.below << " (" << Fixed(s.samples ? 100.0 * s.below / s.samples : 0.0, 2) << "%)";
+     << "true PDOP in " << s.below << " (" << FormatFixed(s.samples ? 100.0 * s.below / s.samples : 0.0, 2) << "%)";
   if (!ratios.empty()) {
-    md << "; there, estimate / true had median " << Fixed(ratios[ratios.size() / 2], 3) << " and minimum "
-       << Fixed(ratios.front(), 3);
+    md << "; there, estimate / true had median " << FormatFixed(ratios[ratios.size() / 2], 3) << " and minimum "
+       << FormatFixed(ratios.front(), 3);
   }
-  auto percent = [](long part, long whole) { return whole ? Fixed(100.0 * part / whole, 2) + "%" : std::string("-"); };
+  auto percent = [](long part, long whole) { return whole ? FormatFixed(100.0 * part / whole, 2) + "%" : std::string("-"); };
   md << ".\n\nIn Theorem 3.1's exact setting (true distances, so p_C is the truly closest sample) it was below in "
      << s.ideal_below << " (" << percent(s.ideal_below, s.samples) << "); among the " << s.ideal_samples_precondition
      << " samples where the theorem's precondition held, in " << s.ideal_below_precondition << " ("

@@ -67,11 +67,6 @@ void WriteEstimates(std::ostream& out, const std::vector<AttemptOutcome>& outcom
 
 void PrintEstimates(std::ostream& out, const std::vector<AttemptOutcome>& outcomes) {
   constexpr int kWidth[] = {10, 7, 12, 10, 8, 10, 10, 10, 10, 10, 10, 10};
-  auto cell = [](double v) {
-    std::ostringstream s;
-    s << std::fixed << std::setprecision(3) << v;
-    return s.str();
-  };
   for (std::size_t i = 0; i < std::size(kEstimateColumns); ++i) out << std::setw(kWidth[i]) << kEstimateColumns[i];
   out << '\n';
   for (const AttemptOutcome& o : outcomes) {
@@ -80,12 +75,12 @@ void PrintEstimates(std::ostream& out, const std::vector<AttemptOutcome>& outcom
     const std::optional<double> numbers[] = {o.t_init_s, o.pdop_estimate, o.pdop_true};
     const int columns[] = {3, 5, 6};
     for (int k = 0; k < 3; ++k)
-      if (numbers[k] && std::isfinite(*numbers[k])) fields[columns[k]] = cell(*numbers[k]);
+      if (numbers[k] && std::isfinite(*numbers[k])) fields[columns[k]] = FormatFixed(*numbers[k], 3);
     if (o.initialized && o.solve) {
-      for (int k = 0; k < 3; ++k) fields[7 + k] = cell(o.solve->p_world_anchor[k]);
-      fields[10] = cell(o.solve->bias_m);
+      for (int k = 0; k < 3; ++k) fields[7 + k] = FormatFixed(o.solve->p_world_anchor[k], 3);
+      fields[10] = FormatFixed(o.solve->bias_m, 3);
     }
-    if (o.error_m) fields[11] = cell(*o.error_m);
+    if (o.error_m) fields[11] = FormatFixed(*o.error_m, 3);
     for (std::size_t i = 0; i < fields.size(); ++i) out << std::setw(kWidth[i]) << (fields[i].empty() ? "-" : fields[i]);
     out << '\n';
   }

@@ -7,6 +7,8 @@
 #include <iomanip>
 #include <sstream>
 
+#include <yaml-cpp/yaml.h>
+
 #include "anchorbench/experiments/anchor_bank.hpp"
 #include "anchorbench/experiments/csv_reader.hpp"
 
@@ -14,12 +16,6 @@ namespace anchorbench::experiments {
 namespace {
 
 std::string Optional(const std::optional<double>& value) { return value ? FormatNumber(*value) : ""; }
-
-std::string Fixed(double value, int decimals) {
-  std::ostringstream s;
-  s << std::fixed << std::setprecision(decimals) << value;
-  return s.str();
-}
 
 std::string JsonString(const std::string& text) {
   std::string out = "\"";
@@ -76,13 +72,13 @@ std::string GitRevision() {
 std::string Compare(double paper, const std::optional<double>& ours, int decimals, bool* within) {
   if (!ours) {
     *within = false;
-    return Fixed(paper, decimals) + " / - ";
+    return FormatFixed(paper, decimals) + " / - ";
   }
   const double relative = paper != 0.0 ? (*ours - paper) / paper : 0.0;
   *within = std::abs(relative) <= 0.25 + 1e-12;
   std::ostringstream s;
-  s << Fixed(paper, decimals) << " / " << Fixed(*ours, decimals) << " (" << (relative >= 0 ? "+" : "")
-    << Fixed(100.0 * relative, 0) << "%)" << (*within ? "" : " !");
+  s << FormatFixed(paper, decimals) << " / " << FormatFixed(*ours, decimals) << " (" << (relative >= 0 ? "+" : "")
+    << FormatFixed(100.0 * relative, 0) << "%)" << (*within ? "" : " !");
   return s.str();
 }
 
@@ -140,15 +136,15 @@ void WriteSummaryMarkdown(std::ostream& out, const std::vector<MethodSummary>& s
       << "| # | Method | Avg. (m) | Med. (m) | Init. | >1m | Ratio (%) | t_init mean / median (s) |\n"
       << "|---|---|---|---|---|---|---|---|\n";
   auto interval = [](const std::optional<double>& lo, const std::optional<double>& hi, int decimals) {
-    return lo ? " [" + Fixed(*lo, decimals) + ", " + Fixed(*hi, decimals) + "]" : std::string();
+    return lo ? " [" + FormatFixed(*lo, decimals) + ", " + FormatFixed(*hi, decimals) + "]" : std::string();
   };
   for (const MethodSummary& s : summaries) {
     out << "| " << rows[static_cast<std::size_t>(s.row)].name << " | "
         << (s.method == estimator::InitStrategy::kFixedWindow ? "Fixed" : "Our (gated)") << " | "
-        << (s.avg_m ? Fixed(*s.avg_m, 3) + interval(s.avg_lo, s.avg_hi, 3) : "-") << " | "
-        << (s.med_m ? Fixed(*s.med_m, 3) : "-") << " | " << s.init << " / " << s.attempts << " | " << s.gt1m << " | "
-        << (s.ratio_pct ? Fixed(*s.ratio_pct, 2) + interval(s.ratio_lo, s.ratio_hi, 2) : "-") << " | "
-        << (s.t_init_mean_s ? Fixed(*s.t_init_mean_s, 1) + " / " + Fixed(*s.t_init_med_s, 1) : "-") << " |\n";
+        << (s.avg_m ? FormatFixed(*s.avg_m, 3) + interval(s.avg_lo, s.avg_hi, 3) : "-") << " | "
+        << (s.med_m ? FormatFixed(*s.med_m, 3) : "-") << " | " << s.init << " / " << s.attempts << " | " << s.gt1m << " | "
+        << (s.ratio_pct ? FormatFixed(*s.ratio_pct, 2) + interval(s.ratio_lo, s.ratio_hi, 2) : "-") << " | "
+        << (s.t_init_mean_s ? FormatFixed(*s.t_init_mean_s, 1) + " / " + FormatFixed(*s.t_init_med_s, 1) : "-") << " |\n";
   }
 
   bool any_paper = false;
@@ -194,7 +190,7 @@ std::string ManifestJson(const ExperimentConfig& config, const RunInfo& info) {
   json << "{\n  \"config_file\": " << JsonString(info.config_path) << ",\n  \"seed\": " << config.seed
        << ",\n  \"realizations\": " << config.realizations << ",\n  \"threads\": " << info.threads
        << ",\n  \"git_revision\": " << JsonString(GitRevision()) << ",\n  \"compiler\": "
-       << JsonString(std::string("g++ ") + __VERSION__) << ",\n  \"wall_time_s\": " << Fixed(info.wall_time_s, 3)
+       << JsonString(std::string("g++ ") + __VERSION__) << ",\n  \"wall_time_s\": " << FormatFixed(info.wall_time_s, 3)
        << ",\n  \"resolved_config\": " << YamlToJson(YAML::Load(ToYaml(config)), 2) << "\n}\n";
   return json.str();
 }

@@ -14,15 +14,6 @@ struct RealizationSums {
   int gt1m = 0;
 };
 
-std::optional<double> Percentile(std::vector<double> values, double q) {
-  if (values.empty()) return std::nullopt;
-  std::sort(values.begin(), values.end());
-  const double position = q * static_cast<double>(values.size() - 1);
-  const auto i = static_cast<std::size_t>(position);
-  const double fraction = position - static_cast<double>(i);
-  return i + 1 < values.size() ? values[i] + fraction * (values[i + 1] - values[i]) : values[i];
-}
-
 MethodSummary SummarizeOne(const std::vector<const Attempt*>& attempts, const std::vector<RealizationSums>& sums,
                            int bootstrap_resamples, sim::RandomStream rng) {
   MethodSummary s;
@@ -67,6 +58,15 @@ MethodSummary SummarizeOne(const std::vector<const Attempt*>& attempts, const st
 }
 
 }  // namespace
+
+std::optional<double> Percentile(std::vector<double> values, double q) {
+  if (values.empty()) return std::nullopt;
+  std::sort(values.begin(), values.end());
+  const double position = q * static_cast<double>(values.size() - 1);
+  const auto i = static_cast<std::size_t>(position);
+  const double fraction = position - static_cast<double>(i);
+  return i + 1 < values.size() ? values[i] + fraction * (values[i + 1] - values[i]) : values[i];
+}
 
 std::vector<MethodSummary> Summarize(const std::vector<Attempt>& attempts, int rows, int realizations,
                                      int bootstrap_resamples, std::uint64_t seed) {

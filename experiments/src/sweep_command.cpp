@@ -7,6 +7,7 @@
 #include "anchorbench/experiments/atomic_file.hpp"
 #include "anchorbench/experiments/commands.hpp"
 #include "anchorbench/experiments/config.hpp"
+#include "anchorbench/experiments/csv_reader.hpp"
 #include "anchorbench/experiments/input_error.hpp"
 #include "anchorbench/experiments/monte_carlo.hpp"
 #include "anchorbench/experiments/output_folder.hpp"
@@ -36,10 +37,7 @@ std::vector<SweepAxis> Axes(const ExperimentConfig& config, const std::vector<st
 }
 
 std::string Cell(const std::optional<double>& value, int decimals) {
-  if (!value) return "-";
-  std::ostringstream s;
-  s << std::fixed << std::setprecision(decimals) << *value;
-  return s.str();
+  return value ? FormatFixed(*value, decimals) : "-";
 }
 
 struct PointResult {

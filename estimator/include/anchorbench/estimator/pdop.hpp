@@ -23,7 +23,21 @@ double TruePdop(std::span<const Eigen::Vector3d> p_world_tag, const Eigen::Vecto
 // sigma_d times its root trace is the Cramer-Rao bound on the position error of (p_A, gamma);
 // it is always >= TruePdop, since only the spread of the viewing directions counts.
 double BiasAwareDop(std::span<const Eigen::Vector3d> p_world_tag, const Eigen::Vector3d& p_world_anchor);
-// The same from running sums of the unit vectors: sum u u^T, sum u, and their count.
-double BiasAwareDopFromSums(const Eigen::Matrix3d& sum_outer, const Eigen::Vector3d& sum_unit, double n);
+
+// Both, one sample at a time in O(1), for a known anchor (evaluation): running sums of the unit
+// vectors u_k from the anchor to the tags.
+class TrueGeometry {
+ public:
+  explicit TrueGeometry(const Eigen::Vector3d& p_world_anchor) : p_world_anchor_(p_world_anchor) {}
+  void Add(const Eigen::Vector3d& p_world_tag);
+  double Pdop() const;          // TruePdop of the samples so far
+  double BiasAwareDop() const;  // BiasAwareDop of the samples so far
+
+ private:
+  Eigen::Vector3d p_world_anchor_;
+  Eigen::Matrix3d sum_outer_ = Eigen::Matrix3d::Zero();  // sum u u^T
+  Eigen::Vector3d sum_unit_ = Eigen::Vector3d::Zero();   // sum u
+  double count_ = 0.0;
+};
 
 }  // namespace anchorbench::estimator

@@ -6,6 +6,10 @@
 #include <span>
 #include <vector>
 
+namespace nlopt {
+class opt;
+}
+
 namespace anchorbench::estimator {
 
 // Barron's general loss, Eq. (13), on the normalized residual x = r / c:
@@ -65,6 +69,9 @@ class AlphaSelector {
   static constexpr double kAlphaTolerance = 1e-2;  // NLopt's x tolerance on alpha
 
   explicit AlphaSelector(std::shared_ptr<const LogPartitionTable> table);
+  ~AlphaSelector();
+  AlphaSelector(const AlphaSelector&) = delete;
+  AlphaSelector& operator=(const AlphaSelector&) = delete;
 
   void Clear();
   void Add(double x);  // one normalized residual r / c
@@ -77,6 +84,9 @@ class AlphaSelector {
 
  private:
   std::shared_ptr<const LogPartitionTable> table_;
+  // Built once per selector and reused by every Select (one per LM iteration); NLopt itself still
+  // allocates its workspace inside each optimize call.
+  std::unique_ptr<nlopt::opt> optimizer_;
   std::array<double, kBins> bin_count_{};
   std::array<double, kBins> bin_sum_x_squared_{};
   double total_count_ = 0.0;

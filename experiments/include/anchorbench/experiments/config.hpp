@@ -6,7 +6,6 @@
 #include <vector>
 
 #include "anchorbench/estimator/anchor_initializer.hpp"
-#include "anchorbench/experiments/yaml_section.hpp"
 #include "anchorbench/sim/scenario.hpp"
 
 namespace anchorbench::experiments {
@@ -56,11 +55,6 @@ std::vector<RowConfig> RowsOf(const ExperimentConfig& config);
 // `overrides` are KEY=VALUE pairs (KEY a dotted path such as scenario.tunnel.width_m) applied to
 // the YAML before validation, so an override is checked exactly like a value in the file.
 ExperimentConfig LoadConfig(const std::string& path, const std::vector<std::string>& overrides = {});
-
-// Section parsers. Absent keys keep the values already in `options`, so a section can be laid
-// over defaults or over another configuration; unknown keys and invalid values throw InputError.
-void ParseScenario(YamlSection& section, sim::ScenarioOptions& options);
-void ParseEstimator(YamlSection& section, estimator::InitializerOptions& options);
 
 // YAML text of a resolved configuration (for manifests), in the same schema.
 std::string ToYaml(const ExperimentConfig& config);

@@ -44,4 +44,7 @@ class CsvReader {
 // locale-free, and lossless, so equal results give equal bytes.
 std::string FormatNumber(double value);
 
+// Fixed decimals for tables meant to be read ("0.125"); "-" for a non-finite value.
+std::string FormatFixed(double value, int decimals);
+
 }  // namespace anchorbench::experiments

@@ -24,6 +24,9 @@ struct MethodSummary {
   std::optional<double> avg_lo, avg_hi, ratio_lo, ratio_hi;
 };
 
+// The q-quantile (0..1) with linear interpolation; absent for no values.
+std::optional<double> Percentile(std::vector<double> values, double q);
+
 // Summaries ordered by row, then fixed before gated (the paper's order).
 std::vector<MethodSummary> Summarize(const std::vector<Attempt>& attempts, int rows, int realizations,
                                      int bootstrap_resamples, std::uint64_t seed);
