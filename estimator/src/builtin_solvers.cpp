@@ -2,7 +2,6 @@
 
 #include "anchorbench/estimator/ls_solver.hpp"
 #include "anchorbench/estimator/nlopt_solver.hpp"
-#include "anchorbench/estimator/ransac_solver.hpp"
 #include "anchorbench/estimator/solver_registry.hpp"
 
 namespace anchorbench::estimator {
@@ -23,9 +22,8 @@ class FunctionSolver : public Solver {
 
 // LS + LM with the configured options and the given kernel.
 SolverRegistry::Factory LmWith(KernelMode kernel, double fixed_alpha = 1.0) {
-  return [kernel, fixed_alpha](const std::string&, const AnchorSolverOptions& options, std::uint64_t,
-                               const SolverRegistry&) {
-    AnchorSolverOptions chosen = options;
+  return [kernel, fixed_alpha](const std::string&, const SolverContext& context) {
+    AnchorSolverOptions chosen = context.options;
     chosen.nls.kernel = kernel;
     chosen.nls.fixed_alpha = fixed_alpha;
     return std::unique_ptr<Solver>(new AnchorSolver(chosen));
@@ -36,15 +34,13 @@ SolverRegistry::Factory LmWith(KernelMode kernel, double fixed_alpha = 1.0) {
 
 void RegisterBuiltinSolvers(SolverRegistry& registry) {
   registry.Register("ls_single", "single-difference LS with bias (the authors' earlier library, 'SINGLE')",
-                    [](const std::string&, const AnchorSolverOptions&, std::uint64_t, const SolverRegistry&) {
+                    [](const std::string&, const SolverContext&) {
                       return std::unique_ptr<Solver>(new FunctionSolver(
                           [](auto p, auto d) { return SolveSingleDifferenceLs(p, d); }));
                     });
   registry.Register("ls_double", "double-difference LS, Eqs. (9)-(10), pivot as configured (ls.pivot)",
-                    [](const std::string&, const AnchorSolverOptions& options, std::uint64_t, const SolverRegistry&) {
-                      const LsOptions ls = options.ls;
-                      return std::unique_ptr<Solver>(new FunctionSolver(
-                          [ls](auto p, auto d) { return SolveDoubleDifferenceLs(p, d, ls); }));
+                    [](const std::string&, const SolverContext& context) {
+                      return std::unique_ptr<Solver>(new DoubleDifferenceLsSolver(context.options.ls));
                     });
   registry.Register("lm_l2", "LS + Levenberg-Marquardt on plain least squares, Eq. (11)", LmWith(KernelMode::kL2));
   registry.Register("lm_huber", "LS + LM with a smooth Huber kernel (Barron alpha = 1, pseudo-Huber)",
@@ -53,19 +49,10 @@ void RegisterBuiltinSolvers(SolverRegistry& registry) {
   registry.Register("lm_adaptive", "LS + LM with the adaptive robust kernel, Eqs. (12)-(13): the paper's solver",
                     LmWith(KernelMode::kAdaptive));
   registry.RegisterPrefix("nlopt:", "any NLopt algorithm (e.g. nlopt:LN_BOBYQA) as the parameter step of the adaptive kernel",
-                          [](const std::string& name, const AnchorSolverOptions& options, std::uint64_t seed,
-                             const SolverRegistry&) {
-                            return std::unique_ptr<Solver>(
-                                NloptSolver::Create(name.substr(std::string("nlopt:").size()), options, seed));
+                          [](const std::string& name, const SolverContext& context) {
+                            return std::unique_ptr<Solver>(NloptSolver::Create(
+                                name.substr(std::string("nlopt:").size()), context.options, context.seed));
                           });
-  registry.RegisterPrefix(
-      "ransac:", "RANSAC pre-filtering (Jung et al. 2024; Table II) around a solver, e.g. ransac:lm_l2",
-      [](const std::string& name, const AnchorSolverOptions& options, std::uint64_t seed,
-         const SolverRegistry& self) -> std::unique_ptr<Solver> {
-        std::shared_ptr<const Solver> inner = self.Create(name.substr(std::string("ransac:").size()), options, seed);
-        if (!inner) return nullptr;
-        return std::make_unique<RansacSolver>(options.ransac, std::move(inner), seed);
-      });
 }
 
 }  // namespace anchorbench::estimator

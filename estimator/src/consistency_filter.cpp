@@ -17,7 +17,6 @@ bool ConsistencyFilterOptions::IsValid(std::string* why) const {
 }
 
 bool ConsistencyFilter::Accept(int tag_id, const Eigen::Vector3d& p_world_tag, double range_m) {
-  if (!options_.enabled) return true;
   for (Reference& ref : references_) {
     if (ref.tag_id != tag_id) continue;
     const double delta_range_m = std::abs(range_m - ref.range_m);

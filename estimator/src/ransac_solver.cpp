@@ -30,14 +30,15 @@ SolveResult RansacSolver::Solve(std::span<const Eigen::Vector3d> p, std::span<co
   if (n <= s) return inner_->Solve(p, d);  // no room to leave anything out
   std::mt19937_64 rng(seed_);
   std::vector<std::size_t> index(n);
+  std::iota(index.begin(), index.end(), std::size_t{0});
   std::vector<Eigen::Vector3d> subset_p(s), inlier_p;
   std::vector<double> subset_d(s), inlier_d;
   std::size_t best_inliers = 0;
   SolveResult best;
   const int iterations = options_.Iterations();
   for (int it = 0; it < iterations; ++it) {
-    std::iota(index.begin(), index.end(), std::size_t{0});
-    for (std::size_t k = 0; k < s; ++k) {  // partial Fisher-Yates: s distinct samples
+    // Partial Fisher-Yates: s distinct samples, uniform from whatever order the last draw left.
+    for (std::size_t k = 0; k < s; ++k) {
       const auto pick = k + static_cast<std::size_t>(static_cast<double>(rng() >> 11) * 0x1.0p-53 * (n - k));
       std::swap(index[k], index[pick]);
       subset_p[k] = p[index[k]];

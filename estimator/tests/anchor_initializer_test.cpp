@@ -4,28 +4,23 @@
 
 #include <gtest/gtest.h>
 
+#include "anchorbench/estimator/components.hpp"
 #include "anchorbench/estimator/pdop.hpp"
 #include "test_data.hpp"
 
 namespace anchorbench::estimator {
 namespace {
 
-// A tag weaving past a wall anchor: the closest-point PDOP falls as the anchor is passed.
-std::vector<RangeSample> PassBy(const Eigen::Vector3d& p_anchor, double sigma_m, std::uint64_t seed) {
-  auto rng = testing::TestStream(seed);
-  std::vector<RangeSample> samples;
-  for (int k = 0; k < 1200; ++k) {
-    const double t = 0.1 * k;
-    const Eigen::Vector3d p(-30.0 + 0.5 * t, 2.0 * std::sin(0.3 * t), 1.5 + 1.0 * std::sin(0.17 * t));
-    samples.push_back({t, 0, 7, (p - p_anchor).norm() + 0.1 + sigma_m * rng.Normal(), p});
-  }
-  return samples;
-}
+using testing::Builtins;
+using testing::PassBy;
+
+// Named, not `{}`: GCC 12 warns falsely (-Wmaybe-uninitialized) on brace temporaries of it.
+const InitializerOptions kDefaults;
 
 TEST(AnchorInitializer, GatedFiresOnceWhenPdopDropsBelowThreshold) {
   const Eigen::Vector3d p_anchor(0, 4, 3);
   InitializerOptions options;
-  options.pdop_threshold = 1.0;
+  options.trigger.pdop_threshold = 1.0;
   AnchorInitializer initializer(7, options);
   std::optional<InitEvent> event;
   double pdop_before = 0.0;
@@ -49,9 +44,7 @@ TEST(AnchorInitializer, GatedFiresOnceWhenPdopDropsBelowThreshold) {
 
 TEST(AnchorInitializer, FixedWindowSolvesOnAllDataAtFinish) {
   const Eigen::Vector3d p_anchor(0, 4, 3);
-  InitializerOptions options;
-  options.strategy = InitStrategy::kFixedWindow;
-  AnchorInitializer initializer(7, options);
+  AnchorInitializer initializer = MakeInitializer(Builtins(), 7, kDefaults, "fixed_window", 0);
   const auto samples = PassBy(p_anchor, 0.05, 2);
   for (const RangeSample& s : samples) EXPECT_FALSE(initializer.Feed(s).event.has_value());
   const auto event = initializer.Finish(samples.back().t_s);
@@ -73,7 +66,7 @@ TEST(AnchorInitializer, NeverFiresOnAStraightLine) {
 }
 
 TEST(AnchorInitializer, RejectsNonPositiveRanges) {
-  AnchorInitializer initializer(1, {});
+  AnchorInitializer initializer(1, kDefaults);
   EXPECT_FALSE(initializer.Feed({0.0, 0, 1, 0.0, Eigen::Vector3d::Zero()}).accepted);
   EXPECT_FALSE(initializer.Feed({0.1, 0, 1, -1.0, Eigen::Vector3d::Zero()}).accepted);
   EXPECT_TRUE(initializer.Feed({0.2, 0, 1, 3.0, Eigen::Vector3d::Zero()}).accepted);
@@ -83,7 +76,7 @@ TEST(InitializerOptions, ValidationNamesTheProblem) {
   InitializerOptions options;
   std::string why;
   EXPECT_TRUE(options.IsValid(&why));
-  options.filter.tau_m = -1.0;
+  options.filter.consistency.tau_m = -1.0;
   EXPECT_FALSE(options.IsValid(&why));
   EXPECT_NE(why.find("tau"), std::string::npos);
 }

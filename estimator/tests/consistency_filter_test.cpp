@@ -31,13 +31,13 @@ Stream MakeStream(std::uint64_t seed, double spike_probability) {
 
 TEST(ConsistencyFilter, KeepsCleanData) {
   const Stream s = MakeStream(1, 0.0);
-  ConsistencyFilter filter({.enabled = true, .tau_m = 0.2, .reseed_after_rejections = 10});
+  ConsistencyFilter filter({.tau_m = 0.2, .reseed_after_rejections = 10});
   for (std::size_t k = 0; k < s.d.size(); ++k) EXPECT_TRUE(filter.Accept(0, s.p[k], s.d[k])) << k;
 }
 
 TEST(ConsistencyFilter, RejectsInjectedSpikes) {
   const Stream s = MakeStream(2, 0.05);
-  ConsistencyFilter filter({.enabled = true, .tau_m = 0.2, .reseed_after_rejections = 10});
+  ConsistencyFilter filter({.tau_m = 0.2, .reseed_after_rejections = 10});
   int spikes = 0, spikes_rejected = 0, clean = 0, clean_accepted = 0;
   for (std::size_t k = 0; k < s.d.size(); ++k) {
     const bool accepted = filter.Accept(0, s.p[k], s.d[k]);
@@ -56,7 +56,7 @@ TEST(ConsistencyFilter, RejectsInjectedSpikes) {
 
 TEST(ConsistencyFilter, ReseedsAfterAnOutlyingFirstSample) {
   const Stream s = MakeStream(3, 0.0);
-  ConsistencyFilter filter({.enabled = true, .tau_m = 0.2, .reseed_after_rejections = 5});
+  ConsistencyFilter filter({.tau_m = 0.2, .reseed_after_rejections = 5});
   EXPECT_TRUE(filter.Accept(0, s.p[0], s.d[0] + 20.0));  // first sample: nothing to compare with
   for (int k = 1; k < 5; ++k) EXPECT_FALSE(filter.Accept(0, s.p[k], s.d[k]));
   EXPECT_TRUE(filter.Accept(0, s.p[5], s.d[5]));  // fifth rejection in a row: re-seed here
@@ -71,10 +71,10 @@ TEST(ConsistencyFilter, ChecksEachTagAgainstItsOwnHistory) {
   EXPECT_FALSE(filter.Accept(1, Eigen::Vector3d(0.1, 0.85, 0), 13.0));
 }
 
-TEST(ConsistencyFilter, DisabledAcceptsEverything) {
-  ConsistencyFilter filter({.enabled = false});
-  EXPECT_TRUE(filter.Accept(0, Eigen::Vector3d::Zero(), 1.0));
-  EXPECT_TRUE(filter.Accept(0, Eigen::Vector3d::Zero(), 100.0));
+TEST(NullFilter, AcceptsEverything) {
+  NullFilter filter;
+  EXPECT_TRUE(filter.Accept(RangeSample{0.0, 0, 1, 1.0, Eigen::Vector3d::Zero()}));
+  EXPECT_TRUE(filter.Accept(RangeSample{0.1, 0, 1, 100.0, Eigen::Vector3d::Zero()}));
 }
 
 }  // namespace

@@ -1,9 +1,12 @@
 #pragma once
 
+#include <cmath>
 #include <vector>
 
 #include <Eigen/Core>
 
+#include "anchorbench/estimator/components.hpp"
+#include "anchorbench/estimator/range_sample.hpp"
 #include "anchorbench/sim/random_stream.hpp"
 
 namespace anchorbench::testing {
@@ -32,6 +35,29 @@ inline AnchorData BoxData(sim::RandomStream& rng, int n, const Eigen::Vector3d& 
     data.range_m.push_back((p - p_anchor).norm() + bias_m + sigma_m * rng.Normal());
   }
   return data;
+}
+
+// A tag weaving past a wall anchor at 10 Hz for 120 s (range bias 0.1 m): the closest-point PDOP
+// falls as the anchor is passed.
+inline std::vector<estimator::RangeSample> PassBy(const Eigen::Vector3d& p_anchor, double sigma_m, std::uint64_t seed) {
+  auto rng = TestStream(seed);
+  std::vector<estimator::RangeSample> samples;
+  for (int k = 0; k < 1200; ++k) {
+    const double t = 0.1 * k;
+    const Eigen::Vector3d p(-30.0 + 0.5 * t, 2.0 * std::sin(0.3 * t), 1.5 + 1.0 * std::sin(0.17 * t));
+    samples.push_back({t, 0, 7, (p - p_anchor).norm() + 0.1 + sigma_m * rng.Normal(), p});
+  }
+  return samples;
+}
+
+// The built-in solvers, filters and triggers.
+inline const estimator::Components& Builtins() {
+  static const estimator::Components components = [] {
+    estimator::Components c;
+    estimator::RegisterBuiltins(c);
+    return c;
+  }();
+  return components;
 }
 
 }  // namespace anchorbench::testing

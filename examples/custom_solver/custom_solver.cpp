@@ -1,12 +1,12 @@
 // A solver of one's own, registered beside the built-ins and run on the same trials as the
 // paper's: the LS coarse solution followed by a Cauchy-kernel refinement started from the median
 // of a few LS solutions on disjoint thirds of the data ("ls_thirds_cauchy"). Prints one line per
-// solver: the gated strategy's mean error and initializations.
+// solver: the paper's trigger's mean error and initializations.
 #include <algorithm>
 #include <cstdio>
 #include <memory>
 
-#include "anchorbench/estimator/solver_registry.hpp"
+#include "anchorbench/estimator/components.hpp"
 #include "anchorbench/experiments/config.hpp"
 #include "anchorbench/experiments/monte_carlo.hpp"
 #include "anchorbench/experiments/summary.hpp"
@@ -53,21 +53,21 @@ int main(int argc, char** argv) {
     std::fprintf(stderr, "usage: custom_solver CONFIG (e.g. configs/table1.yaml)\n");
     return 2;
   }
-  est::SolverRegistry registry;
-  est::RegisterBuiltinSolvers(registry);
-  registry.Register("ls_thirds_cauchy", "median of LS on thirds, then a Cauchy-kernel LM",
-                    [](const std::string&, const est::AnchorSolverOptions& options, std::uint64_t, const est::SolverRegistry&) {
-                      return std::unique_ptr<est::Solver>(new ThirdsCauchySolver(options));
-                    });
+  est::Components components;
+  est::RegisterBuiltins(components);
+  components.solvers.Register("ls_thirds_cauchy", "median of LS on thirds, then a Cauchy-kernel LM",
+                              [](const std::string&, const est::SolverContext& context) {
+                                return std::make_unique<ThirdsCauchySolver>(context.options);
+                              });
   ex::ExperimentConfig config = ex::LoadConfig(argv[1]);
   config.realizations = 5;
   for (const char* solver : {"lm_adaptive", "ls_thirds_cauchy"}) {
     for (ex::RowConfig& row : config.rows) row.estimator.solver_name = solver;
-    const auto attempts = ex::RunMonteCarlo(config, {2, nullptr, &registry});
+    const auto attempts = ex::RunMonteCarlo(config, {2, nullptr, &components});
     const auto rows = ex::RowsOf(config);
-    const auto summaries = ex::Summarize(attempts, static_cast<int>(rows.size()), config.realizations, 0, config.seed);
+    const auto summaries = ex::Summarize(attempts, rows, config.realizations, 0, config.seed);
     for (const auto& s : summaries) {
-      if (s.method != est::InitStrategy::kPdopGated) continue;
+      if (s.method != ex::kPaperTrigger) continue;
       std::printf("%-18s row %-8s gated: %4d initialized, mean error %s m\n", solver, rows[s.row].name.c_str(), s.init,
                   s.avg_m ? std::to_string(*s.avg_m).c_str() : "-");
     }

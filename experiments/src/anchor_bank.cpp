@@ -1,61 +1,71 @@
 #include "anchorbench/experiments/anchor_bank.hpp"
 
+#include <algorithm>
+#include <chrono>
 #include <stdexcept>
 
 #include "anchorbench/estimator/pdop.hpp"
+#include "anchorbench/experiments/input_error.hpp"
+#include "anchorbench/sim/random_stream.hpp"
 
 namespace anchorbench::experiments {
 
-using estimator::InitStrategy;
-
-std::string_view MethodName(InitStrategy strategy) {
-  return strategy == InitStrategy::kPdopGated ? "gated" : "fixed";
-}
-
-const estimator::SolverRegistry& BuiltinSolvers() {
-  static const estimator::SolverRegistry registry = [] {
-    estimator::SolverRegistry r;
-    estimator::RegisterBuiltinSolvers(r);
-    return r;
+const estimator::Components& BuiltinComponents() {
+  static const estimator::Components components = [] {
+    estimator::Components c;
+    estimator::RegisterBuiltins(c);
+    return c;
   }();
-  return registry;
+  return components;
 }
 
-AnchorBank::AnchorBank(const estimator::InitializerOptions& options, const estimator::SolverRegistry* registry)
-    : gated_options_(options), fixed_options_(options) {
-  gated_options_.strategy = InitStrategy::kPdopGated;
-  fixed_options_.strategy = InitStrategy::kFixedWindow;
-  std::string why;
-  solver_ = (registry ? *registry : BuiltinSolvers()).Create(options.solver_name, options.solver, 0, &why);
-  if (!solver_) throw std::invalid_argument(why);  // configs are validated before; this is a programming error
+AnchorBank::AnchorBank(const estimator::InitializerOptions& options, std::uint64_t seed, std::uint64_t realization,
+                       const std::map<int, AnchorTruth>* truth, const estimator::Components* components)
+    : options_(options),
+      seed_(seed),
+      realization_(realization),
+      truth_(truth),
+      components_(components ? components : &BuiltinComponents()) {}
+
+namespace {
+
+const AnchorTruth* Find(const std::map<int, AnchorTruth>* truth, int anchor_id) {
+  if (!truth) return nullptr;
+  const auto found = truth->find(anchor_id);
+  return found == truth->end() ? nullptr : &found->second;
 }
 
-AnchorBank::Anchor& AnchorBank::Find(int anchor_id) {
-  auto found = anchors_.find(anchor_id);
-  if (found == anchors_.end()) {
-    found = anchors_
-                .emplace(anchor_id, Anchor{estimator::AnchorInitializer(anchor_id, gated_options_, solver_),
-                                           estimator::AnchorInitializer(anchor_id, fixed_options_, solver_),
-                                           std::nullopt})
-                .first;
+}  // namespace
+
+std::size_t AnchorBank::Slot(int anchor_id) {
+  if (const auto found = slot_of_anchor_.find(anchor_id); found != slot_of_anchor_.end()) return found->second;
+  Anchor anchor;
+  anchor.id = anchor_id;
+  const std::uint64_t anchor_seed =
+      sim::RandomStream(seed_, realization_, sim::StreamId::kSolver, static_cast<std::uint32_t>(anchor_id)).NextU64();
+  const AnchorTruth* truth = Find(truth_, anchor_id);
+  const std::optional<Eigen::Vector3d> p_true = truth ? std::optional(truth->p_world_anchor) : std::nullopt;
+  for (const std::string& trigger : options_.triggers) {
+    try {
+      anchor.by_trigger.push_back(estimator::MakeInitializer(*components_, anchor_id, options_, trigger, anchor_seed, p_true));
+    } catch (const std::invalid_argument& e) {
+      throw InputError("anchor " + std::to_string(anchor_id) + ": " + e.what());
+    }
   }
-  return found->second;
+  anchor.events.resize(options_.triggers.size());
+  anchors_.push_back(std::move(anchor));
+  slot_of_anchor_[anchor_id] = anchors_.size() - 1;
+  return anchors_.size() - 1;
 }
 
-void AnchorBank::AddAnchor(int anchor_id) { Find(anchor_id); }
+void AnchorBank::AddAnchor(int anchor_id) { Slot(anchor_id); }
 
-estimator::FeedResult AnchorBank::Feed(const estimator::RangeSample& sample) {
-  Anchor& anchor = Find(sample.anchor_id);
-  anchor.fixed.Feed(sample);
-  estimator::FeedResult gated = anchor.gated.Feed(sample);
-  if (gated.event) anchor.gated_event = gated.event;
-  return gated;
-}
-
-AttemptOutcome AnchorBank::Outcome(int anchor_id, const estimator::AnchorInitializer& initializer,
-                                   const std::optional<estimator::InitEvent>& event, const AnchorTruth* truth) const {
+AttemptOutcome AnchorBank::Outcome(const Anchor& anchor, std::size_t trigger,
+                                   std::optional<estimator::InitEvent> event) const {
+  const estimator::AnchorInitializer& initializer = anchor.by_trigger[trigger];
   AttemptOutcome out;
-  out.anchor_id = anchor_id;
+  out.anchor_id = anchor.id;
+  out.method = options_.triggers[trigger];
   out.initialized = initializer.initialized();
   out.n_used = static_cast<int>(initializer.range_m().size());
   out.pdop_estimate = initializer.pdop().Value();
@@ -67,8 +77,8 @@ AttemptOutcome AnchorBank::Outcome(int anchor_id, const estimator::AnchorInitial
   } else if (initializer.last_failed_solve()) {
     out.solve = initializer.last_failed_solve();  // triggered, but every solve failed
   }
-  if (truth) {
-    // The initializer's buffer is exactly the data of the solve (gated stops buffering at init).
+  if (const AnchorTruth* truth = Find(truth_, anchor.id)) {
+    // The initializer's buffer is exactly the data of the solve (online triggers stop buffering at init).
     out.pdop_true = estimator::TruePdop(initializer.p_world_tag(), truth->p_world_anchor);
     out.bias_aware_dop = estimator::BiasAwareDop(initializer.p_world_tag(), truth->p_world_anchor);
     if (out.initialized) out.error_m = (out.solve->p_world_anchor - truth->p_world_anchor).norm();
@@ -76,21 +86,35 @@ AttemptOutcome AnchorBank::Outcome(int anchor_id, const estimator::AnchorInitial
   return out;
 }
 
-std::vector<AttemptOutcome> AnchorBank::Finish(double t_end_s, const std::map<int, AnchorTruth>* truth) {
-  std::vector<AttemptOutcome> outcomes;
-  for (auto& [anchor_id, anchor] : anchors_) {
-    const std::optional<estimator::InitEvent> fixed_event = anchor.fixed.Finish(t_end_s);
-    const AnchorTruth* anchor_truth = nullptr;
-    if (truth) {
-      const auto found = truth->find(anchor_id);
-      if (found != truth->end()) anchor_truth = &found->second;
+std::vector<AttemptOutcome> AnchorBank::Run(std::span<const estimator::RangeSample> samples, double t_end_s,
+                                            const Trace& trace) {
+  std::vector<std::size_t> slots(samples.size());
+  for (std::size_t i = 0; i < samples.size(); ++i) slots[i] = Slot(samples[i].anchor_id);
+
+  std::vector<double> compute_s(options_.triggers.size(), 0.0);
+  for (std::size_t t = 0; t < options_.triggers.size(); ++t) {
+    const auto start = std::chrono::steady_clock::now();
+    for (std::size_t i = 0; i < samples.size(); ++i) {
+      Anchor& anchor = anchors_[slots[i]];
+      estimator::FeedResult fed = anchor.by_trigger[t].Feed(samples[i]);
+      if (fed.event) anchor.events[t] = fed.event;
+      if (t == 0 && trace) trace(i, fed);
     }
-    AttemptOutcome gated = Outcome(anchor_id, anchor.gated, anchor.gated_event, anchor_truth);
-    gated.method = InitStrategy::kPdopGated;
-    AttemptOutcome fixed = Outcome(anchor_id, anchor.fixed, fixed_event, anchor_truth);
-    fixed.method = InitStrategy::kFixedWindow;
-    outcomes.push_back(std::move(gated));
-    outcomes.push_back(std::move(fixed));
+    for (Anchor& anchor : anchors_) {
+      if (std::optional<estimator::InitEvent> event = anchor.by_trigger[t].Finish(t_end_s)) anchor.events[t] = event;
+    }
+    compute_s[t] = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  }
+
+  std::vector<const Anchor*> by_id;
+  for (const Anchor& anchor : anchors_) by_id.push_back(&anchor);
+  std::sort(by_id.begin(), by_id.end(), [](const Anchor* a, const Anchor* b) { return a->id < b->id; });
+  std::vector<AttemptOutcome> outcomes;
+  for (const Anchor* anchor : by_id) {
+    for (std::size_t t = 0; t < options_.triggers.size(); ++t) {
+      outcomes.push_back(Outcome(*anchor, t, anchor->events[t]));
+      outcomes.back().compute_s = compute_s[t] / static_cast<double>(anchors_.size());
+    }
   }
   return outcomes;
 }

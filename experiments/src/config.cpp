@@ -96,25 +96,47 @@ void VisitScenario(V& v, sim::ScenarioOptions& o) {
   v.Check(o);
 }
 
-bool ParseSolverName(std::string_view name, std::string* solver_name) {
-  if (!BuiltinSolvers().Knows(std::string(name))) return false;
-  *solver_name = name;
-  return true;
+// Names a registry knows (the built-ins; a program with parts of its own validates against its
+// registries when it builds them).
+template <typename Registry>
+auto NameIn(const Registry& registry) {
+  return [&registry](std::string_view name, std::string* value) {
+    if (!registry.Knows(std::string(name))) return false;
+    *value = name;
+    return true;
+  };
 }
+
+std::string Same(const std::string& name) { return name; }
 
 template <typename V>
 void VisitEstimator(V& v, estimator::InitializerOptions& o) {
-  v.Choice("solver", o.solver_name, ParseSolverName, [](const std::string& name) { return name; },
+  const estimator::Components& parts = BuiltinComponents();
+  v.Choice("solver", o.solver_name, NameIn(parts.solvers), Same,
            "anchorbench list shows them: ls_single, ls_double, lm_l2, lm_huber, lm_cauchy, lm_adaptive, nlopt:<ALGORITHM>");
+  v.ChoiceList("triggers", o.triggers, [&](const std::string& name) { return parts.triggers.Knows(name); },
+               "anchorbench list shows them: pdop_closest_point, pdop_ls, pdop_nls, pdop_true, fixed_window, "
+               "sample_count, timeout");
   v.Section("filter", [&](auto& s) {
-    s.Flag("enabled", o.filter.enabled);
-    s.Number("tau_m", o.filter.tau_m, kNonNegative);
-    s.Integer("reseed_after_rejections", o.filter.reseed_after_rejections, 0, 1000000);
+    s.Choice("kind", o.filter.kind, NameIn(parts.filters), Same, "none, consistency, ransac");
+    s.Number("tau_m", o.filter.consistency.tau_m, kNonNegative);
+    s.Integer("reseed_after_rejections", o.filter.consistency.reseed_after_rejections, 0, 1000000);
+    s.Section("ransac", [&](auto& r) {
+      estimator::RansacOptions& ransac = o.filter.ransac;
+      r.Number("success_probability", ransac.success_probability, {0.0, 1.0, true});
+      r.Integer("subset_size", ransac.subset_size, 6, 100000);
+      r.Number("outlier_fraction", ransac.outlier_fraction, {0.0, 0.99});
+      r.Number("inlier_threshold_m", ransac.inlier_threshold_m, kPositive);
+      r.Check(ransac);
+    });
   });
   v.Section("trigger", [&](auto& s) {
-    s.Number("pdop_threshold", o.pdop_threshold, kPositive);
+    s.Number("pdop_threshold", o.trigger.pdop_threshold, kPositive);
     s.Integer("min_samples", o.min_samples, 6, 100000000);
     s.Number("retry_growth", o.retry_growth, {1.0, 1e300, true});
+    s.Integer("sample_count", o.trigger.sample_count, 1, 100000000);
+    s.Number("timeout_s", o.trigger.timeout_s, kNonNegative);
+    s.Integer("evaluate_every", o.trigger.evaluate_every, 1, 100000000);
   });
   v.Section("ls", [&](auto& s) {
     estimator::LsOptions& ls = o.solver.ls;
@@ -122,14 +144,6 @@ void VisitEstimator(V& v, estimator::InitializerOptions& o) {
              "shortest_range, minimum_variance");
     s.Number("sigma_range_m", ls.sigma_range_m, kPositive);
     s.Number("sigma_position_m", ls.sigma_position_m, kNonNegative);
-  });
-  v.Section("ransac", [&](auto& s) {
-    estimator::RansacOptions& r = o.solver.ransac;
-    s.Number("success_probability", r.success_probability, {0.0, 1.0, true});
-    s.Integer("subset_size", r.subset_size, 6, 100000);
-    s.Number("outlier_fraction", r.outlier_fraction, {0.0, 0.99});
-    s.Number("inlier_threshold_m", r.inlier_threshold_m, kPositive);
-    s.Check(r);
   });
   v.Section("nls", [&](auto& s) {
     estimator::NlsOptions& n = o.solver.nls;

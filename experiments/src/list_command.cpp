@@ -5,19 +5,23 @@
 #include "anchorbench/experiments/commands.hpp"
 
 namespace anchorbench::experiments {
+namespace {
 
-int ListCommand() {
-  std::cout << "solvers (estimator.solver):\n";
-  for (const auto& [name, description] : BuiltinSolvers().List()) {
+template <typename Registry>
+void Print(const char* heading, const Registry& registry) {
+  std::cout << heading << '\n';
+  for (const auto& [name, description] : registry.List()) {
     std::cout << "  " << std::left << std::setw(20) << name << description << '\n';
   }
-  std::cout << "filters (estimator.filter):\n"
-            << "  " << std::setw(20) << "consistency" << "the triangle check of Sec. III-B (filter.enabled: true)\n"
-            << "  " << std::setw(20) << "none" << "every range accepted (filter.enabled: false)\n"
-            << "triggers:\n"
-            << "  " << std::setw(20) << "pdop_closest_point" << "gated: closest-point PDOP < trigger.pdop_threshold (Eq. (4))\n"
-            << "  " << std::setw(20) << "fixed_window" << "all of an anchor's data at the end of the run\n"
-            << "  " << std::setw(20) << "pdop_ls, pdop_nls, pdop_true" << " compared side by side by anchorbench pdop-study\n";
+}
+
+}  // namespace
+
+int ListCommand() {
+  const estimator::Components& parts = BuiltinComponents();
+  Print("solvers (estimator.solver):", parts.solvers);
+  Print("filters (estimator.filter.kind):", parts.filters);
+  Print("triggers (estimator.triggers, run side by side on the same data):", parts.triggers);
   return 0;
 }
 

@@ -18,25 +18,26 @@ std::string StatusOf(const AttemptOutcome& o) {
 int ResolveThreads(int requested) { return requested > 0 ? requested : omp_get_num_procs(); }
 
 std::vector<Attempt> RunRealization(const RowConfig& row, int row_index, std::uint64_t seed, int realization,
-                                    const estimator::SolverRegistry* solvers) {
+                                    const estimator::Components* components) {
   const sim::Scenario scenario = sim::GenerateScenario(row.scenario, seed, static_cast<std::uint64_t>(realization));
   std::map<int, AnchorTruth> truth;
-  AnchorBank bank(row.estimator, solvers);
-  for (const sim::SimAnchor& anchor : scenario.anchors) {
-    truth[anchor.id] = {anchor.p_world_anchor, anchor.bias_m};
-    bank.AddAnchor(anchor.id);
-  }
+  for (const sim::SimAnchor& anchor : scenario.anchors) truth[anchor.id] = {anchor.p_world_anchor, anchor.bias_m};
+  AnchorBank bank(row.estimator, seed, static_cast<std::uint64_t>(realization), &truth, components);
+  for (const sim::SimAnchor& anchor : scenario.anchors) bank.AddAnchor(anchor.id);
   // Ranges come in epoch order, so the reported tag position is the epoch's (no interpolation).
+  std::vector<estimator::RangeSample> samples;
+  samples.reserve(scenario.ranges.size());
   std::size_t epoch = 0;
   for (const sim::SimRange& range : scenario.ranges) {
     while (scenario.t_s[epoch] < range.t_s) ++epoch;
-    bank.Feed({range.t_s, range.tag_id, range.anchor_id, range.range_m, scenario.p_world_tag_reported[static_cast<std::size_t>(range.tag_id)][epoch]});
+    samples.push_back({range.t_s, range.tag_id, range.anchor_id, range.range_m,
+                       scenario.p_world_tag_reported[static_cast<std::size_t>(range.tag_id)][epoch]});
   }
   const double t_end_s = scenario.t_s.empty() ? 0.0 : scenario.t_s.back();
 
   std::vector<Attempt> attempts;
   const double sigma_m = row.scenario.ranging.sigma_range_m;
-  for (const AttemptOutcome& o : bank.Finish(t_end_s, &truth)) {
+  for (const AttemptOutcome& o : bank.Run(samples, t_end_s)) {
     Attempt a;
     a.row = row_index;
     a.realization = realization;
@@ -52,6 +53,7 @@ std::vector<Attempt> RunRealization(const RowConfig& row, int row_index, std::ui
       a.crlb_m = sigma_m * *o.bias_aware_dop;
     }
     a.status = StatusOf(o);
+    a.compute_s = o.compute_s;
     if (o.solve) a.alpha = o.solve->alpha;
     if (o.initialized) {
       const AnchorTruth& t = truth.at(o.anchor_id);
@@ -75,7 +77,7 @@ std::vector<Attempt> RunMonteCarlo(const ExperimentConfig& config, const MonteCa
   for (int task = 0; task < tasks; ++task) {
     const int row = task / realizations;
     per_task[static_cast<std::size_t>(task)] =
-        RunRealization(rows[static_cast<std::size_t>(row)], row, config.seed, task % realizations, options.solvers);
+        RunRealization(rows[static_cast<std::size_t>(row)], row, config.seed, task % realizations, options.components);
 #pragma omp critical(anchorbench_progress)
     {
       ++done;

@@ -6,8 +6,8 @@
 
 #include "anchorbench/estimator/anchor_solver.hpp"
 #include "anchorbench/estimator/closest_point_pdop.hpp"
-#include "anchorbench/estimator/consistency_filter.hpp"
 #include "anchorbench/estimator/pdop.hpp"
+#include "anchorbench/experiments/anchor_bank.hpp"
 #include "anchorbench/sim/scenario.hpp"
 
 namespace anchorbench::experiments {
@@ -25,7 +25,9 @@ RealizationResult StudyRealization(const ExperimentConfig& config, int realizati
   const estimator::AnchorSolver solver(config.estimator.solver);
   RealizationResult result;
   for (const sim::SimAnchor& anchor : scenario.anchors) {
-    estimator::ConsistencyFilter filter(config.estimator.filter);
+    // The online stage of the configured filter (a batch filter such as RANSAC accepts everything here).
+    const std::unique_ptr<estimator::OutlierFilter> filter =
+        BuiltinComponents().filters.Create(config.estimator.filter.kind, {config.estimator.filter, 0});
     estimator::ClosestPointPdop closest;
     estimator::TrueGeometry truth(anchor.p_world_anchor);
     std::vector<Eigen::Vector3d> p;
@@ -44,7 +46,7 @@ RealizationResult StudyRealization(const ExperimentConfig& config, int realizati
       while (scenario.t_s[epoch] < range.t_s) ++epoch;
       if (range.anchor_id != anchor.id || !(range.range_m > 0.0)) continue;
       const Eigen::Vector3d& p_tag = scenario.p_world_tag_reported[static_cast<std::size_t>(range.tag_id)][epoch];
-      if (!filter.Accept(range.tag_id, p_tag, range.range_m)) continue;
+      if (!filter->Accept({range.t_s, range.tag_id, range.anchor_id, range.range_m, p_tag})) continue;
       if (p.empty()) t_first = range.t_s;
       p.push_back(p_tag);
       d.push_back(range.range_m);

@@ -136,7 +136,7 @@ int PdopStudyCommand(const PdopStudyArgs& args) {
      << " samples where the theorem's precondition held, in " << s.ideal_below_precondition << " ("
      << percent(s.ideal_below_precondition, s.ideal_samples_precondition) << ").\n";
   WriteBins(md, study.checkpoints, args.bin_s);
-  WriteTriggers(md, study.checkpoints, config.estimator.pdop_threshold, anchors);
+  WriteTriggers(md, study.checkpoints, config.estimator.trigger.pdop_threshold, anchors);
 
   AtomicFile trace(out / "pdop_trace.csv");
   WriteTrace(trace.stream(), study.checkpoints);

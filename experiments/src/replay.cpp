@@ -16,7 +16,7 @@ std::vector<std::string> EstimateFields(const AttemptOutcome& o) {
   const bool has_estimate = o.initialized && o.solve;
   const Eigen::Vector3d p = has_estimate ? o.solve->p_world_anchor : Eigen::Vector3d::Zero();
   return {std::to_string(o.anchor_id),
-          std::string(MethodName(o.method)),
+          o.method,
           o.initialized ? "1" : "0",
           Optional(o.t_init_s),
           std::to_string(o.n_used),
@@ -36,22 +36,25 @@ constexpr const char* kEstimateColumns[] = {"anchor_id", "method", "initialized"
 
 ReplayResult Replay(const PoseTracks& poses, const std::vector<RangeRecord>& ranges,
                     const std::map<int, AnchorTruth>* truth, const estimator::InitializerOptions& options,
-                    const TraceSink& trace) {
+                    const TraceSink& trace, std::uint64_t seed) {
   ReplayResult result;
-  AnchorBank bank(options);
-  double t_end_s = 0.0;
+  std::vector<estimator::RangeSample> samples;
+  std::vector<const RangeRecord*> records;  // the record of each sample, for the trace
   for (const RangeRecord& range : ranges) {
     const std::optional<Eigen::Vector3d> p_world_tag = poses.At(range.tag_id, range.t_s);
     if (!p_world_tag) {
       if (result.ranges_skipped++ == 0) result.first_skipped_line = range.line;
       continue;
     }
-    const estimator::FeedResult fed = bank.Feed({range.t_s, range.tag_id, range.anchor_id, range.range_m, *p_world_tag});
-    if (trace) trace(range, fed);
-    t_end_s = range.t_s;
-    ++result.ranges_used;
+    samples.push_back({range.t_s, range.tag_id, range.anchor_id, range.range_m, *p_world_tag});
+    records.push_back(&range);
   }
-  result.outcomes = bank.Finish(t_end_s, truth);
+  result.ranges_used = static_cast<int>(samples.size());
+  const double t_end_s = samples.empty() ? 0.0 : samples.back().t_s;
+  AnchorBank bank(options, seed, 0, truth);
+  AnchorBank::Trace each;
+  if (trace) each = [&](std::size_t i, const estimator::FeedResult& fed) { trace(*records[i], fed); };
+  result.outcomes = bank.Run(samples, t_end_s, each);
   return result;
 }
 
@@ -66,7 +69,7 @@ void WriteEstimates(std::ostream& out, const std::vector<AttemptOutcome>& outcom
 }
 
 void PrintEstimates(std::ostream& out, const std::vector<AttemptOutcome>& outcomes) {
-  constexpr int kWidth[] = {10, 7, 12, 10, 8, 10, 10, 10, 10, 10, 10, 10};
+  constexpr int kWidth[] = {10, 20, 12, 10, 8, 10, 10, 10, 10, 10, 10, 10};
   for (std::size_t i = 0; i < std::size(kEstimateColumns); ++i) out << std::setw(kWidth[i]) << kEstimateColumns[i];
   out << '\n';
   for (const AttemptOutcome& o : outcomes) {

@@ -12,8 +12,8 @@
 namespace anchorbench::experiments {
 
 int ReplayCommand(const ReplayArgs& args) {
-  estimator::InitializerOptions options;
-  if (!args.config.empty()) options = LoadConfig(args.config).estimator;
+  ExperimentConfig config;
+  if (!args.config.empty()) config = LoadConfig(args.config);
   const PoseTracks poses = PoseTracks::Load(args.poses);
   const std::vector<RangeRecord> ranges = LoadRanges(args.ranges);
   std::map<int, AnchorTruth> truth;
@@ -27,7 +27,7 @@ int ReplayCommand(const ReplayArgs& args) {
     trace_file->stream() << kTraceHeader << '\n';
     trace = [&](const RangeRecord& r, const estimator::FeedResult& fed) { WriteTraceRow(trace_file->stream(), r, fed); };
   }
-  const ReplayResult result = Replay(poses, ranges, args.anchors.empty() ? nullptr : &truth, options, trace);
+  const ReplayResult result = Replay(poses, ranges, args.anchors.empty() ? nullptr : &truth, config.estimator, trace, config.seed);
   if (result.ranges_skipped > 0) {
     std::cerr << args.ranges << ": " << result.ranges_skipped
               << " ranges outside their tag's pose time span were skipped, never extrapolated (first at line "

@@ -28,8 +28,8 @@ int RunCommand(const RunArgs& args) {
       RunMonteCarlo(config, {threads, [&](int done, int total) { progress.Update(done, total); }});
   const double wall_time_s = progress.elapsed_s();
   progress.Finish(static_cast<int>(rows.size()) * config.realizations);
-  const std::vector<MethodSummary> summaries = Summarize(attempts, static_cast<int>(rows.size()),
-                                                         config.realizations, config.bootstrap_resamples, config.seed);
+  const std::vector<MethodSummary> summaries = Summarize(attempts, rows, config.realizations,
+                                                         config.bootstrap_resamples, config.seed);
 
   // Build every file first, then commit them together: an error leaves the old results intact.
   AtomicFile attempts_file(out / "attempts.csv");
@@ -40,11 +40,15 @@ int RunCommand(const RunArgs& args) {
   WriteSummaryMarkdown(markdown, summaries, rows, config);
   AtomicFile summary_md(out / "summary.md");
   summary_md.stream() << markdown.str();
+  AtomicFile timing(out / "timing.csv");
+  timing.stream() << kTimingColumns << '\n';
+  for (const MethodSummary& s : summaries) timing.stream() << TimingCsvFields(s, rows) << '\n';
   AtomicFile manifest(out / "manifest.json");
   manifest.stream() << ManifestJson(config, {args.config, threads, wall_time_s, {}});
   attempts_file.Commit();
   summary_csv.Commit();
   summary_md.Commit();
+  timing.Commit();
   manifest.Commit();
   if (!args.quiet) std::cout << markdown.str();
   return 0;

@@ -90,7 +90,7 @@ void WriteAttempts(std::ostream& out, const std::vector<Attempt>& attempts, cons
   for (const Attempt& a : attempts) {
     const bool has_error = a.error_m.has_value();
     out << rows[static_cast<std::size_t>(a.row)].name << ',' << a.realization << ',' << a.anchor_id << ','
-        << MethodName(a.method) << ',' << (a.initialized ? 1 : 0) << ',' << Optional(a.t_init_s) << ',' << a.n_used
+        << a.method << ',' << (a.initialized ? 1 : 0) << ',' << Optional(a.t_init_s) << ',' << a.n_used
         << ',' << FormatNumber(a.pdop_estimate) << ',' << Optional(a.pdop_true) << ',' << Optional(a.crlb_m) << ','
         << Optional(a.error_m) << ',' << (has_error ? FormatNumber(a.error_xyz_m.x()) : "") << ','
         << (has_error ? FormatNumber(a.error_xyz_m.y()) : "") << ','
@@ -101,7 +101,7 @@ void WriteAttempts(std::ostream& out, const std::vector<Attempt>& attempts, cons
 
 std::string SummaryCsvFields(const MethodSummary& s, const std::vector<RowConfig>& rows) {
   std::ostringstream out;
-  out << rows[static_cast<std::size_t>(s.row)].name << ',' << MethodName(s.method) << ',' << Optional(s.avg_m) << ','
+  out << rows[static_cast<std::size_t>(s.row)].name << ',' << s.method << ',' << Optional(s.avg_m) << ','
       << Optional(s.med_m) << ',' << s.init << ',' << s.gt1m << ',' << Optional(s.ratio_pct) << ','
       << Optional(s.avg_lo) << ',' << Optional(s.avg_hi) << ',' << Optional(s.ratio_lo) << ',' << Optional(s.ratio_hi);
   return out.str();
@@ -116,10 +116,9 @@ void WriteSummaryCsv(std::ostream& out, const std::vector<MethodSummary>& summar
     out << SummaryCsvFields(s, rows) << ',' << Optional(s.t_init_mean_s) << ',' << Optional(s.t_init_med_s);
     if (with_paper) {
       const std::optional<PaperRow>& paper = rows[static_cast<std::size_t>(s.row)].paper;
-      if (paper) {
-        const PaperCells& c = s.method == estimator::InitStrategy::kFixedWindow ? paper->fixed : paper->gated;
-        out << ',' << FormatNumber(c.avg_m) << ',' << FormatNumber(c.med_m) << ',' << FormatNumber(c.init) << ','
-            << FormatNumber(c.gt1m) << ',' << FormatNumber(c.ratio_pct);
+      if (const PaperCells* c = paper ? paper->For(s.method) : nullptr) {
+        out << ',' << FormatNumber(c->avg_m) << ',' << FormatNumber(c->med_m) << ',' << FormatNumber(c->init) << ','
+            << FormatNumber(c->gt1m) << ',' << FormatNumber(c->ratio_pct);
       } else {
         out << ",,,,,";
       }
@@ -130,7 +129,9 @@ void WriteSummaryCsv(std::ostream& out, const std::vector<MethodSummary>& summar
 
 void WriteSummaryMarkdown(std::ostream& out, const std::vector<MethodSummary>& summaries,
                           const std::vector<RowConfig>& rows, const ExperimentConfig& config) {
-  out << "# " << config.name << ": PDOP-gated vs fixed window\n\n"
+  std::string compared;
+  for (const std::string& trigger : rows.front().estimator.triggers) compared += (compared.empty() ? "" : " vs ") + trigger;
+  out << "# " << config.name << ": " << compared << "\n\n"
       << config.realizations << " realizations per row, seed " << config.seed
       << ". Errors over initialized attempts; [95% bootstrap interval over realizations].\n\n"
       << "| # | Method | Avg. (m) | Med. (m) | Init. | >1m | Ratio (%) | t_init mean / median (s) |\n"
@@ -139,8 +140,7 @@ void WriteSummaryMarkdown(std::ostream& out, const std::vector<MethodSummary>& s
     return lo ? " [" + FormatFixed(*lo, decimals) + ", " + FormatFixed(*hi, decimals) + "]" : std::string();
   };
   for (const MethodSummary& s : summaries) {
-    out << "| " << rows[static_cast<std::size_t>(s.row)].name << " | "
-        << (s.method == estimator::InitStrategy::kFixedWindow ? "Fixed" : "Our (gated)") << " | "
+    out << "| " << rows[static_cast<std::size_t>(s.row)].name << " | " << s.method << " | "
         << (s.avg_m ? FormatFixed(*s.avg_m, 3) + interval(s.avg_lo, s.avg_hi, 3) : "-") << " | "
         << (s.med_m ? FormatFixed(*s.med_m, 3) : "-") << " | " << s.init << " / " << s.attempts << " | " << s.gt1m << " | "
         << (s.ratio_pct ? FormatFixed(*s.ratio_pct, 2) + interval(s.ratio_lo, s.ratio_hi, 2) : "-") << " | "
@@ -156,14 +156,19 @@ void WriteSummaryMarkdown(std::ostream& out, const std::vector<MethodSummary>& s
   std::string conclusions;
   for (std::size_t r = 0; r < rows.size(); ++r) {
     if (!rows[r].paper) continue;
+    // The paper's two methods, if this row ran both.
     const MethodSummary* by_method[2] = {nullptr, nullptr};
-    for (const MethodSummary& s : summaries)
-      if (s.row == static_cast<int>(r)) by_method[s.method == estimator::InitStrategy::kPdopGated] = &s;
+    for (const MethodSummary& s : summaries) {
+      if (s.row != static_cast<int>(r)) continue;
+      if (s.method == kFixedWindowTrigger) by_method[0] = &s;
+      if (s.method == kPaperTrigger) by_method[1] = &s;
+    }
+    if (!by_method[0] || !by_method[1]) continue;
     for (int m = 0; m < 2; ++m) {
-      const PaperCells& paper = m == 0 ? rows[r].paper->fixed : rows[r].paper->gated;
       const MethodSummary& s = *by_method[m];
+      const PaperCells& paper = *rows[r].paper->For(s.method);
       bool within[5];
-      out << "| " << rows[r].name << " | " << (m == 0 ? "Fixed" : "Our (gated)") << " | "
+      out << "| " << rows[r].name << " | " << s.method << " | "
           << Compare(paper.avg_m, s.avg_m, 3, &within[0]) << " | " << Compare(paper.med_m, s.med_m, 3, &within[1])
           << " | " << Compare(paper.init, static_cast<double>(s.init), 0, &within[2]) << " | "
           << Compare(paper.gt1m, static_cast<double>(s.gt1m), 0, &within[3]) << " | "
@@ -183,6 +188,14 @@ void WriteSummaryMarkdown(std::ostream& out, const std::vector<MethodSummary>& s
   }
   out << "\n" << within_count << " of " << cells << " target cells (Avg, Med, Init, Ratio) within +-25%.\n\n"
       << "The paper's conclusions, row by row:\n" << conclusions;
+}
+
+std::string TimingCsvFields(const MethodSummary& s, const std::vector<RowConfig>& rows) {
+  std::ostringstream out;
+  out << rows[static_cast<std::size_t>(s.row)].name << ',' << s.method << ',' << s.attempts << ',' << s.init << ','
+      << FormatFixed(s.compute_s, 6) << ',' << (s.attempts ? FormatFixed(1e6 * s.compute_s / s.attempts, 1) : "") << ','
+      << (s.init ? FormatFixed(1e6 * s.compute_s / s.init, 1) : "");
+  return out.str();
 }
 
 std::string ManifestJson(const ExperimentConfig& config, const RunInfo& info) {

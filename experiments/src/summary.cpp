@@ -20,6 +20,7 @@ MethodSummary SummarizeOne(const std::vector<const Attempt*>& attempts, const st
   std::vector<double> errors, times;
   for (const Attempt* a : attempts) {
     ++s.attempts;
+    s.compute_s += a->compute_s;
     if (!a->initialized) continue;
     ++s.init;
     errors.push_back(*a->error_m);
@@ -68,11 +69,11 @@ std::optional<double> Percentile(std::vector<double> values, double q) {
   return i + 1 < values.size() ? values[i] + fraction * (values[i + 1] - values[i]) : values[i];
 }
 
-std::vector<MethodSummary> Summarize(const std::vector<Attempt>& attempts, int rows, int realizations,
-                                     int bootstrap_resamples, std::uint64_t seed) {
+std::vector<MethodSummary> Summarize(const std::vector<Attempt>& attempts, const std::vector<RowConfig>& rows,
+                                     int realizations, int bootstrap_resamples, std::uint64_t seed) {
   std::vector<MethodSummary> summaries;
-  for (int row = 0; row < rows; ++row) {
-    for (estimator::InitStrategy method : {estimator::InitStrategy::kFixedWindow, estimator::InitStrategy::kPdopGated}) {
+  for (int row = 0; row < static_cast<int>(rows.size()); ++row) {
+    for (const std::string& method : rows[static_cast<std::size_t>(row)].estimator.triggers) {
       std::vector<const Attempt*> selected;
       std::vector<RealizationSums> sums(static_cast<std::size_t>(realizations));
       for (const Attempt& a : attempts) {
@@ -84,8 +85,8 @@ std::vector<MethodSummary> Summarize(const std::vector<Attempt>& attempts, int r
         ++r.init;
         r.gt1m += *a.error_m > 1.0;
       }
-      // One bootstrap stream per (row, method), so each summary is reproducible on its own.
-      const auto substream = static_cast<std::uint32_t>(2 * row + (method == estimator::InitStrategy::kPdopGated));
+      // One bootstrap stream per (row, method), numbered in table order.
+      const auto substream = static_cast<std::uint32_t>(summaries.size());
       MethodSummary s = SummarizeOne(selected, sums, bootstrap_resamples,
                                      sim::RandomStream(seed, 0, sim::StreamId::kBootstrap, substream));
       s.row = row;

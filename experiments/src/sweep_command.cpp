@@ -3,7 +3,6 @@
 #include <iostream>
 #include <sstream>
 
-#include "anchorbench/experiments/anchor_bank.hpp"
 #include "anchorbench/experiments/atomic_file.hpp"
 #include "anchorbench/experiments/commands.hpp"
 #include "anchorbench/experiments/config.hpp"
@@ -83,8 +82,7 @@ int SweepCommand(const SweepArgs& args) {
       index %= stride;
     }
     result.rows = RowsOf(config);
-    result.summaries = Summarize(attempts, static_cast<int>(result.rows.size()), config.realizations,
-                                 config.bootstrap_resamples, config.seed);
+    result.summaries = Summarize(attempts, result.rows, config.realizations, config.bootstrap_resamples, config.seed);
     tasks_done += static_cast<int>(result.rows.size()) * config.realizations;
     results.push_back(std::move(result));
   }
@@ -94,6 +92,9 @@ int SweepCommand(const SweepArgs& args) {
   AtomicFile csv(out / "sweep.csv");
   for (const SweepAxis& axis : axes) csv.stream() << axis.key << ',';
   csv.stream() << kSummaryColumns << '\n';
+  AtomicFile timing(out / "timing.csv");
+  for (const SweepAxis& axis : axes) timing.stream() << axis.key << ',';
+  timing.stream() << kTimingColumns << '\n';
   std::ostringstream md;
   md << "# " << base.name << ": sweep\n\n" << configs.front().realizations << " realizations per point and row, seed "
      << configs.front().seed << ".\n\n|";
@@ -105,9 +106,11 @@ int SweepCommand(const SweepArgs& args) {
     for (const MethodSummary& s : result.summaries) {
       for (const std::string& value : result.values) csv.stream() << value << ',';
       csv.stream() << SummaryCsvFields(s, result.rows) << '\n';
+      for (const std::string& value : result.values) timing.stream() << value << ',';
+      timing.stream() << TimingCsvFields(s, result.rows) << '\n';
       md << '|';
       for (const std::string& value : result.values) md << ' ' << value << " |";
-      md << ' ' << result.rows[static_cast<std::size_t>(s.row)].name << " | " << MethodName(s.method) << " | "
+      md << ' ' << result.rows[static_cast<std::size_t>(s.row)].name << " | " << s.method << " | "
          << Cell(s.avg_m, 3) << " | " << Cell(s.med_m, 3) << " | " << s.init << " | " << s.gt1m << " | "
          << Cell(s.ratio_pct, 2) << " |\n";
     }
@@ -123,6 +126,7 @@ int SweepCommand(const SweepArgs& args) {
   AtomicFile manifest(out / "manifest.json");
   manifest.stream() << ManifestJson(base, {args.config, threads, wall_time_s, axis_text});
   csv.Commit();
+  timing.Commit();
   markdown.Commit();
   manifest.Commit();
   if (!args.quiet) std::cout << md.str();

@@ -24,7 +24,7 @@ TEST(Config, ShippedConfigsLoad) {
   const ExperimentConfig config = LoadConfig(std::string(ANCHORBENCH_CONFIG_DIR) + "/tunnel.yaml");
   EXPECT_EQ(config.name, "tunnel");
   EXPECT_EQ(config.scenario.tunnel.num_anchors, 30);
-  EXPECT_DOUBLE_EQ(config.estimator.pdop_threshold, 1.0);
+  EXPECT_DOUBLE_EQ(config.estimator.trigger.pdop_threshold, 1.0);
 }
 
 TEST(Config, AbsentKeysKeepDefaults) {
@@ -38,11 +38,30 @@ TEST(Config, UnknownKeyNamesItsPath) {
   EXPECT_NE(ErrorFor("estimatr: {}\n").find("key 'estimatr': unknown key"), std::string::npos);
 }
 
+TEST(Config, ComponentNamesAreCheckedAgainstTheRegistries) {
+  EXPECT_EQ(ErrorFor("estimator:\n  triggers: [pdop_true, pdop_ls, timeout]\n  filter: {kind: ransac}\n"), "");
+  std::string error = ErrorFor("estimator:\n  triggers: [fixed_window, pdop_best]\n");
+  EXPECT_NE(error.find("key 'estimator.triggers': unknown value 'pdop_best' (choices: anchorbench list"), std::string::npos)
+      << error;
+  error = ErrorFor("estimator:\n  triggers: [timeout, timeout]\n");
+  EXPECT_NE(error.find("key 'estimator.triggers': 'timeout' is listed twice"), std::string::npos) << error;
+  error = ErrorFor("estimator:\n  triggers: []\n");
+  EXPECT_NE(error.find("key 'estimator.triggers': expected at least one name"), std::string::npos) << error;
+  error = ErrorFor("estimator:\n  filter: {kind: median}\n");
+  EXPECT_NE(error.find("key 'estimator.filter.kind': unknown value 'median' (choices: none, consistency, ransac)"),
+            std::string::npos)
+      << error;
+  error = ErrorFor("estimator:\n  filter: {enabled: false}\n");  // the switch that filter.kind replaced
+  EXPECT_NE(error.find("key 'estimator.filter.enabled': unknown key"), std::string::npos) << error;
+  error = ErrorFor("estimator:\n  trigger: {evaluate_every: 0}\n");
+  EXPECT_NE(error.find("key 'estimator.trigger.evaluate_every'"), std::string::npos) << error;
+}
+
 TEST(Config, WrongTypeNamesItsPath) {
   const std::string error = ErrorFor("scenario:\n  tunnel:\n    num_anchors: many\n");
   EXPECT_NE(error.find("key 'scenario.tunnel.num_anchors': expected an integer, got 'many'"), std::string::npos)
       << error;
-  EXPECT_NE(ErrorFor("estimator:\n  filter:\n    enabled: maybe\n").find("expected true or false"), std::string::npos);
+  EXPECT_NE(ErrorFor("estimator:\n  nls:\n    l2_warm_start: maybe\n").find("expected true or false"), std::string::npos);
   EXPECT_NE(ErrorFor("scenario: 5\n").find("key 'scenario': expected a mapping"), std::string::npos);
 }
 
@@ -91,7 +110,7 @@ TEST(Config, OverridesAreValidatedLikeTheFile) {
   const std::string path = dir.Write("t.yaml", "scenario:\n  tunnel: {width_m: 8}\n");
   const ExperimentConfig config = LoadConfig(path, {"scenario.tunnel.width_m=12", "estimator.trigger.pdop_threshold=0.5"});
   EXPECT_EQ(config.scenario.tunnel.width_m, 12.0);
-  EXPECT_EQ(config.estimator.pdop_threshold, 0.5);
+  EXPECT_EQ(config.estimator.trigger.pdop_threshold, 0.5);
   auto error_for = [&](const std::string& assignment) {
     try {
       LoadConfig(path, {assignment});

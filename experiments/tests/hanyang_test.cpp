@@ -1,3 +1,4 @@
+#include "anchorbench/experiments/config.hpp"
 #include "anchorbench/experiments/hanyang.hpp"
 
 #include <filesystem>
@@ -62,13 +63,13 @@ TEST(Hanyang, RealLosCaseReplays) {
   EXPECT_EQ(summary.anchors, 4);
   EXPECT_GT(summary.ranges, 8000);
   estimator::InitializerOptions options;
-  options.filter.tau_m = 0.2;
+  options.filter.consistency.tau_m = 0.2;
   const auto truth = LoadAnchors((dir.path() / "anchors.csv").string());
   const ReplayResult result = Replay(PoseTracks::Load((dir.path() / "poses.csv").string()),
                                      LoadRanges((dir.path() / "ranges.csv").string()), &truth, options);
   ASSERT_EQ(result.outcomes.size(), 8u);
   for (const AttemptOutcome& o : result.outcomes) {
-    if (o.method == estimator::InitStrategy::kFixedWindow) {
+    if (o.method == kFixedWindowTrigger) {
       ASSERT_TRUE(o.initialized);
       EXPECT_LT(*o.error_m, 1.5);  // the dataset README: a naive fixed window lands at ~0.6-0.7 m
     }

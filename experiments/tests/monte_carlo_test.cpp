@@ -34,8 +34,7 @@ ExperimentConfig SmallTable() {
 std::string Outputs(const ExperimentConfig& config, int threads) {
   const std::vector<Attempt> attempts = RunMonteCarlo(config, {threads, nullptr});
   const auto rows = RowsOf(config);
-  const auto summaries = Summarize(attempts, static_cast<int>(rows.size()), config.realizations,
-                                   config.bootstrap_resamples, config.seed);
+  const auto summaries = Summarize(attempts, rows, config.realizations, config.bootstrap_resamples, config.seed);
   std::ostringstream out;
   WriteAttempts(out, attempts, rows);
   WriteSummaryCsv(out, summaries, rows);
@@ -48,6 +47,30 @@ TEST(MonteCarlo, BitIdenticalForAnyThreadCount) {
   const std::string one = Outputs(config, 1);
   EXPECT_EQ(one, Outputs(config, 2));
   EXPECT_EQ(one, Outputs(config, 3));  // more threads than cores, uneven split
+}
+
+// Every trigger and filter on the same trials, with RANSAC and a stochastic part seeded per anchor.
+TEST(MonteCarlo, AllTriggersAndFiltersAreBitIdenticalForAnyThreadCount) {
+  ExperimentConfig config = SmallTable();
+  config.realizations = 3;
+  const std::vector<std::string> triggers = {"pdop_closest_point", "pdop_ls", "pdop_nls", "pdop_true",
+                                             "fixed_window", "sample_count", "timeout"};
+  for (RowConfig& row : config.rows) {
+    row.estimator.triggers = triggers;
+    row.estimator.solver_name = "lm_l2";
+    row.estimator.filter.kind = "ransac";
+    row.estimator.filter.ransac.subset_size = 20;  // 20 subsets: a quick RANSAC
+    row.estimator.filter.ransac.outlier_fraction = 0.1;
+    row.estimator.filter.ransac.success_probability = 0.9;
+  }
+  const std::string one = Outputs(config, 1);
+  EXPECT_EQ(one, Outputs(config, 2));
+  const std::vector<Attempt> attempts = RunMonteCarlo(config, {2, nullptr});
+  ASSERT_EQ(attempts.size(), 2u * 3u * 4u * triggers.size());
+  for (std::size_t i = 0; i < attempts.size(); ++i) {
+    EXPECT_EQ(attempts[i].method, triggers[i % triggers.size()]);  // anchor by anchor, in list order
+    EXPECT_GE(attempts[i].compute_s, 0.0);
+  }
 }
 
 TEST(MonteCarlo, EveryAnchorIsOneAttemptPerStrategyAndNothingIsNan) {
@@ -77,7 +100,7 @@ TEST(MonteCarlo, ExactlyStraightRunsRecordDegenerateStatusesAndNeverAbort) {
   const std::vector<Attempt> attempts = RunMonteCarlo(config, {1, nullptr});
   int degenerate = 0;
   for (const Attempt& a : attempts) {
-    if (a.method == estimator::InitStrategy::kPdopGated) {
+    if (a.method == kPaperTrigger) {
       EXPECT_FALSE(a.initialized);  // the PDOP of a straight line is infinite
     }
     degenerate += a.status == "degenerate_geometry";
@@ -106,7 +129,7 @@ TEST(MonteCarlo, TheConfiguredSolverIsTheOneThatRuns) {
 Attempt Initialized(int realization, double error_m) {
   Attempt a;
   a.realization = realization;
-  a.method = estimator::InitStrategy::kFixedWindow;
+  a.method = kFixedWindowTrigger;
   a.initialized = true;
   a.error_m = error_m;
   a.status = "converged";
@@ -119,11 +142,11 @@ TEST(Summary, TableColumnsWorkedByHand) {
   std::vector<Attempt> attempts = {Initialized(0, 0.1), Initialized(0, 0.2), Initialized(1, 0.3), Initialized(1, 2.0)};
   Attempt missed;
   missed.realization = 1;
-  missed.method = estimator::InitStrategy::kFixedWindow;
+  missed.method = kFixedWindowTrigger;
   missed.status = "too_few_samples";
   attempts.push_back(missed);
-  const auto summaries = Summarize(attempts, 1, 2, 500, 1);
-  ASSERT_EQ(summaries.size(), 2u);  // fixed, then gated
+  const auto summaries = Summarize(attempts, {RowConfig{}}, 2, 500, 1);  // default triggers
+  ASSERT_EQ(summaries.size(), 2u);  // fixed_window, then pdop_closest_point
   const MethodSummary& fixed = summaries[0];
   EXPECT_EQ(fixed.attempts, 5);
   EXPECT_EQ(fixed.init, 4);

@@ -14,7 +14,7 @@ ExperimentConfig OneAnchor() {
   config.scenario.tunnel.num_anchors = 1;
   config.scenario.trajectory.speed_mps = 1.0;
   config.scenario.ranging.sigma_range_m = 0.15;
-  config.estimator.filter.tau_m = 0.3;
+  config.estimator.filter.consistency.tau_m = 0.3;
   config.estimator.solver.nls.kernel_scale_m = 0.15;
   return config;
 }

@@ -64,9 +64,9 @@ TEST(ConfigFiles, BaseInheritanceOnlyRowsAndOverridesThatReachRows) {
 
   // An override of a base key also replaces the rows' own values of it.
   const ExperimentConfig swept = LoadConfig(derived, {"estimator.filter.tau_m=0.9"});
-  EXPECT_EQ(swept.estimator.filter.tau_m, 0.9);
-  EXPECT_EQ(swept.rows[0].estimator.filter.tau_m, 0.9);  // row a had its own 0.3
-  EXPECT_EQ(swept.rows[1].estimator.filter.tau_m, 0.9);
+  EXPECT_EQ(swept.estimator.filter.consistency.tau_m, 0.9);
+  EXPECT_EQ(swept.rows[0].estimator.filter.consistency.tau_m, 0.9);  // row a had its own 0.3
+  EXPECT_EQ(swept.rows[1].estimator.filter.consistency.tau_m, 0.9);
 
   const std::string unknown_row = dir.Write("bad.yaml", "base: table.yaml\nonly_rows: [c]\n");
   EXPECT_THROW(LoadConfig(unknown_row), InputError);

@@ -9,23 +9,11 @@
 
 namespace anchorbench::estimator {
 
-// RANSAC pre-filtering (ransac:<SOLVER>): n = log(1 - p) / log(1 - (1 - e)^s) subsets.
-struct RansacOptions {
-  double success_probability = 0.95;  // p: of drawing at least one outlier-free subset
-  int subset_size = 60;               // s: samples per subset (the paper's Table II: 60)
-  double outlier_fraction = 0.1;      // e: assumed share of outliers
-  double inlier_threshold_m = 0.3;    // |residual| below this counts as an inlier
-
-  int Iterations() const;
-  bool IsValid(std::string* why) const;
-};
-
 struct AnchorSolverOptions {
   LsOptions ls;
   NlsOptions nls;
-  RansacOptions ransac;
 
-  bool IsValid(std::string* why) const { return ls.IsValid(why) && nls.IsValid(why) && ransac.IsValid(why); }
+  bool IsValid(std::string* why) const { return ls.IsValid(why) && nls.IsValid(why); }
 };
 
 // Sec. III-D in full: the double-difference LS coarse solution seeds the NLS refinement.

@@ -5,10 +5,11 @@
 
 #include <Eigen/Core>
 
+#include "anchorbench/estimator/outlier_filter.hpp"
+
 namespace anchorbench::estimator {
 
 struct ConsistencyFilterOptions {
-  bool enabled = true;
   // Sec. III-B: accept d_k if |d_k - d_prev| <= ||p_k - p_prev|| + tau. The paper uses tau ~ 2 sigma_d.
   double tau_m = 0.2;
   // After this many consecutive rejections the reference itself is taken to be the outlier
@@ -22,12 +23,13 @@ struct ConsistencyFilterOptions {
 // Online triangle-inequality consistency check of Sec. III-B (Fig. 3). One instance per anchor;
 // it keeps the last accepted sample of every tag, so each tag/anchor pair is checked on its own.
 // The first sample of a pair has nothing to compare with and is accepted.
-class ConsistencyFilter {
+class ConsistencyFilter : public OutlierFilter {
  public:
   explicit ConsistencyFilter(const ConsistencyFilterOptions& options = {}) : options_(options) {}
 
   // Returns true if the range is consistent with the last accepted range of the same tag.
   bool Accept(int tag_id, const Eigen::Vector3d& p_world_tag, double range_m);
+  bool Accept(const RangeSample& sample) override { return Accept(sample.tag_id, sample.p_world_tag, sample.range_m); }
 
  private:
   struct Reference {

@@ -5,6 +5,7 @@
 #include <string_view>
 
 #include "anchorbench/estimator/solve_result.hpp"
+#include "anchorbench/estimator/solver.hpp"
 
 namespace anchorbench::estimator {
 
@@ -33,6 +34,18 @@ struct LsOptions {
 // positions taken relative to p_j so the squared norms do not cancel far from the origin.
 SolveResult SolveDoubleDifferenceLs(std::span<const Eigen::Vector3d> p_world_tag,
                                     std::span<const double> range_m, const LsOptions& options = {});
+
+// The same behind the Solver interface (ls_double, and the pdop_ls trigger's estimate).
+class DoubleDifferenceLsSolver : public Solver {
+ public:
+  explicit DoubleDifferenceLsSolver(const LsOptions& options = {}) : options_(options) {}
+  SolveResult Solve(std::span<const Eigen::Vector3d> p_world_tag, std::span<const double> range_m) const override {
+    return SolveDoubleDifferenceLs(p_world_tag, range_m, options_);
+  }
+
+ private:
+  LsOptions options_;
+};
 
 // The single-difference LS of the authors' earlier library ("SINGLE", constant bias):
 // d_k^2 - ||p_k||^2 = -2 p_k^T p_A + 2 d_k gamma + (||p_A||^2 - gamma^2), linear in

@@ -2,11 +2,23 @@
 
 #include <cstdint>
 #include <memory>
+#include <string>
 
 #include "anchorbench/estimator/anchor_solver.hpp"
 #include "anchorbench/estimator/solver.hpp"
 
 namespace anchorbench::estimator {
+
+// RANSAC pre-filtering (filter kind ransac): n = log(1 - p) / log(1 - (1 - e)^s) subsets.
+struct RansacOptions {
+  double success_probability = 0.95;  // p: of drawing at least one outlier-free subset
+  int subset_size = 60;               // s: samples per subset (the paper's Table II: 60)
+  double outlier_fraction = 0.1;      // e: assumed share of outliers
+  double inlier_threshold_m = 0.3;    // |residual| below this counts as an inlier
+
+  int Iterations() const;
+  bool IsValid(std::string* why) const;
+};
 
 // RANSAC around a solver, as the baseline of the paper's Table II (after Jung et al. 2024):
 // options.Iterations() random subsets of subset_size samples, each solved by `inner`; the subset

@@ -1,66 +1,79 @@
 #pragma once
 
+#include <cstdint>
+#include <functional>
 #include <map>
 #include <optional>
-#include <string_view>
+#include <span>
+#include <string>
 #include <vector>
 
 #include "anchorbench/estimator/anchor_initializer.hpp"
-#include "anchorbench/estimator/solver_registry.hpp"
+#include "anchorbench/estimator/components.hpp"
 #include "anchorbench/experiments/recorded_data.hpp"
 
 namespace anchorbench::experiments {
 
-std::string_view MethodName(estimator::InitStrategy strategy);  // "gated" | "fixed"
+// The built-in solvers, filters and triggers, registered once.
+const estimator::Components& BuiltinComponents();
 
-// The built-in solvers (ls_single, ..., nlopt:<ALGORITHM>), registered once.
-const estimator::SolverRegistry& BuiltinSolvers();
-
-// One anchor, one strategy: what happened, and how good it was when the truth is known.
+// One anchor, one trigger: what happened, and how good it was when the truth is known.
 struct AttemptOutcome {
   int anchor_id = 0;
-  estimator::InitStrategy method = estimator::InitStrategy::kPdopGated;
+  std::string method;               // the trigger's name (fixed_window, pdop_closest_point, ...)
   bool initialized = false;
-  std::optional<double> t_init_s;   // when the solve ran (gated: trigger; fixed: end of data)
+  std::optional<double> t_init_s;   // when the solve ran (online: the trigger; fixed: end of data)
   int n_used = 0;                   // samples in the solve, or accepted so far if none ran
   double pdop_estimate = 0.0;       // closest-point PDOP at that moment (+inf if undefined)
   std::optional<double> pdop_true;  // Eq. (2)-(3) at the true anchor on the same samples
   std::optional<double> bias_aware_dop;  // sigma_d times this is the CRLB on the position error
   std::optional<estimator::SolveResult> solve;  // absent if the solver never ran
   std::optional<double> error_m;    // ||estimate - truth|| for initialized attempts with truth
+  // Wall time of this trigger's pass over all of the run's samples (filter, PDOP, trigger, solves)
+  // divided by the number of anchors: sums to the trigger's total. Varies from run to run, so it
+  // goes to timing files only, never into the deterministic tables.
+  double compute_s = 0.0;
 };
 
-// A gated and a fixed-window initializer for every anchor that shows up, fed from one time-ordered
-// stream of samples (simulated or recorded).
+// For every anchor, one initializer per trigger in options.triggers, all fed the same
+// time-ordered samples (simulated or recorded).
 class AnchorBank {
  public:
-  // The solver named options.solver_name comes from `registry` (default: the built-ins).
-  explicit AnchorBank(const estimator::InitializerOptions& options, const estimator::SolverRegistry* registry = nullptr);
+  // Parts come from `components` (default: the built-ins). Anchor a's random parts are seeded by
+  // the stream (seed, realization, kSolver, a). `truth` (may be null) serves the pdop_true oracle
+  // and the evaluation columns. Throws InputError if a part cannot be built for an anchor.
+  AnchorBank(const estimator::InitializerOptions& options, std::uint64_t seed, std::uint64_t realization,
+             const std::map<int, AnchorTruth>* truth, const estimator::Components* components = nullptr);
 
   // Makes the anchor known before its first range, so it is reported even if none arrives.
   void AddAnchor(int anchor_id);
 
-  // Feeds both strategies; returns the gated initializer's view (for traces).
-  estimator::FeedResult Feed(const estimator::RangeSample& sample);
+  // Called for every sample with the first trigger's view of it (filter and closest-point PDOP
+  // are the same for every trigger).
+  using Trace = std::function<void(std::size_t sample_index, const estimator::FeedResult&)>;
 
-  // End of data at t_end_s: the fixed windows solve. One outcome per anchor and strategy, anchor
-  // ids ascending, gated before fixed. `truth` (optional) adds pdop_true and error_m.
-  std::vector<AttemptOutcome> Finish(double t_end_s, const std::map<int, AnchorTruth>* truth);
+  // Runs each trigger's initializers over all samples, one trigger after the other (so each
+  // trigger's compute time is measured without clock reads per sample), then ends the data at
+  // t_end_s. One outcome per anchor and trigger: anchor ids ascending, triggers in list order.
+  std::vector<AttemptOutcome> Run(std::span<const estimator::RangeSample> samples, double t_end_s,
+                                  const Trace& trace = nullptr);
 
  private:
   struct Anchor {
-    estimator::AnchorInitializer gated;
-    estimator::AnchorInitializer fixed;
-    std::optional<estimator::InitEvent> gated_event;
+    int id = 0;
+    std::vector<estimator::AnchorInitializer> by_trigger;
+    std::vector<std::optional<estimator::InitEvent>> events;
   };
-  Anchor& Find(int anchor_id);
-  AttemptOutcome Outcome(int anchor_id, const estimator::AnchorInitializer& initializer,
-                         const std::optional<estimator::InitEvent>& event, const AnchorTruth* truth) const;
+  std::size_t Slot(int anchor_id);
+  AttemptOutcome Outcome(const Anchor& anchor, std::size_t trigger, std::optional<estimator::InitEvent> event) const;
 
-  estimator::InitializerOptions gated_options_;
-  estimator::InitializerOptions fixed_options_;
-  std::shared_ptr<const estimator::Solver> solver_;  // shared by all anchors: Solve is const
-  std::map<int, Anchor> anchors_;
+  estimator::InitializerOptions options_;
+  std::uint64_t seed_;
+  std::uint64_t realization_;
+  const std::map<int, AnchorTruth>* truth_;
+  const estimator::Components* components_;
+  std::map<int, std::size_t> slot_of_anchor_;
+  std::vector<Anchor> anchors_;  // in order of first appearance
 };
 
 }  // namespace anchorbench::experiments

@@ -18,9 +18,19 @@ struct PaperCells {
   double gt1m = 0.0;
   double ratio_pct = 0.0;
 };
+// The triggers of the paper's two methods (Table I's "Fixed" and "Our").
+constexpr const char* kFixedWindowTrigger = "fixed_window";
+constexpr const char* kPaperTrigger = "pdop_closest_point";
+
 struct PaperRow {
-  PaperCells fixed;
-  PaperCells gated;
+  PaperCells fixed;  // kFixedWindowTrigger
+  PaperCells gated;  // kPaperTrigger
+  // The cells for a trigger, or nullptr if the paper has none for it.
+  const PaperCells* For(const std::string& trigger) const {
+    if (trigger == kFixedWindowTrigger) return &fixed;
+    if (trigger == kPaperTrigger) return &gated;
+    return nullptr;
+  }
 };
 
 // One row of a Monte Carlo table: the base scenario and estimator with this row's overrides.

@@ -6,7 +6,7 @@
 #include <vector>
 
 #include "anchorbench/estimator/solve_result.hpp"
-#include "anchorbench/estimator/solver_registry.hpp"
+#include "anchorbench/estimator/components.hpp"
 #include "anchorbench/experiments/config.hpp"
 
 namespace anchorbench::experiments {
@@ -16,7 +16,7 @@ struct Attempt {
   int row = 0;
   int realization = 0;
   int anchor_id = 0;
-  estimator::InitStrategy method = estimator::InitStrategy::kPdopGated;
+  std::string method;  // the trigger's name
   bool initialized = false;
   std::optional<double> t_init_s;
   int n_used = 0;
@@ -29,6 +29,7 @@ struct Attempt {
   std::optional<double> bias_error_m;
   std::optional<double> alpha;
   std::string status;  // the solver's status, or not_triggered / no_data
+  double compute_s = 0.0;  // AttemptOutcome::compute_s: timing files only, never attempts.csv
 };
 
 // The OpenMP thread count for a request: 0 means every core.
@@ -38,9 +39,9 @@ struct MonteCarloOptions {
   int threads = 1;
   // Called from one thread at a time with (tasks done, tasks total); tasks are (row, realization).
   std::function<void(int, int)> progress;
-  // Where estimator.solver names are looked up (a registry with your own solvers); default: the
-  // built-ins.
-  const estimator::SolverRegistry* solvers = nullptr;
+  // Where solver, filter and trigger names are looked up (registries with your own parts);
+  // default: the built-ins.
+  const estimator::Components* components = nullptr;
 };
 
 // Runs every row's realizations (parallel over (row, realization) with OpenMP; realization k of
@@ -50,6 +51,6 @@ std::vector<Attempt> RunMonteCarlo(const ExperimentConfig& config, const MonteCa
 
 // The attempts of one realization of one row (what each task computes).
 std::vector<Attempt> RunRealization(const RowConfig& row, int row_index, std::uint64_t seed, int realization,
-                                    const estimator::SolverRegistry* solvers = nullptr);
+                                    const estimator::Components* components = nullptr);
 
 }  // namespace anchorbench::experiments

@@ -1,5 +1,6 @@
 #pragma once
 
+#include <cstdint>
 #include <functional>
 #include <map>
 #include <ostream>
@@ -22,9 +23,11 @@ using TraceSink = std::function<void(const RangeRecord&, const estimator::FeedRe
 
 // Runs the online initializers over recorded ranges in time order, tag positions interpolated at
 // each range time. Ranges outside the pose span are skipped and counted, never extrapolated.
+// `seed` keys the random parts of the estimator (RANSAC, stochastic NLopt) as in a simulation's
+// realization 0. Throws InputError if a trigger cannot run (pdop_true without truth).
 ReplayResult Replay(const PoseTracks& poses, const std::vector<RangeRecord>& ranges,
                     const std::map<int, AnchorTruth>* truth, const estimator::InitializerOptions& options,
-                    const TraceSink& trace = nullptr);
+                    const TraceSink& trace = nullptr, std::uint64_t seed = 1);
 
 // estimates.csv: anchor_id,method,initialized,t_init,n_used,pdop_est,pdop_true,x,y,z,bias,err_m
 void WriteEstimates(std::ostream& out, const std::vector<AttemptOutcome>& outcomes);

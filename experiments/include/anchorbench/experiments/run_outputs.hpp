@@ -25,6 +25,11 @@ void WriteSummaryCsv(std::ostream& out, const std::vector<MethodSummary>& summar
 void WriteSummaryMarkdown(std::ostream& out, const std::vector<MethodSummary>& summaries,
                           const std::vector<RowConfig>& rows, const ExperimentConfig& config);
 
+// timing.csv: the wall time the triggers' passes took on this machine. It varies from run to run
+// (and with the thread count), so it stays out of the tables above, which repeat byte for byte.
+constexpr const char* kTimingColumns = "row,method,attempts,init,compute_s,us_per_attempt,us_per_init";
+std::string TimingCsvFields(const MethodSummary& summary, const std::vector<RowConfig>& rows);
+
 struct RunInfo {
   std::string config_path;
   int threads = 1;

@@ -2,16 +2,17 @@
 
 #include <cstdint>
 #include <optional>
+#include <string>
 #include <vector>
 
 #include "anchorbench/experiments/monte_carlo.hpp"
 
 namespace anchorbench::experiments {
 
-// Table I's columns for one row and strategy, over its initialized attempts.
+// Table I's columns for one row and trigger, over its initialized attempts.
 struct MethodSummary {
   int row = 0;
-  estimator::InitStrategy method = estimator::InitStrategy::kFixedWindow;
+  std::string method;  // the trigger's name
   int attempts = 0;
   int init = 0;                      // initialized attempts
   std::optional<double> avg_m;       // mean error (absent when init = 0: never NaN)
@@ -22,13 +23,15 @@ struct MethodSummary {
   // 95% percentile intervals from a bootstrap over realizations (whole realizations are resampled:
   // the anchors of one realization share a trajectory, so they are not independent).
   std::optional<double> avg_lo, avg_hi, ratio_lo, ratio_hi;
+  double compute_s = 0.0;  // summed Attempt::compute_s (timing files only)
 };
 
 // The q-quantile (0..1) with linear interpolation; absent for no values.
 std::optional<double> Percentile(std::vector<double> values, double q);
 
-// Summaries ordered by row, then fixed before gated (the paper's order).
-std::vector<MethodSummary> Summarize(const std::vector<Attempt>& attempts, int rows, int realizations,
-                                     int bootstrap_resamples, std::uint64_t seed);
+// Summaries ordered by row, then by the row's trigger list (estimator.triggers; the default puts
+// fixed_window first, the paper's order). `rows` are the ones the attempts were run on.
+std::vector<MethodSummary> Summarize(const std::vector<Attempt>& attempts, const std::vector<RowConfig>& rows,
+                                     int realizations, int bootstrap_resamples, std::uint64_t seed);
 
 }  // namespace anchorbench::experiments

@@ -39,6 +39,18 @@ class YamlSection {
   }
   void Text(std::string_view key, std::string& value);
   void TextList(std::string_view key, std::vector<std::string>& values);
+  // A non-empty list of distinct names, each accepted by known(name).
+  template <typename Known>
+  void ChoiceList(std::string_view key, std::vector<std::string>& values, Known known, std::string_view choices) {
+    if (!Has(key)) return;
+    TextList(key, values);
+    if (values.empty()) Fail(key, "expected at least one name (choices: " + std::string(choices) + ")");
+    for (std::size_t i = 0; i < values.size(); ++i) {
+      if (!known(values[i])) Fail(key, "unknown value '" + values[i] + "' (choices: " + std::string(choices) + ")");
+      for (std::size_t j = 0; j < i; ++j)
+        if (values[j] == values[i]) Fail(key, "'" + values[i] + "' is listed twice");
+    }
+  }
   void VectorList(std::string_view key, std::vector<Eigen::Vector3d>& values);  // [[x, y, z], ...]
   // A mapping of free-form keys to a scalar or a list (joined with ','), in file order.
   void TextMap(std::string_view key, std::vector<std::pair<std::string, std::string>>& entries);
@@ -110,6 +122,10 @@ class YamlWriter {
   void Text(std::string_view key, std::string& value) { node_[std::string(key)] = value; }
   void TextList(std::string_view key, std::vector<std::string>& values) {
     if (!values.empty()) node_[std::string(key)] = values;
+  }
+  template <typename Known>
+  void ChoiceList(std::string_view key, std::vector<std::string>& values, Known, std::string_view) {
+    TextList(key, values);
   }
   void VectorList(std::string_view key, std::vector<Eigen::Vector3d>& values) {
     YAML::Node list(YAML::NodeType::Sequence);
