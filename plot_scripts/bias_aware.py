@@ -2,10 +2,10 @@
 approximates against the true bias-aware DOP (the position block with the bias estimated)."""
 import numpy as np
 
-from common import RESULTS, number, plt, read_csv, save
+from common import GATED, RESULTS, number, plt, read_csv, save
 
 attempts = [a for a in read_csv(RESULTS / "table1" / "attempts.csv")
-            if a["method"] == "gated" and a["initialized"] == "1"]
+            if a["method"] == GATED and a["initialized"] == "1"]
 pdop_true = np.array([number(a["pdop_true"]) for a in attempts])
 bias_aware = np.array([number(a["bias_aware_dop"]) for a in attempts])
 fig, axes = plt.subplots(1, 2)

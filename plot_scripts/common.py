@@ -19,7 +19,9 @@ plt.rcParams.update({
     "axes.grid": True,
     "grid.alpha": 0.3,
 })
-COLORS = {"fixed": "#d95f02", "gated": "#1b9e77", "paper": "#444444"}
+# The trigger names of the paper's two methods, as in the method column of the results.
+FIXED, GATED = "fixed_window", "pdop_closest_point"
+COLORS = {FIXED: "#d95f02", GATED: "#1b9e77", "paper": "#444444"}
 
 
 def read_csv(path):

@@ -3,7 +3,7 @@ initializations, and the AMR Monte Carlo per anchor. The examples' paths come fr
 files in build/examples/ (scripts/halls.sh), the estimates from results/examples/."""
 import numpy as np
 
-from common import COLORS, RESULTS, number, plt, read_csv, save
+from common import COLORS, GATED, RESULTS, number, plt, read_csv, save
 
 BUILD = RESULTS.parent / "build" / "examples"
 
@@ -13,10 +13,10 @@ def top_view(ax, name, title):
     anchors = read_csv(BUILD / name / "anchors.csv")
     estimates = read_csv(RESULTS / "examples" / name / "estimates.csv")
     ax.plot([number(p["x"]) for p in poses], [number(p["y"]) for p in poses], lw=0.5, color="#999999")
-    gated = {e["anchor_id"]: e for e in estimates if e["method"] == "gated"}
+    gated = {e["anchor_id"]: e for e in estimates if e["method"] == GATED}
     for a in anchors:
         done = gated[a["anchor_id"]]["initialized"] == "1"
-        ax.scatter(number(a["x"]), number(a["y"]), marker="^", s=36, color=COLORS["gated"] if done else "#cccccc",
+        ax.scatter(number(a["x"]), number(a["y"]), marker="^", s=36, color=COLORS[GATED] if done else "#cccccc",
                    edgecolor="k", zorder=3)
         ax.annotate(a["anchor_id"], (number(a["x"]), number(a["y"])), textcoords="offset points", xytext=(0, -10),
                     ha="center", fontsize=6)
@@ -40,7 +40,7 @@ fig, axes = plt.subplots(1, 2, gridspec_kw={"width_ratios": [1, 2.2]})
 top_view(axes[0], "uav", "UAV")
 axes[0].set_ylabel("y (m)")
 trace = read_csv(BUILD / "uav" / "trace.csv")
-estimates = {e["anchor_id"]: e for e in read_csv(RESULTS / "examples" / "uav" / "estimates.csv") if e["method"] == "gated"}
+estimates = {e["anchor_id"]: e for e in read_csv(RESULTS / "examples" / "uav" / "estimates.csv") if e["method"] == GATED}
 for anchor, color in zip(sorted(estimates, key=int), plt.cm.tab10.colors):
     rows = [r for r in trace if r["anchor_id"] == anchor and r["pdop"] != "inf"]
     axes[1].plot([number(r["t"]) for r in rows], [number(r["pdop"]) for r in rows], color=color, lw=0.8,
@@ -62,7 +62,7 @@ rows = list(dict.fromkeys(a["row"] for a in attempts))
 fig, axes = plt.subplots(1, 2)
 width = 0.8 / len(rows)
 for i, (row, color) in enumerate(zip(rows, ["#1b9e77", "#7570b3", "#d95f02"])):
-    chosen = [a for a in attempts if a["row"] == row and a["method"] == "gated"]
+    chosen = [a for a in attempts if a["row"] == row and a["method"] == GATED]
     rate = [100 * np.mean([a["initialized"] == "1" for a in chosen if int(a["anchor_id"]) == k]) for k in anchor_ids]
     err = [np.mean([number(a["err_m"]) for a in chosen if int(a["anchor_id"]) == k and a["initialized"] == "1"] or [np.nan])
            for k in anchor_ids]

@@ -2,7 +2,7 @@
 table, plus a figure of one LOS and one NLOS case: trajectory, anchors and estimates."""
 import pathlib
 
-from common import RESULTS, number, plt, read_csv, save
+from common import COLORS, FIXED, GATED, RESULTS, number, plt, read_csv, save
 
 root = RESULTS / "hanyang"
 cases = sorted(p for p in root.iterdir() if (p / "estimates.csv").exists())
@@ -15,8 +15,8 @@ for case in cases:
     rows = read_csv(case / "estimates.csv")
     cells, fixed_errors = [], []
     for anchor in ("3", "5", "9", "12"):
-        gated = next(r for r in rows if r["anchor_id"] == anchor and r["method"] == "gated")
-        fixed = next(r for r in rows if r["anchor_id"] == anchor and r["method"] == "fixed")
+        gated = next(r for r in rows if r["anchor_id"] == anchor and r["method"] == GATED)
+        fixed = next(r for r in rows if r["anchor_id"] == anchor and r["method"] == FIXED)
         g = (f"gated {number(gated['err_m']):.2f} m at {number(gated['t_init']):.0f} s" if gated["initialized"] == "1"
              else f"refused (PDOP {number(gated['pdop_est']):.1f})")
         fixed_errors.append(number(fixed["err_m"]))
@@ -36,7 +36,7 @@ for ax, name in zip(axes, ["LOS_Trajectory_A_Case_1", "NLOS_Trajectory_A_Case_1"
     ax.plot([number(p["x"]) for p in poses], [number(p["y"]) for p in poses], lw=0.6, color="#888888", label="tag path")
     ax.scatter([number(a["x"]) for a in anchors], [number(a["y"]) for a in anchors], marker="^", s=40, color="k",
                label="anchors (truth)")
-    for method, marker, color in [("fixed", "x", "#d95f02"), ("gated", "o", "#1b9e77")]:
+    for method, marker, color in [(FIXED, "x", COLORS[FIXED]), (GATED, "o", COLORS[GATED])]:
         chosen = [e for e in estimates if e["method"] == method and e["initialized"] == "1"]
         ax.scatter([number(e["x"]) for e in chosen], [number(e["y"]) for e in chosen], marker=marker, s=30,
                    color=color, label=f"{method} estimates ({len(chosen)}/4)")

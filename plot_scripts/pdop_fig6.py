@@ -2,7 +2,7 @@
 and the NLS initialization error at each checkpoint; median and 25-75% band over the runs."""
 import numpy as np
 
-from common import COLORS, RESULTS, number, plt, read_csv, save
+from common import COLORS, GATED, RESULTS, number, plt, read_csv, save
 
 trace = read_csv(RESULTS / "pdop_study" / "pdop_trace.csv")
 by_n = {}
@@ -19,7 +19,7 @@ def band(column):
 
 
 fig, axes = plt.subplots(1, 2)
-for column, label, color in [("pdop_closest_point", "closest-point PDOP (ours)", COLORS["gated"]),
+for column, label, color in [("pdop_closest_point", "closest-point PDOP (ours)", COLORS[GATED]),
                              ("pdop_true", "true PDOP", "k"),
                              ("bias_aware_dop", "true bias-aware DOP", "#7570b3")]:
     low, median, high = band(column)
@@ -32,8 +32,8 @@ axes[0].set_xlabel("accepted samples")
 axes[0].set_ylabel("PDOP (median, 25-75%)")
 axes[0].legend()
 low, median, high = band("nls_err_m")
-axes[1].plot(n, median, color=COLORS["gated"], label="LS + NLS on the samples so far")
-axes[1].fill_between(n, low, high, color=COLORS["gated"], alpha=0.2)
+axes[1].plot(n, median, color=COLORS[GATED], label="LS + NLS on the samples so far")
+axes[1].fill_between(n, low, high, color=COLORS[GATED], alpha=0.2)
 axes[1].set_yscale("log")
 axes[1].set_xlabel("accepted samples")
 axes[1].set_ylabel("initialization error (m)")

@@ -1,7 +1,7 @@
 """Noise x outlier-rate grid as heatmaps."""
 import numpy as np
 
-from common import RESULTS, number, plt, read_csv, save
+from common import FIXED, GATED, RESULTS, number, plt, read_csv, save
 
 rows = read_csv(RESULTS / "sweep_noise_outliers" / "sweep.csv")
 key = "scenario.ranging.outlier_probability"
@@ -15,9 +15,9 @@ def grid(method, value):
 
 
 attempts = number(rows[0]["init"])  # fixed window: every attempt
-panels = [("fixed window: average error (m)", grid("fixed", lambda r: number(r["avg_m"])), "{:.2f}"),
-          ("gated: average error (m)", grid("gated", lambda r: number(r["avg_m"])), "{:.2f}"),
-          ("gated: initialized (%)", grid("gated", lambda r: 100 * number(r["init"]) / attempts), "{:.0f}")]
+panels = [("fixed window: average error (m)", grid(FIXED, lambda r: number(r["avg_m"])), "{:.2f}"),
+          ("gated: average error (m)", grid(GATED, lambda r: number(r["avg_m"])), "{:.2f}"),
+          ("gated: initialized (%)", grid(GATED, lambda r: 100 * number(r["init"]) / attempts), "{:.0f}")]
 fig, axes = plt.subplots(1, 3)
 for ax, (title, values, fmt) in zip(axes, panels):
     image = ax.imshow(values, origin="lower", aspect="auto", cmap="magma_r")

@@ -1,15 +1,15 @@
 """tau sweep: the consistency check's threshold against the range noise of each Table I row."""
 import numpy as np
 
-from common import RESULTS, number, plt, read_csv, save
+from common import FIXED, GATED, RESULTS, number, plt, read_csv, save
 
 rows = read_csv(RESULTS / "sweep_tau" / "sweep.csv")
 key = "estimator.filter.tau_m"
 sigma = {"1": 0.1, "2": 0.125, "3": 0.15, "4": 0.5}  # configs/table1.yaml
 fig, axes = plt.subplots(1, 2)
 for name, color in zip(sigma, plt.cm.viridis(np.linspace(0, 0.9, len(sigma)))):
-    gated = [r for r in rows if r["row"] == name and r["method"] == "gated"]
-    fixed = [r for r in rows if r["row"] == name and r["method"] == "fixed"]
+    gated = [r for r in rows if r["row"] == name and r["method"] == GATED]
+    fixed = [r for r in rows if r["row"] == name and r["method"] == FIXED]
     tau = np.array([number(r[key]) for r in gated])
     attempts = number(fixed[0]["init"])
     label = f"row {name} (sigma_d = {sigma[name]} m)"

@@ -1,7 +1,7 @@
 """Table I as bars: Avg error, bad-init Ratio and Init, ours (with 95% intervals) beside the paper."""
 import numpy as np
 
-from common import COLORS, RESULTS, number, plt, read_csv, save
+from common import COLORS, FIXED, GATED, RESULTS, number, plt, read_csv, save
 
 rows = read_csv(RESULTS / "table1" / "summary.csv")
 names = list(dict.fromkeys(r["row"] for r in rows))
@@ -12,7 +12,7 @@ panels = [("avg_m", "avg_lo", "avg_hi", "paper_avg_m", "average error (m)"),
           ("ratio_pct", "ratio_lo", "ratio_hi", "paper_ratio_pct", "initializations > 1 m (%)"),
           ("init", None, None, "paper_init", "initialized anchors (of 3000)")]
 for ax, (key, lo, hi, paper_key, label) in zip(axes, panels):
-    for i, method in enumerate(["fixed", "gated"]):
+    for i, method in enumerate([FIXED, GATED]):
         cells = [next(r for r in rows if r["row"] == n and r["method"] == method) for n in names]
         ours = np.array([number(c[key]) for c in cells])
         paper = np.array([number(c.get(paper_key, "")) for c in cells])
@@ -23,7 +23,7 @@ for ax, (key, lo, hi, paper_key, label) in zip(axes, panels):
             high = np.array([number(c[hi]) for c in cells])
             errors = np.vstack([ours - low, high - ours])
         ax.bar(x + offset, ours, width, yerr=errors, capsize=2, color=COLORS[method],
-               label=f"{'gated (ours)' if method == 'gated' else 'fixed window'}")
+               label=f"{'gated (ours)' if method == GATED else 'fixed window'}")
         ax.bar(x + offset + width, paper, width, color=COLORS[method], alpha=0.35, hatch="//",
                label=f"{method}, paper")
     ax.set_xticks(x + width / 2, [f"row {n}" for n in names])

@@ -2,9 +2,9 @@
 NLS (results/table2/attempts.csv, fixed-window attempts), beside the paper's Table II."""
 import math
 
-from common import RESULTS, number, read_csv
+from common import FIXED, RESULTS, number, read_csv
 
-attempts = [a for a in read_csv(RESULTS / "table2" / "attempts.csv") if a["method"] == "fixed" and a["initialized"] == "1"]
+attempts = [a for a in read_csv(RESULTS / "table2" / "attempts.csv") if a["method"] == FIXED and a["initialized"] == "1"]
 PAPER = {"consistency": ["0.17 / 0.18", "0.12 / 0.11", "0.35 / 0.34", "0.44 / 0.43"],
          "ransac": ["0.17 / 0.2", "0.12 / 0.13", "0.37 / 0.31", "0.47 / 0.42"]}
 lines = ["# Table II analog: consistency check vs RANSAC, each with plain NLS", "",

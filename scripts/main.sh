@@ -1,17 +1,21 @@
 #!/usr/bin/env bash
 # The main command (README): set up, build the anchorbench executable, and regenerate everything
 # in results/: first the paper's Table I (results/table1/, within a minute of a fresh checkout on
-# 2 cores), then the threshold sweeps, the PDOP study, the halls, all figures and the replays of
-# the real Hanyang recordings (about a minute more).
+# 2 cores), then the threshold sweeps, the PDOP study, the halls, the stress tests (every solver x
+# filter x trigger: the slowest part, ~5 minutes), all figures and the replays of the real Hanyang
+# recordings.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 bash scripts/build.sh anchorbench
 bin=build/experiments/anchorbench
 "$bin" run configs/table1.yaml --out results/table1
-for sweep in sweep_pdop_threshold sweep_tau sweep_noise_outliers stress; do
+for sweep in sweep_pdop_threshold sweep_tau sweep_noise_outliers; do
   "$bin" sweep "configs/$sweep.yaml" --out "results/$sweep" --quiet
 done
 "$bin" pdop-study configs/pdop_study.yaml --out results/pdop_study --quiet
 bash scripts/halls.sh
+for sweep in stress stress_ransac; do
+  "$bin" sweep "configs/$sweep.yaml" --out "results/$sweep" --quiet
+done
 bash scripts/plots.sh
 bash scripts/hanyang.sh   # the real recordings in ../shared, if present

@@ -61,7 +61,7 @@ def main():
         summary, within = run(name, overrides, realizations)
         cells = []
         for r in "1234":
-            f, g = summary[(r, "fixed")], summary[(r, "gated")]
+            f, g = summary[(r, "fixed_window")], summary[(r, "pdop_closest_point")]
             init_pct = 100.0 * int(g["init"]) / attempts
             cells.append(f"{cell(f, 'avg_m', 2)} / {cell(f, 'med_m', 3)} / {cell(f, 'ratio_pct', 1)}; "
                          f"{cell(g, 'avg_m', 2)} / {init_pct:.0f} / {cell(g, 'ratio_pct', 1)}")
