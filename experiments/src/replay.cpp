@@ -58,6 +58,12 @@ ReplayResult Replay(const PoseTracks& poses, const std::vector<RangeRecord>& ran
   return result;
 }
 
+void CheckReplayable(const std::vector<RangeRecord>& ranges, const std::map<int, AnchorTruth>* truth,
+                     const estimator::InitializerOptions& options) {
+  AnchorBank bank(options, 0, 0, truth);
+  for (const RangeRecord& range : ranges) bank.AddAnchor(range.anchor_id);
+}
+
 void WriteEstimates(std::ostream& out, const std::vector<AttemptOutcome>& outcomes) {
   for (std::size_t i = 0; i < std::size(kEstimateColumns); ++i) out << (i ? "," : "") << kEstimateColumns[i];
   out << '\n';

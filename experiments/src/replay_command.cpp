@@ -18,6 +18,7 @@ int ReplayCommand(const ReplayArgs& args) {
   const std::vector<RangeRecord> ranges = LoadRanges(args.ranges);
   std::map<int, AnchorTruth> truth;
   if (!args.anchors.empty()) truth = LoadAnchors(args.anchors);
+  CheckReplayable(ranges, args.anchors.empty() ? nullptr : &truth, config.estimator);
   if (!args.out.empty()) CreateFolder(args.out);
 
   std::unique_ptr<AtomicFile> trace_file;

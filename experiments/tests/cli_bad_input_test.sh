@@ -46,6 +46,14 @@ expect_error "missing column" "bad_poses.csv:1: missing column 'z'" \
 expect_error "bad config in replay" "key 'scenario.ranging.sigma_range_m'" \
   "$bin" replay --poses "$dir/sim/poses.csv" --ranges "$dir/sim/ranges.csv" --config "$dir/neg.yaml"
 [ -e "$dir/out1/estimates.csv" ] && { echo "FAIL: estimates written on bad input"; failures=$((failures + 1)); }
+printf 'estimator:\n  triggers: [fixed_window, pdop_true]\n' >"$dir/oracle.yaml"
+expect_error "oracle trigger without anchors.csv" "trigger 'pdop_true': needs the true anchor position" \
+  "$bin" replay --poses "$dir/sim/poses.csv" --ranges "$dir/sim/ranges.csv" --config "$dir/oracle.yaml" \
+  --trace "$dir/oracle_out/trace.csv" --out "$dir/oracle_out"
+[ -e "$dir/oracle_out" ] && { echo "FAIL: output folder created for a replay that cannot run"; failures=$((failures + 1)); }
+expect_error "unknown trigger" "key 'estimator.triggers': unknown value 'pdop_best'" \
+  "$bin" run "$dir/ok.yaml" --set 'estimator.triggers=[fixed_window, pdop_best]' --out "$dir/run_out"
+[ -e "$dir/run_out" ] && { echo "FAIL: output folder created on a bad --set"; failures=$((failures + 1)); }
 
 # And the good path writes exactly what it promises.
 "$bin" replay --poses "$dir/sim/poses.csv" --ranges "$dir/sim/ranges.csv" --anchors "$dir/sim/anchors.csv" \

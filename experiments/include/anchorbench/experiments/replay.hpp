@@ -29,6 +29,11 @@ ReplayResult Replay(const PoseTracks& poses, const std::vector<RangeRecord>& ran
                     const std::map<int, AnchorTruth>* truth, const estimator::InitializerOptions& options,
                     const TraceSink& trace = nullptr, std::uint64_t seed = 1);
 
+// Builds every anchor's initializers once, without data, so that what Replay would refuse (a
+// trigger that needs the truth it lacks) is refused before any output exists. Throws InputError.
+void CheckReplayable(const std::vector<RangeRecord>& ranges, const std::map<int, AnchorTruth>* truth,
+                     const estimator::InitializerOptions& options);
+
 // estimates.csv: anchor_id,method,initialized,t_init,n_used,pdop_est,pdop_true,x,y,z,bias,err_m
 void WriteEstimates(std::ostream& out, const std::vector<AttemptOutcome>& outcomes);
 // The same, aligned for a terminal.
