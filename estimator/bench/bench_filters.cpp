@@ -34,11 +34,7 @@ Data MakeData(std::size_t n) {  // a drive past an anchor, 10 Hz, sigma 0.05 m, 
 }
 
 const est::Components& Builtins() {
-  static const est::Components components = [] {
-    est::Components c;
-    est::RegisterBuiltins(c);
-    return c;
-  }();
+  static const est::Components components = est::MakeBuiltinComponents();
   return components;
 }
 

@@ -10,6 +10,12 @@ void RegisterBuiltins(Components& components) {
   RegisterBuiltinTriggers(components.triggers);
 }
 
+Components MakeBuiltinComponents() {
+  Components components;
+  RegisterBuiltins(components);
+  return components;
+}
+
 AnchorInitializer MakeInitializer(const Components& components, int anchor_id, const InitializerOptions& options,
                                   const std::string& trigger, std::uint64_t seed,
                                   const std::optional<Eigen::Vector3d>& p_world_anchor_true) {

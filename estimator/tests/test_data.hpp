@@ -52,11 +52,7 @@ inline std::vector<estimator::RangeSample> PassBy(const Eigen::Vector3d& p_ancho
 
 // The built-in solvers, filters and triggers.
 inline const estimator::Components& Builtins() {
-  static const estimator::Components components = [] {
-    estimator::Components c;
-    estimator::RegisterBuiltins(c);
-    return c;
-  }();
+  static const estimator::Components components = estimator::MakeBuiltinComponents();
   return components;
 }
 

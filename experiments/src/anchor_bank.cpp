@@ -11,11 +11,7 @@
 namespace anchorbench::experiments {
 
 const estimator::Components& BuiltinComponents() {
-  static const estimator::Components components = [] {
-    estimator::Components c;
-    estimator::RegisterBuiltins(c);
-    return c;
-  }();
+  static const estimator::Components components = estimator::MakeBuiltinComponents();
   return components;
 }
 

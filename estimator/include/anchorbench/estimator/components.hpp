@@ -22,6 +22,8 @@ struct Components {
 
 // Fills all three with the built-ins (RegisterBuiltinSolvers, ...Filters, ...Triggers).
 void RegisterBuiltins(Components& components);
+// A Components holding just the built-ins.
+Components MakeBuiltinComponents();
 
 // One anchor's initializer from names: filter options.filter.kind, solver options.solver_name,
 // and `trigger`. `seed` feeds the parts that draw random numbers (RANSAC, stochastic NLopt); the
