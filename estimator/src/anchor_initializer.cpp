@@ -62,7 +62,7 @@ FeedResult AnchorInitializer::Feed(const RangeSample& sample) {
   input.t_first_s = t_first_s_;
   input.p_world_tag = p_world_tag_;
   input.range_m = range_m_;
-  input.pdop = &pdop_;
+  input.pdop = out.pdop;
   input.eligible = static_cast<int>(range_m_.size()) >= options_.min_samples && range_m_.size() >= next_attempt_size_;
   if (!trigger_->Fire(input) || !input.eligible) return out;
 

@@ -40,7 +40,8 @@ class EstimatePdopTrigger : public InitTrigger {
 // The oracle of Sec. IV-B: the true PDOP, Eq. (3) at the true anchor, O(1) per sample.
 class TruePdopTrigger : public InitTrigger {
  public:
-  TruePdopTrigger(const Eigen::Vector3d& p_world_anchor, double threshold) : geometry_(p_world_anchor), threshold_(threshold) {}
+  TruePdopTrigger(const Eigen::Vector3d& p_world_anchor, double threshold)
+      : geometry_(p_world_anchor), threshold_(threshold) {}
   bool Fire(const TriggerInput& in) override {
     geometry_.Add(in.p_world_tag.back());
     return in.eligible && geometry_.Pdop() < threshold_;
@@ -79,35 +80,42 @@ class TimeoutTrigger : public InitTrigger {
 }  // namespace
 
 void RegisterBuiltinTriggers(TriggerRegistry& registry) {
-  registry.Register("pdop_closest_point", "closest-point PDOP < trigger.pdop_threshold, Eq. (4), O(1): the paper's trigger",
-                    [](const std::string&, const TriggerContext& c) {
+  using Context = TriggerContext;
+  registry.Register("pdop_closest_point",
+                    "closest-point PDOP < trigger.pdop_threshold, Eq. (4), O(1): the paper's trigger",
+                    [](const std::string&, const Context& c) {
                       return std::make_unique<ClosestPointPdopTrigger>(c.options.pdop_threshold);
                     });
   registry.Register("pdop_ls", "PDOP at the LS estimate < trigger.pdop_threshold (every trigger.evaluate_every samples)",
-                    [](const std::string&, const TriggerContext& c) {
+                    [](const std::string&, const Context& c) {
                       return std::make_unique<EstimatePdopTrigger>(std::make_shared<DoubleDifferenceLsSolver>(c.ls),
                                                                    c.options.pdop_threshold, c.options.evaluate_every);
                     });
-  registry.Register("pdop_nls", "PDOP at the solver's estimate < trigger.pdop_threshold (every trigger.evaluate_every samples)",
-                    [](const std::string&, const TriggerContext& c) {
+  registry.Register("pdop_nls",
+                    "PDOP at the solver's estimate < trigger.pdop_threshold (every trigger.evaluate_every samples)",
+                    [](const std::string&, const Context& c) {
                       if (!c.solver) throw std::invalid_argument("needs the anchor's solver");
-                      return std::make_unique<EstimatePdopTrigger>(c.solver, c.options.pdop_threshold, c.options.evaluate_every);
+                      return std::make_unique<EstimatePdopTrigger>(c.solver, c.options.pdop_threshold,
+                                                                   c.options.evaluate_every);
                     });
   registry.Register("pdop_true", "oracle: true PDOP (at the true anchor) < trigger.pdop_threshold; needs the truth",
-                    [](const std::string&, const TriggerContext& c) {
+                    [](const std::string&, const Context& c) {
                       if (!c.p_world_anchor_true) {
-                        throw std::invalid_argument("needs the true anchor position (simulation, or anchors.csv in replay)");
+                        throw std::invalid_argument(
+                            "needs the true anchor position (simulation, or anchors.csv in replay)");
                       }
                       return std::make_unique<TruePdopTrigger>(*c.p_world_anchor_true, c.options.pdop_threshold);
                     });
   registry.Register("fixed_window", "the baseline: one solve on all of an anchor's data at the end of the run",
-                    [](const std::string&, const TriggerContext&) { return std::make_unique<FixedWindowTrigger>(); });
+                    [](const std::string&, const Context&) { return std::make_unique<FixedWindowTrigger>(); });
   registry.Register("sample_count", "after trigger.sample_count accepted samples",
-                    [](const std::string&, const TriggerContext& c) {
+                    [](const std::string&, const Context& c) {
                       return std::make_unique<SampleCountTrigger>(c.options.sample_count);
                     });
   registry.Register("timeout", "trigger.timeout_s after the anchor's first accepted sample",
-                    [](const std::string&, const TriggerContext& c) { return std::make_unique<TimeoutTrigger>(c.options.timeout_s); });
+                    [](const std::string&, const Context& c) {
+                      return std::make_unique<TimeoutTrigger>(c.options.timeout_s);
+                    });
 }
 
 }  // namespace anchorbench::estimator

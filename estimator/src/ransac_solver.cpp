@@ -33,6 +33,9 @@ SolveResult RansacSolver::Solve(std::span<const Eigen::Vector3d> p, std::span<co
   std::iota(index.begin(), index.end(), std::size_t{0});
   std::vector<Eigen::Vector3d> subset_p(s), inlier_p;
   std::vector<double> subset_d(s), inlier_d;
+  auto is_inlier = [&](std::size_t k, const SolveResult& fit) {
+    return std::abs((p[k] - fit.p_world_anchor).norm() + fit.bias_m - d[k]) < options_.inlier_threshold_m;
+  };
   std::size_t best_inliers = 0;
   SolveResult best;
   const int iterations = options_.Iterations();
@@ -47,9 +50,7 @@ SolveResult RansacSolver::Solve(std::span<const Eigen::Vector3d> p, std::span<co
     const SolveResult candidate = inner_->Solve(subset_p, subset_d);
     if (!Succeeded(candidate.status)) continue;
     std::size_t inliers = 0;
-    for (std::size_t k = 0; k < n; ++k) {
-      inliers += std::abs((p[k] - candidate.p_world_anchor).norm() + candidate.bias_m - d[k]) < options_.inlier_threshold_m;
-    }
+    for (std::size_t k = 0; k < n; ++k) inliers += is_inlier(k, candidate);
     if (inliers > best_inliers) {
       best_inliers = inliers;
       best = candidate;
@@ -60,7 +61,7 @@ SolveResult RansacSolver::Solve(std::span<const Eigen::Vector3d> p, std::span<co
     return best;
   }
   for (std::size_t k = 0; k < n; ++k) {
-    if (std::abs((p[k] - best.p_world_anchor).norm() + best.bias_m - d[k]) < options_.inlier_threshold_m) {
+    if (is_inlier(k, best)) {
       inlier_p.push_back(p[k]);
       inlier_d.push_back(d[k]);
     }

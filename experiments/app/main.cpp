@@ -37,7 +37,8 @@ int main(int argc, char** argv) {
 
   ex::ReplayArgs replay;
   CLI::App* replay_cmd =
-      app.add_subcommand("replay", "Run the online initializer (PDOP-gated and fixed window) on recorded data");
+      app.add_subcommand("replay", "Run the online initializers (estimator.triggers; by default the fixed window "
+                                   "and the PDOP-gated one) on recorded data");
   replay_cmd->add_option("--poses", replay.poses, "poses.csv: t,tag_id,x,y,z")->required();
   replay_cmd->add_option("--ranges", replay.ranges, "ranges.csv: t,tag_id,anchor_id,range")->required();
   replay_cmd->add_option("--anchors", replay.anchors, "anchors.csv: anchor_id,x,y,z[,bias] (truth, for errors)");
@@ -47,7 +48,7 @@ int main(int argc, char** argv) {
   replay_cmd->add_option("--out", replay.out, "Folder for estimates.csv");
 
   ex::RunArgs run;
-  CLI::App* run_cmd = app.add_subcommand("run", "Monte Carlo: every row x realization x anchor, gated and fixed window");
+  CLI::App* run_cmd = app.add_subcommand("run", "Monte Carlo: every row x realization x anchor x trigger (estimator.triggers)");
   run_cmd->add_option("config", run.config, "Experiment config (YAML) with rows")->required();
   AddMonteCarloOptions(run_cmd, run);
   run_cmd->add_option("--seed", run.seed, "Override the config's seed");

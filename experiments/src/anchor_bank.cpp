@@ -1,6 +1,5 @@
 #include "anchorbench/experiments/anchor_bank.hpp"
 
-#include <algorithm>
 #include <chrono>
 #include <stdexcept>
 
@@ -25,7 +24,7 @@ AnchorBank::AnchorBank(const estimator::InitializerOptions& options, std::uint64
 
 namespace {
 
-const AnchorTruth* Find(const std::map<int, AnchorTruth>* truth, int anchor_id) {
+const AnchorTruth* TruthOf(const std::map<int, AnchorTruth>* truth, int anchor_id) {
   if (!truth) return nullptr;
   const auto found = truth->find(anchor_id);
   return found == truth->end() ? nullptr : &found->second;
@@ -33,13 +32,13 @@ const AnchorTruth* Find(const std::map<int, AnchorTruth>* truth, int anchor_id) 
 
 }  // namespace
 
-std::size_t AnchorBank::Slot(int anchor_id) {
-  if (const auto found = slot_of_anchor_.find(anchor_id); found != slot_of_anchor_.end()) return found->second;
+AnchorBank::Anchor& AnchorBank::Find(int anchor_id) {
+  if (const auto found = anchors_.find(anchor_id); found != anchors_.end()) return found->second;
   Anchor anchor;
   anchor.id = anchor_id;
   const std::uint64_t anchor_seed =
       sim::RandomStream(seed_, realization_, sim::StreamId::kSolver, static_cast<std::uint32_t>(anchor_id)).NextU64();
-  const AnchorTruth* truth = Find(truth_, anchor_id);
+  const AnchorTruth* truth = TruthOf(truth_, anchor_id);
   const std::optional<Eigen::Vector3d> p_true = truth ? std::optional(truth->p_world_anchor) : std::nullopt;
   for (const std::string& trigger : options_.triggers) {
     try {
@@ -49,16 +48,14 @@ std::size_t AnchorBank::Slot(int anchor_id) {
     }
   }
   anchor.events.resize(options_.triggers.size());
-  anchors_.push_back(std::move(anchor));
-  slot_of_anchor_[anchor_id] = anchors_.size() - 1;
-  return anchors_.size() - 1;
+  return anchors_.emplace(anchor_id, std::move(anchor)).first->second;
 }
 
-void AnchorBank::AddAnchor(int anchor_id) { Slot(anchor_id); }
+void AnchorBank::AddAnchor(int anchor_id) { Find(anchor_id); }
 
-AttemptOutcome AnchorBank::Outcome(const Anchor& anchor, std::size_t trigger,
-                                   std::optional<estimator::InitEvent> event) const {
+AttemptOutcome AnchorBank::Outcome(const Anchor& anchor, std::size_t trigger) const {
   const estimator::AnchorInitializer& initializer = anchor.by_trigger[trigger];
+  const std::optional<estimator::InitEvent>& event = anchor.events[trigger];
   AttemptOutcome out;
   out.anchor_id = anchor.id;
   out.method = options_.triggers[trigger];
@@ -73,7 +70,7 @@ AttemptOutcome AnchorBank::Outcome(const Anchor& anchor, std::size_t trigger,
   } else if (initializer.last_failed_solve()) {
     out.solve = initializer.last_failed_solve();  // triggered, but every solve failed
   }
-  if (const AnchorTruth* truth = Find(truth_, anchor.id)) {
+  if (const AnchorTruth* truth = TruthOf(truth_, anchor.id)) {
     // The initializer's buffer is exactly the data of the solve (online triggers stop buffering at init).
     out.pdop_true = estimator::TruePdop(initializer.p_world_tag(), truth->p_world_anchor);
     out.bias_aware_dop = estimator::BiasAwareDop(initializer.p_world_tag(), truth->p_world_anchor);
@@ -84,31 +81,28 @@ AttemptOutcome AnchorBank::Outcome(const Anchor& anchor, std::size_t trigger,
 
 std::vector<AttemptOutcome> AnchorBank::Run(std::span<const estimator::RangeSample> samples, double t_end_s,
                                             const Trace& trace) {
-  std::vector<std::size_t> slots(samples.size());
-  for (std::size_t i = 0; i < samples.size(); ++i) slots[i] = Slot(samples[i].anchor_id);
+  std::vector<Anchor*> anchor_of_sample(samples.size());  // map nodes stay put
+  for (std::size_t i = 0; i < samples.size(); ++i) anchor_of_sample[i] = &Find(samples[i].anchor_id);
 
   std::vector<double> compute_s(options_.triggers.size(), 0.0);
   for (std::size_t t = 0; t < options_.triggers.size(); ++t) {
     const auto start = std::chrono::steady_clock::now();
     for (std::size_t i = 0; i < samples.size(); ++i) {
-      Anchor& anchor = anchors_[slots[i]];
+      Anchor& anchor = *anchor_of_sample[i];
       estimator::FeedResult fed = anchor.by_trigger[t].Feed(samples[i]);
       if (fed.event) anchor.events[t] = fed.event;
       if (t == 0 && trace) trace(i, fed);
     }
-    for (Anchor& anchor : anchors_) {
+    for (auto& [id, anchor] : anchors_) {
       if (std::optional<estimator::InitEvent> event = anchor.by_trigger[t].Finish(t_end_s)) anchor.events[t] = event;
     }
     compute_s[t] = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   }
 
-  std::vector<const Anchor*> by_id;
-  for (const Anchor& anchor : anchors_) by_id.push_back(&anchor);
-  std::sort(by_id.begin(), by_id.end(), [](const Anchor* a, const Anchor* b) { return a->id < b->id; });
   std::vector<AttemptOutcome> outcomes;
-  for (const Anchor* anchor : by_id) {
+  for (const auto& [id, anchor] : anchors_) {
     for (std::size_t t = 0; t < options_.triggers.size(); ++t) {
-      outcomes.push_back(Outcome(*anchor, t, anchor->events[t]));
+      outcomes.push_back(Outcome(anchor, t));
       outcomes.back().compute_s = compute_s[t] / static_cast<double>(anchors_.size());
     }
   }

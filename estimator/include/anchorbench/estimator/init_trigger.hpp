@@ -5,7 +5,6 @@
 
 #include <Eigen/Core>
 
-#include "anchorbench/estimator/closest_point_pdop.hpp"
 
 namespace anchorbench::estimator {
 
@@ -15,7 +14,7 @@ struct TriggerInput {
   double t_first_s = 0.0;  // the anchor's first accepted sample
   std::span<const Eigen::Vector3d> p_world_tag;  // the accepted samples so far, this one last
   std::span<const double> range_m;
-  const ClosestPointPdop* pdop = nullptr;  // Eq. (4) over them, kept by the initializer in O(1)
+  double pdop = 0.0;  // the closest-point PDOP of Eq. (4) over them (+inf if undefined)
   // Whether the initializer would solve if the trigger fired now (min_samples reached, not waiting
   // for more data after a failed solve). Costly triggers evaluate only then; all may update state.
   bool eligible = false;
@@ -40,7 +39,7 @@ class InitTrigger {
 class ClosestPointPdopTrigger : public InitTrigger {
  public:
   explicit ClosestPointPdopTrigger(double threshold) : threshold_(threshold) {}
-  bool Fire(const TriggerInput& in) override { return in.eligible && in.pdop->Value() < threshold_; }
+  bool Fire(const TriggerInput& in) override { return in.eligible && in.pdop < threshold_; }
 
  private:
   double threshold_;

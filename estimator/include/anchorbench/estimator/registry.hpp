@@ -72,8 +72,6 @@ class Registry {
     return entries;
   }
 
-  const std::string& noun() const { return noun_; }
-
  private:
   struct Entry {
     std::string description;

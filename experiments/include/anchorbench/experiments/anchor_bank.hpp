@@ -64,16 +64,15 @@ class AnchorBank {
     std::vector<estimator::AnchorInitializer> by_trigger;
     std::vector<std::optional<estimator::InitEvent>> events;
   };
-  std::size_t Slot(int anchor_id);
-  AttemptOutcome Outcome(const Anchor& anchor, std::size_t trigger, std::optional<estimator::InitEvent> event) const;
+  Anchor& Find(int anchor_id);  // built on first use
+  AttemptOutcome Outcome(const Anchor& anchor, std::size_t trigger) const;
 
   estimator::InitializerOptions options_;
   std::uint64_t seed_;
   std::uint64_t realization_;
   const std::map<int, AnchorTruth>* truth_;
   const estimator::Components* components_;
-  std::map<int, std::size_t> slot_of_anchor_;
-  std::vector<Anchor> anchors_;  // in order of first appearance
+  std::map<int, Anchor> anchors_;  // by id, so outcomes come out ascending
 };
 
 }  // namespace anchorbench::experiments

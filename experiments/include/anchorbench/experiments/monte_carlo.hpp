@@ -49,8 +49,10 @@ struct MonteCarloOptions {
 // The result is ordered by row, realization, anchor, method: identical for any thread count.
 std::vector<Attempt> RunMonteCarlo(const ExperimentConfig& config, const MonteCarloOptions& options);
 
-// The attempts of one realization of one row (what each task computes).
+// The attempts of one realization of one row (what each task computes). `samples` is scratch,
+// reused from call to call by the caller.
 std::vector<Attempt> RunRealization(const RowConfig& row, int row_index, std::uint64_t seed, int realization,
-                                    const estimator::Components* components = nullptr);
+                                    const estimator::Components* components,
+                                    std::vector<estimator::RangeSample>& samples);
 
 }  // namespace anchorbench::experiments
