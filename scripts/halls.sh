@@ -3,7 +3,7 @@
 # simulated-and-replayed example flight or drive per trajectory type for the figures.
 set -euo pipefail
 cd "$(dirname "$0")/.."
-bin=build/experiments/anchorbench
+bin=build/app/anchorbench
 for hall in amr_hall uav_hall table2; do
   "$bin" run "configs/$hall.yaml" --out "results/$hall" --quiet
 done

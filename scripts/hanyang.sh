@@ -9,7 +9,7 @@ if [ ! -d "$data" ]; then
   echo "hanyang: $data not found; skipped" >&2
   exit 0
 fi
-bin=build/experiments/anchorbench
+bin=build/app/anchorbench
 for case_dir in "$data"/*/Trajectory_*/Case_*; do
   name=$(echo "${case_dir#"$data"/}" | tr '/' '_')   # e.g. LOS_Trajectory_A_Case_1
   "$bin" convert-hanyang "$case_dir" --out "build/hanyang/$name" >/dev/null

@@ -7,7 +7,7 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 bash scripts/build.sh anchorbench
-bin=build/experiments/anchorbench
+bin=build/app/anchorbench
 "$bin" run configs/table1.yaml --out results/table1
 for sweep in sweep_pdop_threshold sweep_tau sweep_noise_outliers; do
   "$bin" sweep "configs/$sweep.yaml" --out "results/$sweep" --quiet

@@ -1,14 +1,19 @@
 #!/usr/bin/env bash
-# The test command (README): set up, build from scratch if needed, build and run the out-of-tree
-# example against the installed package, then run the whole suite (ctest's summary closes it).
+# The test command (README): set up, build from scratch if needed, build and run the two
+# out-of-tree examples against the installed package, then run the whole suite (ctest's summary
+# closes it).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 bash scripts/build.sh
 
-# The installed package: install, build the out-of-tree example solver against it, run it.
+# The installed package: install, then build the examples against it and run them.
 cmake --install build --prefix build/install >/dev/null
-cmake -S examples/custom_solver -B build/example -DCMAKE_PREFIX_PATH="$PWD/build/install" >/dev/null
-cmake --build build/example -j"$(nproc)"
-build/example/custom_solver configs/table1.yaml
+for example in custom_solver online_front_end; do
+  cmake -S "examples/$example" -B "build/examples/$example" -DCMAKE_PREFIX_PATH="$PWD/build/install" >/dev/null
+  cmake --build "build/examples/$example" -j"$(nproc)"
+done
+build/examples/custom_solver/custom_solver examples/custom_solver/table1_thirds.yaml
+build/app/anchorbench simulate configs/tunnel.yaml --out build/examples/tunnel_log >/dev/null
+build/examples/online_front_end/online_front_end build/examples/tunnel_log/poses.csv build/examples/tunnel_log/ranges.csv
 
 ctest --test-dir build --output-on-failure -j"$(nproc)"

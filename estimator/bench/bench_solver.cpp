@@ -21,7 +21,7 @@ struct Data {
 
 // A tunnel-like pass by a wall anchor at 10 Hz, sigma_d = 0.1 m, 5% NLOS outliers.
 Data MakeData(std::size_t n) {
-  anchorbench::sim::RandomStream rng(1, 0, anchorbench::sim::StreamId::kSolver);
+  anchorbench::sim::RandomStream rng(1, 0, anchorbench::sim::kFirstFreeStreamId);
   Data data;
   const Eigen::Vector3d p_anchor(0, 4, 3);
   for (std::size_t k = 0; k < n; ++k) {

@@ -2,25 +2,35 @@
 
 #include <cmath>
 
-#include "anchorbench/estimator/consistency_filter.hpp"
+#include "anchorbench/estimator/triggers.hpp"
 
 namespace anchorbench::estimator {
-bool InitializerOptions::IsValid(std::string* why) const {
-  if (min_samples < 6) {
-    if (why) *why = "min_samples must be >= 6 (4 unknowns, one pivot, one redundant row)";
-    return false;
-  }
-  if (!(retry_growth > 1.0) || !std::isfinite(retry_growth)) {
-    if (why) *why = "retry_growth must be > 1";
-    return false;
-  }
-  return filter.IsValid(why) && trigger.IsValid(why) && solver.IsValid(why);
+
+std::string_view ToString(BufferPolicy policy) { return policy == BufferPolicy::kThin ? "thin" : "keep_first"; }
+
+bool ParseBufferPolicy(std::string_view name, BufferPolicy* policy) {
+  if (name == "thin") *policy = BufferPolicy::kThin;
+  else if (name == "keep_first") *policy = BufferPolicy::kKeepFirst;
+  else return false;
+  return true;
 }
 
-AnchorInitializer::AnchorInitializer(int anchor_id, const InitializerOptions& options)
-    : AnchorInitializer(anchor_id, options, std::make_unique<ConsistencyFilter>(options.filter.consistency),
-                        std::make_unique<ClosestPointPdopTrigger>(options.trigger.pdop_threshold),
-                        std::make_shared<AnchorSolver>(options.solver)) {}
+bool InitializerOptions::IsValid(std::string* why) const {
+  auto fail = [why](std::string message) {
+    if (why) *why = std::move(message);
+    return false;
+  };
+  if (min_samples < kMinSamplesLs) {
+    return fail("min_samples must be >= " + std::to_string(kMinSamplesLs) +
+                " (4 unknowns, one pivot, one redundant row)");
+  }
+  // Bounded so that the retry size (an integer) cannot overflow.
+  if (!(retry_growth > 1.0 && retry_growth <= 100.0)) return fail("retry_growth must be in (1, 100]");
+  if (max_buffered_samples / 2 < min_samples) {
+    return fail("max_buffered_samples must be >= 2 min_samples (a thinned buffer keeps half)");
+  }
+  return true;
+}
 
 AnchorInitializer::AnchorInitializer(int anchor_id, const InitializerOptions& options,
                                      std::unique_ptr<OutlierFilter> filter, std::unique_ptr<InitTrigger> trigger,
@@ -31,57 +41,121 @@ AnchorInitializer::AnchorInitializer(int anchor_id, const InitializerOptions& op
       trigger_(std::move(trigger)),
       solver_(filter_->AtSolve(std::move(solver))) {}
 
-InitEvent AnchorInitializer::SolveNow(double t_s) {
+InitEvent AnchorInitializer::SolveNow(double t_s, double pdop) {
   InitEvent event;
   event.anchor_id = anchor_id_;
   event.t_s = t_s;
   event.n_used = static_cast<int>(range_m_.size());
-  event.pdop_estimate = pdop_.Value();
+  event.pdop_estimate = pdop;
   event.solve = solver_->Solve(p_world_tag_, range_m_);
   return event;
+}
+
+void AnchorInitializer::Buffer(const Eigen::Vector3d& p_world_tag, double range_m) {
+  const std::size_t cap = static_cast<std::size_t>(options_.max_buffered_samples);
+  const std::size_t index = n_admitted_ - 1;  // of this sample among the admitted ones
+  if (options_.at_cap == BufferPolicy::kThin) {
+    if (index % keep_every_ != 0) {
+      ++samples_not_buffered_;
+      return;
+    }
+    if (range_m_.size() == cap) {  // keep the even positions: every 2 keep_every_-th sample
+      for (std::size_t i = 0; 2 * i < range_m_.size(); ++i) {
+        p_world_tag_[i] = p_world_tag_[2 * i];
+        range_m_[i] = range_m_[2 * i];
+      }
+      samples_not_buffered_ += static_cast<long>(range_m_.size() / 2);
+      p_world_tag_.resize((range_m_.size() + 1) / 2);
+      range_m_.resize((range_m_.size() + 1) / 2);
+      keep_every_ *= 2;
+      if (index % keep_every_ != 0) {
+        ++samples_not_buffered_;
+        return;
+      }
+    }
+  } else if (range_m_.size() == cap) {
+    ++samples_not_buffered_;
+    return;
+  }
+  p_world_tag_.push_back(p_world_tag);
+  range_m_.push_back(range_m);
+}
+
+void AnchorInitializer::Admit(const Accepted& sample) {
+  if (n_admitted_ == 0) t_first_s_ = sample.t_s;
+  ++n_admitted_;
+  Buffer(sample.p_world_tag, sample.range_m);
+  TriggerInput input;
+  input.t_s = sample.t_s;
+  input.t_first_s = t_first_s_;
+  input.n_accepted = n_admitted_;
+  input.sample_p_world_tag = sample.p_world_tag;
+  input.sample_range_m = sample.range_m;
+  input.p_world_tag = p_world_tag_;
+  input.range_m = range_m_;
+  input.pdop = sample.pdop;
+  input.eligible = n_admitted_ >= static_cast<std::size_t>(options_.min_samples) && n_admitted_ >= next_attempt_size_;
+  if (trigger_->Fire(input) && input.eligible) pending_ = Pending{sample.t_s, sample.pdop};
 }
 
 FeedResult AnchorInitializer::Feed(const RangeSample& sample) {
   FeedResult out;
   // A non-positive range carries no geometry (and would break the 1/d_k rows of Eq. (4)).
   out.accepted = sample.range_m > 0.0 && std::isfinite(sample.range_m) && filter_->Accept(sample);  // Sec. III-B
-  if (out.accepted) {
-    pdop_.Add(sample.p_world_tag, sample.range_m);  // Eq. (4), O(1)
-    if (!initialized_) {
-      if (range_m_.empty()) t_first_s_ = sample.t_s;
-      p_world_tag_.push_back(sample.p_world_tag);
-      range_m_.push_back(sample.range_m);
-    }
-  }
+  if (out.accepted) pdop_.Add(sample.p_world_tag, sample.range_m);                                    // Eq. (4), O(1)
   out.n_accepted = pdop_.count();
   out.pdop = pdop_.Value();
   if (!out.accepted || initialized_) return out;
 
-  TriggerInput input;
-  input.t_s = sample.t_s;
-  input.t_first_s = t_first_s_;
-  input.p_world_tag = p_world_tag_;
-  input.range_m = range_m_;
-  input.pdop = out.pdop;
-  input.eligible = static_cast<int>(range_m_.size()) >= options_.min_samples && range_m_.size() >= next_attempt_size_;
-  if (!trigger_->Fire(input) || !input.eligible) return out;
-
-  InitEvent event = SolveNow(sample.t_s);
-  if (Succeeded(event.solve.status)) {
-    initialized_ = true;
-    out.event = event;
+  const Accepted accepted{sample.t_s, sample.p_world_tag, sample.range_m, out.pdop};
+  if (pending_) {  // a deferred solve decides whether this sample is still needed
+    if (queued_.size() < static_cast<std::size_t>(options_.max_buffered_samples)) {
+      queued_.push_back(accepted);
+    } else {
+      ++samples_dropped_while_pending_;
+    }
   } else {
-    last_failed_solve_ = event.solve;
-    next_attempt_size_ = static_cast<std::size_t>(std::ceil(range_m_.size() * options_.retry_growth));
+    Admit(accepted);
+    if (pending_ && !defer_solves_) out.event = RunPendingSolve();
   }
+  out.solve_pending = pending_.has_value();
   return out;
 }
 
+std::optional<InitEvent> AnchorInitializer::RunPendingSolve() {
+  if (!pending_) return std::nullopt;
+  InitEvent event = SolveNow(pending_->t_s, pending_->pdop);
+  pending_.reset();
+  if (Succeeded(event.solve.status)) {
+    initialized_ = true;
+    queued_.clear();
+    return event;
+  }
+  last_failed_solve_ = event.solve;
+  next_attempt_size_ = static_cast<std::size_t>(std::ceil(static_cast<double>(n_admitted_) * options_.retry_growth));
+  // Catch up on what arrived while the solve was pending (nothing, when solving inline).
+  while (!queued_.empty() && !pending_) {
+    Admit(queued_.front());
+    queued_.pop_front();
+  }
+  return std::nullopt;
+}
+
 std::optional<InitEvent> AnchorInitializer::Finish(double t_s) {
+  while (pending_) {
+    if (std::optional<InitEvent> event = RunPendingSolve()) return event;
+  }
   if (trigger_->online() || initialized_) return std::nullopt;
-  InitEvent event = SolveNow(t_s);
+  InitEvent event = SolveNow(t_s, pdop_.Value());
   initialized_ = Succeeded(event.solve.status);
   return event;
+}
+
+AnchorInitializer MakePaperInitializer(int anchor_id, const PaperChainOptions& options,
+                                       std::shared_ptr<const LogPartitionTable> table) {
+  return AnchorInitializer(anchor_id, options.initializer, std::make_unique<ConsistencyFilter>(options.filter),
+                           std::make_unique<ClosestPointPdopTrigger>(options.pdop_threshold),
+                           std::make_shared<AnchorSolver>(options.solver, std::move(table)));
 }
 
 }  // namespace anchorbench::estimator

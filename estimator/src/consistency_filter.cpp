@@ -6,11 +6,11 @@ namespace anchorbench::estimator {
 
 bool ConsistencyFilterOptions::IsValid(std::string* why) const {
   if (!(tau_m >= 0.0) || !std::isfinite(tau_m)) {
-    if (why) *why = "tau_m must be a finite number >= 0";
+    if (why) *why = "tau_m must be >= 0";
     return false;
   }
-  if (reseed_after_rejections < 0) {
-    if (why) *why = "reseed_after_rejections must be >= 0";
+  if (reseed_after_rejections < 0 || reseed_after_rejections > 1000000) {
+    if (why) *why = "reseed_after_rejections must be in [0, 1000000]";
     return false;
   }
   return true;

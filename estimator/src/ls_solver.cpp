@@ -4,7 +4,7 @@
 
 #include <Eigen/Cholesky>
 
-#include "normal_equations.hpp"
+#include "numerics.hpp"
 
 namespace anchorbench::estimator {
 namespace {
@@ -74,8 +74,12 @@ bool ParseLsPivot(std::string_view name, LsPivot* pivot) {
 }
 
 bool LsOptions::IsValid(std::string* why) const {
-  if (!(sigma_range_m > 0.0) || !(sigma_position_m >= 0.0)) {
-    if (why) *why = "sigma_range_m must be > 0 and sigma_position_m >= 0";
+  if (!(sigma_range_m > 0.0) || !std::isfinite(sigma_range_m)) {
+    if (why) *why = "sigma_range_m must be > 0";
+    return false;
+  }
+  if (!(sigma_position_m >= 0.0) || !std::isfinite(sigma_position_m)) {
+    if (why) *why = "sigma_position_m must be >= 0";
     return false;
   }
   return true;
@@ -84,7 +88,7 @@ bool LsOptions::IsValid(std::string* why) const {
 SolveResult SolveDoubleDifferenceLs(std::span<const Eigen::Vector3d> p_world_tag,
                                     std::span<const double> range_m, const LsOptions& options) {
   SolveResult result;
-  if (p_world_tag.size() < 6 || p_world_tag.size() != range_m.size()) {
+  if (range_m.size() < kMinSamplesLs || p_world_tag.size() != range_m.size()) {
     result.status = SolveStatus::kTooFewSamples;
     return result;
   }
@@ -131,7 +135,7 @@ SolveResult SolveDoubleDifferenceLs(std::span<const Eigen::Vector3d> p_world_tag
 SolveResult SolveSingleDifferenceLs(std::span<const Eigen::Vector3d> p_world_tag, std::span<const double> range_m) {
   SolveResult result;
   const std::size_t n = range_m.size();
-  if (n < 6 || p_world_tag.size() != n) {
+  if (n < kMinSamplesLs || p_world_tag.size() != n) {
     result.status = SolveStatus::kTooFewSamples;
     return result;
   }
@@ -149,9 +153,7 @@ SolveResult SolveSingleDifferenceLs(std::span<const Eigen::Vector3d> p_world_tag
     rhs += b * a;
   }
   const Eigen::LDLT<Eigen::Matrix<double, 5, 5>> ldlt(normal);
-  const Vector5 pivots = ldlt.vectorD();
-  if (ldlt.info() != Eigen::Success || !normal.allFinite() || !(pivots.maxCoeff() > 0.0) ||
-      !(pivots.minCoeff() > 1e-12 * pivots.maxCoeff())) {
+  if (!normal.allFinite() || !internal::IsWellConditioned(ldlt)) {
     result.status = SolveStatus::kDegenerateGeometry;
     return result;
   }

@@ -1,5 +1,6 @@
 #include "anchorbench/estimator/nlopt_solver.hpp"
 
+#include <array>
 #include <cmath>
 #include <vector>
 
@@ -7,13 +8,25 @@
 
 #include "anchorbench/estimator/ls_solver.hpp"
 #include "anchorbench/estimator/nls_solver.hpp"
+#include "anchorbench/estimator/range_residual.hpp"
 
 namespace anchorbench::estimator {
 namespace {
 
+// Our settings, not the paper's (it uses LM). The box keeps global algorithms near the LS seed;
+// the first steps start local derivative-free algorithms at the scale of a range error instead
+// of a fraction of the box; the tolerances ask for convergence far below the 1 mm step tolerance
+// of the alternation, within a budget no well-posed problem here comes near.
+constexpr double kBoxHalfWidthPosition_m = 20.0;
+constexpr double kBoxHalfWidthBias_m = 5.0;
+constexpr std::array<double, 4> kFirstStep = {0.5, 0.5, 0.5, 0.2};  // p_A (m), gamma (m)
+constexpr double kRelativeXTolerance = 1e-10;
+constexpr double kRelativeFTolerance = 1e-14;
 constexpr int kMaxEvaluations = 20000;
-
 constexpr int kMaxAlternations = 30;
+constexpr double kRelativeStepForGradient = 1e-6;  // central differences for gradient-based algorithms
+
+using Theta = std::vector<double>;  // (x, y, z, gamma), as NLopt takes it
 
 // The robust cost of Eq. (12) at a fixed kernel shape alpha, over theta = x[0..3].
 struct Problem {
@@ -25,17 +38,17 @@ struct Problem {
   double Objective(const double* x) const {
     const Eigen::Vector3d anchor(x[0], x[1], x[2]);
     double sum_rho = 0.0;
-    for (std::size_t k = 0; k < d.size(); ++k) sum_rho += Rho(((p[k] - anchor).norm() + x[3] - d[k]) / c, alpha);
+    for (std::size_t k = 0; k < d.size(); ++k) sum_rho += Rho(RangeResidual(anchor, x[3], p[k], d[k]) / c, alpha);
     return sum_rho;
   }
 };
 
 double Evaluate(unsigned n, const double* x, double* gradient, void* data) {
   const Problem& problem = *static_cast<const Problem*>(data);
-  if (gradient) {  // central differences for the gradient-based algorithms
+  if (gradient) {
     std::vector<double> shifted(x, x + n);
     for (unsigned i = 0; i < n; ++i) {
-      const double h = 1e-6 * std::max(1.0, std::abs(x[i]));
+      const double h = kRelativeStepForGradient * std::max(1.0, std::abs(x[i]));
       shifted[i] = x[i] + h;
       const double up = problem.Objective(shifted.data());
       shifted[i] = x[i] - h;
@@ -47,69 +60,116 @@ double Evaluate(unsigned n, const double* x, double* gradient, void* data) {
   return problem.Objective(x);
 }
 
-}  // namespace
-
-std::unique_ptr<NloptSolver> NloptSolver::Create(const std::string& algorithm, const AnchorSolverOptions& options,
-                                                 std::uint64_t seed) {
-  const nlopt_algorithm a = nlopt_algorithm_from_string(algorithm.c_str());
-  if (static_cast<int>(a) < 0 || a >= NLOPT_NUM_ALGORITHMS) return nullptr;
-  return std::unique_ptr<NloptSolver>(new NloptSolver(static_cast<int>(a), options, seed));
+// The alpha step: the shape that best explains the residuals at theta (as lm_adaptive).
+double SelectAlpha(AlphaSelector& selector, const Problem& problem, const Theta& x, std::optional<double> previous) {
+  selector.Clear();
+  const Eigen::Vector3d anchor(x[0], x[1], x[2]);
+  for (std::size_t k = 0; k < problem.d.size(); ++k) {
+    selector.Add(RangeResidual(anchor, x[3], problem.p[k], problem.d[k]) / problem.c);
+  }
+  return selector.Select(previous);
 }
 
-NloptSolver::NloptSolver(int algorithm, const AnchorSolverOptions& options, std::uint64_t seed)
-    : algorithm_(algorithm), options_(options), seed_(seed),
-      table_(LogPartitionTable::Shared(options.nls.truncation, options.nls.alpha_min)) {}
+// The theta step: the NLopt algorithm on the cost at a fixed alpha, inside the box, from x.
+void MinimizeTheta(int algorithm, const Problem& problem, const Theta& lower, const Theta& upper, Theta& x) {
+  try {
+    nlopt::opt optimizer(static_cast<nlopt::algorithm>(algorithm), 4);
+    nlopt::opt local(nlopt::LN_BOBYQA, 4);  // for the algorithms that need a local one (MLSL, AUGLAG)
+    local.set_xtol_rel(kRelativeXTolerance);
+    optimizer.set_local_optimizer(local);
+    optimizer.set_lower_bounds(lower);
+    optimizer.set_upper_bounds(upper);
+    optimizer.set_min_objective(Evaluate, const_cast<Problem*>(&problem));
+    optimizer.set_initial_step(std::vector<double>(kFirstStep.begin(), kFirstStep.end()));
+    optimizer.set_xtol_rel(kRelativeXTolerance);
+    optimizer.set_ftol_rel(kRelativeFTolerance);
+    optimizer.set_maxeval(kMaxEvaluations);
+    double cost = 0.0;
+    optimizer.optimize(x, cost);
+  } catch (const std::exception&) {
+    // NLopt gave up (round-off, invalid arguments, ...); x holds its best point so far.
+  }
+}
+
+double Distance(const Theta& a, const Theta& b) {
+  return std::sqrt(std::pow(a[0] - b[0], 2) + std::pow(a[1] - b[1], 2) + std::pow(a[2] - b[2], 2) +
+                   std::pow(a[3] - b[3], 2));
+}
+
+}  // namespace
+
+bool NloptSolver::IsStochastic(int algorithm) {
+  switch (static_cast<nlopt_algorithm>(algorithm)) {
+    case NLOPT_GN_DIRECT_L_RAND:
+    case NLOPT_GN_DIRECT_L_RAND_NOSCAL:
+    case NLOPT_GD_STOGO_RAND:
+    case NLOPT_LN_PRAXIS:
+    case NLOPT_GN_CRS2_LM:
+    case NLOPT_GN_MLSL:
+    case NLOPT_GD_MLSL:
+    case NLOPT_G_MLSL:
+    case NLOPT_GN_ISRES:
+    case NLOPT_GN_ESCH:
+      return true;
+    default:
+      return false;
+  }
+}
+
+bool NloptSolver::Accepts(const std::string& algorithm, std::string* why) {
+  const nlopt_algorithm a = nlopt_algorithm_from_string(algorithm.c_str());
+  if (static_cast<int>(a) < 0 || a >= NLOPT_NUM_ALGORITHMS) {
+    if (why) *why = "'" + algorithm + "' is not an NLopt algorithm (e.g. LN_BOBYQA, LN_SBPLX, LD_LBFGS)";
+    return false;
+  }
+  if (IsStochastic(static_cast<int>(a))) {
+    if (why) {
+      *why = "'" + algorithm + "' draws from NLopt's process-wide random generator, so its results would not repeat; "
+             "choose a deterministic algorithm";
+    }
+    return false;
+  }
+  return true;
+}
+
+std::unique_ptr<NloptSolver> NloptSolver::Create(const std::string& algorithm, const AnchorSolverOptions& options,
+                                                 std::shared_ptr<const LogPartitionTable> table, std::string* why) {
+  if (!Accepts(algorithm, why)) return nullptr;
+  const nlopt_algorithm a = nlopt_algorithm_from_string(algorithm.c_str());
+  if (!table || table->truncation() != options.nls.truncation || table->alpha_min() != options.nls.alpha_min) {
+    table = std::make_shared<const LogPartitionTable>(options.nls.truncation, options.nls.alpha_min);
+  }
+  return std::unique_ptr<NloptSolver>(new NloptSolver(static_cast<int>(a), options, std::move(table)));
+}
+
+NloptSolver::NloptSolver(int algorithm, const AnchorSolverOptions& options, std::shared_ptr<const LogPartitionTable> table)
+    : algorithm_(algorithm), options_(options), table_(std::move(table)) {}
 
 SolveResult NloptSolver::Solve(std::span<const Eigen::Vector3d> p_world_tag, std::span<const double> range_m) const {
-  const SolveResult seed_solution = SolveDoubleDifferenceLs(p_world_tag, range_m, options_.ls);
-  if (!Succeeded(seed_solution.status)) return seed_solution;
-  std::vector<double> x = {seed_solution.p_world_anchor.x(), seed_solution.p_world_anchor.y(),
-                           seed_solution.p_world_anchor.z(), seed_solution.bias_m};
-  const std::vector<double> lower = {x[0] - 20.0, x[1] - 20.0, x[2] - 20.0, x[3] - 5.0};
-  const std::vector<double> upper = {x[0] + 20.0, x[1] + 20.0, x[2] + 20.0, x[3] + 5.0};
-  const double c = options_.nls.kernel_scale_m;
-  SolveStatus status = SolveStatus::kMaxIterations;
+  const SolveResult seed = SolveDoubleDifferenceLs(p_world_tag, range_m, options_.ls);
+  if (!Succeeded(seed.status)) return seed;
+  Theta x = {seed.p_world_anchor.x(), seed.p_world_anchor.y(), seed.p_world_anchor.z(), seed.bias_m};
+  const Theta half = {kBoxHalfWidthPosition_m, kBoxHalfWidthPosition_m, kBoxHalfWidthPosition_m, kBoxHalfWidthBias_m};
+  Theta lower(4), upper(4);
+  for (int i = 0; i < 4; ++i) {
+    lower[i] = x[i] - half[i];
+    upper[i] = x[i] + half[i];
+  }
+  Problem problem{p_world_tag, range_m, options_.nls.kernel_scale_m, 2.0};
   AlphaSelector selector(table_);
-  double alpha = 2.0;
+  SolveStatus status = SolveStatus::kMaxIterations;
   int alternation = 0;
-  // The alternation of lm_adaptive with NLopt as the theta step: first theta at alpha = 2 (into
-  // the basin), then alpha from the residuals and theta at that alpha, until both settle.
+  // First theta at alpha = 2 (into the basin), then alpha from the residuals and theta at that
+  // alpha, until both settle.
   for (; alternation < kMaxAlternations; ++alternation) {
-    const double previous_alpha = alpha;
+    const double previous_alpha = problem.alpha;
     if (alternation > 0) {
-      selector.Clear();
-      const Eigen::Vector3d anchor(x[0], x[1], x[2]);
-      for (std::size_t k = 0; k < range_m.size(); ++k) {
-        selector.Add(((p_world_tag[k] - anchor).norm() + x[3] - range_m[k]) / c);
-      }
-      alpha = selector.Select(alternation > 1 ? std::optional<double>(alpha) : std::nullopt);
+      problem.alpha = SelectAlpha(selector, problem, x, alternation > 1 ? std::optional(problem.alpha) : std::nullopt);
     }
-    const Problem problem{p_world_tag, range_m, c, alpha};
-    const std::vector<double> before = x;
-    try {
-      nlopt::opt optimizer(static_cast<nlopt::algorithm>(algorithm_), 4);
-      nlopt::opt local(nlopt::LN_BOBYQA, 4);  // for the algorithms that need a local one (MLSL, AUGLAG)
-      local.set_xtol_rel(1e-10);
-      optimizer.set_local_optimizer(local);
-      optimizer.set_lower_bounds(lower);
-      optimizer.set_upper_bounds(upper);
-      optimizer.set_min_objective(Evaluate, const_cast<Problem*>(&problem));
-      // Local derivative-free algorithms start from a simplex/trust region of this size; the
-      // default (a fraction of the +-20 m box) starts far from the anchor.
-      optimizer.set_initial_step(std::vector<double>{0.5, 0.5, 0.5, 0.2});
-      optimizer.set_xtol_rel(1e-10);
-      optimizer.set_ftol_rel(1e-14);
-      optimizer.set_maxeval(kMaxEvaluations);
-      nlopt::srand(static_cast<unsigned long>(seed_ + static_cast<std::uint64_t>(alternation)));
-      double cost = 0.0;
-      optimizer.optimize(x, cost);
-    } catch (const std::exception&) {
-      // NLopt gave up (round-off, invalid arguments, ...); x holds its best point so far.
-    }
-    const double step_m = std::sqrt(std::pow(x[0] - before[0], 2) + std::pow(x[1] - before[1], 2) +
-                                    std::pow(x[2] - before[2], 2) + std::pow(x[3] - before[3], 2));
-    if (alternation > 0 && step_m < options_.nls.step_tolerance_m &&
-        std::abs(alpha - previous_alpha) < options_.nls.alpha_tolerance) {
+    const Theta before = x;
+    MinimizeTheta(algorithm_, problem, lower, upper, x);
+    if (alternation > 0 && Distance(x, before) < options_.nls.step_tolerance_m &&
+        std::abs(problem.alpha - previous_alpha) < options_.nls.alpha_tolerance) {
       status = SolveStatus::kConverged;
       break;
     }
@@ -119,8 +179,8 @@ SolveResult NloptSolver::Solve(std::span<const Eigen::Vector3d> p_world_tag, std
   for (int i = 0; i < 4; ++i) {
     if (x[i] <= lower[i] + 1e-9 || x[i] >= upper[i] - 1e-9) status = SolveStatus::kNoConvergence;
   }
-  Eigen::Vector4d theta(x[0], x[1], x[2], x[3]);
-  return SummarizeSolution(p_world_tag, range_m, theta, alpha, c, status, alternation + 1);
+  return SummarizeSolution(p_world_tag, range_m, Eigen::Vector4d(x[0], x[1], x[2], x[3]), problem.alpha,
+                           problem.c, status, alternation + 1);
 }
 
 }  // namespace anchorbench::estimator

@@ -3,7 +3,9 @@
 #include <cmath>
 #include <optional>
 
-#include "normal_equations.hpp"
+#include "anchorbench/estimator/range_residual.hpp"
+#include "anchorbench/estimator/solver.hpp"
+#include "numerics.hpp"
 
 namespace anchorbench::estimator {
 namespace {
@@ -11,21 +13,6 @@ namespace {
 constexpr int kMaxDampingIncreases = 12;
 
 using Vector4 = Eigen::Vector4d;
-
-// Residual r_k and Jacobian row dr_k/dtheta = [(p_A - p_k)^T / ||p_A - p_k||, 1].
-inline double Residual(const Vector4& theta, const Eigen::Vector3d& p, double d, Vector4* jacobian) {
-  const Eigen::Vector3d diff = theta.head<3>() - p;
-  const double distance = diff.norm();
-  if (jacobian) {
-    if (distance > 1e-12) {
-      jacobian->head<3>() = diff / distance;
-    } else {
-      jacobian->head<3>().setZero();  // anchor on the tag: the direction is undefined
-    }
-    (*jacobian)(3) = 1.0;
-  }
-  return distance + theta(3) - d;
-}
 
 struct NormalEquations {
   Eigen::Matrix4d information = Eigen::Matrix4d::Zero();  // sum w J J^T
@@ -39,7 +26,7 @@ NormalEquations BuildNormalEquations(std::span<const Eigen::Vector3d> p, std::sp
   NormalEquations eq;
   Vector4 jacobian;
   for (std::size_t k = 0; k < d.size(); ++k) {
-    const double r = Residual(theta, p[k], d[k], &jacobian);
+    const double r = RangeResidual(theta, p[k], d[k], &jacobian);
     const KernelValue kernel = EvaluateKernel(r / c, alpha);
     eq.information.noalias() += kernel.weight * jacobian * jacobian.transpose();
     eq.gradient += (kernel.weight * r) * jacobian;
@@ -55,7 +42,7 @@ double Cost(std::span<const Eigen::Vector3d> p, std::span<const double> d, const
   if (selector) selector->Clear();
   double cost = 0.0;
   for (std::size_t k = 0; k < d.size(); ++k) {
-    const double x = Residual(theta, p[k], d[k], nullptr) / c;
+    const double x = RangeResidual(theta.head<3>(), theta(3), p[k], d[k]) / c;
     cost += Rho(x, alpha);
     if (selector) selector->Add(x);
   }
@@ -88,20 +75,24 @@ bool NlsOptions::IsValid(std::string* why) const {
     if (why) *why = message;
     return false;
   };
-  if (!(alpha_min < 2.0) || !std::isfinite(alpha_min)) return fail("alpha_min must be finite and < 2");
-  if (!(fixed_alpha <= 2.0) || !std::isfinite(fixed_alpha)) return fail("fixed_alpha must be finite and <= 2");
+  // Below about -1000 the kernel is flat to double precision: nothing would distinguish alphas.
+  if (!(alpha_min >= -1000.0 && alpha_min < 2.0)) return fail("alpha_min must be in [-1000, 2)");
+  if (!(fixed_alpha >= -1000.0 && fixed_alpha <= 2.0)) return fail("fixed_alpha must be in [-1000, 2]");
   if (!(kernel_scale_m > 0.0) || !std::isfinite(kernel_scale_m)) return fail("kernel_scale_m must be > 0");
   if (!(truncation > 0.0) || !std::isfinite(truncation)) return fail("truncation must be > 0");
-  if (max_iterations < 1) return fail("max_iterations must be >= 1");
-  if (!(step_tolerance_m > 0.0)) return fail("step_tolerance_m must be > 0");
-  if (!(alpha_tolerance > 0.0)) return fail("alpha_tolerance must be > 0");
-  if (!(initial_damping >= 0.0)) return fail("initial_damping must be >= 0");
+  if (max_iterations < 1 || max_iterations > 100000) return fail("max_iterations must be in [1, 100000]");
+  if (!(step_tolerance_m > 0.0) || !std::isfinite(step_tolerance_m)) return fail("step_tolerance_m must be > 0");
+  if (!(alpha_tolerance > 0.0) || !std::isfinite(alpha_tolerance)) return fail("alpha_tolerance must be > 0");
+  if (!(initial_damping >= 0.0) || !std::isfinite(initial_damping)) return fail("initial_damping must be >= 0");
   return true;
 }
 
-NlsSolver::NlsSolver(const NlsOptions& options) : options_(options) {
-  if (options_.kernel == KernelMode::kAdaptive) {
-    table_ = LogPartitionTable::Shared(options_.truncation, options_.alpha_min);
+NlsSolver::NlsSolver(const NlsOptions& options, std::shared_ptr<const LogPartitionTable> table)
+    : options_(options), table_(std::move(table)) {
+  if (options_.kernel != KernelMode::kAdaptive) {
+    table_.reset();
+  } else if (!table_ || table_->truncation() != options_.truncation || table_->alpha_min() != options_.alpha_min) {
+    table_ = std::make_shared<const LogPartitionTable>(options_.truncation, options_.alpha_min);
   }
 }
 
@@ -161,7 +152,7 @@ SolveResult NlsSolver::Solve(std::span<const Eigen::Vector3d> p_world_tag, std::
                              const Eigen::Vector3d& p_world_anchor_initial, double bias_initial_m) const {
   SolveResult result;
   const std::size_t n = range_m.size();
-  if (n < 5 || p_world_tag.size() != n) {
+  if (n < kMinSamplesNls || p_world_tag.size() != n) {
     result.status = SolveStatus::kTooFewSamples;
     return result;
   }

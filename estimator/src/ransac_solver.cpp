@@ -1,27 +1,44 @@
 #include "anchorbench/estimator/ransac_solver.hpp"
 
+#include <algorithm>
 #include <cmath>
+#include <limits>
 #include <numeric>
 #include <random>
 #include <vector>
 
+#include "anchorbench/estimator/range_residual.hpp"
+
 namespace anchorbench::estimator {
 
-int RansacOptions::Iterations() const {
+double RansacOptions::RequiredIterations() const {
   const double clean_subset = std::pow(1.0 - outlier_fraction, subset_size);
-  if (clean_subset >= 1.0) return 1;
-  return static_cast<int>(std::ceil(std::log(1.0 - success_probability) / std::log(1.0 - clean_subset)));
+  if (clean_subset >= 1.0) return 1.0;
+  const double log_miss = std::log(1.0 - clean_subset);
+  // (1 - e)^s below the double's resolution near 1: no number of tries finds a clean subset.
+  if (!(log_miss < 0.0)) return std::numeric_limits<double>::infinity();
+  return std::ceil(std::log(1.0 - success_probability) / log_miss);
+}
+
+int RansacOptions::Iterations() const {
+  return static_cast<int>(std::min(RequiredIterations(), static_cast<double>(kMaxIterations)));
 }
 
 bool RansacOptions::IsValid(std::string* why) const {
-  const bool ok = success_probability > 0.0 && success_probability < 1.0 && subset_size >= 6 &&
-                  outlier_fraction >= 0.0 && outlier_fraction < 1.0 && inlier_threshold_m > 0.0 &&
-                  Iterations() <= 1000000;
-  if (!ok && why) {
-    *why = "ransac needs 0 < success_probability < 1, subset_size >= 6, 0 <= outlier_fraction < 1, "
-           "inlier_threshold_m > 0, and at most 1e6 iterations";
+  auto fail = [why](std::string message) {
+    if (why) *why = std::move(message);
+    return false;
+  };
+  if (!(success_probability > 0.0 && success_probability < 1.0)) return fail("success_probability must be in (0, 1)");
+  if (subset_size < kMinSamplesLs) return fail("subset_size must be >= " + std::to_string(kMinSamplesLs));
+  if (!(outlier_fraction >= 0.0 && outlier_fraction < 1.0)) return fail("outlier_fraction must be in [0, 1)");
+  if (!(inlier_threshold_m > 0.0) || !std::isfinite(inlier_threshold_m)) return fail("inlier_threshold_m must be > 0");
+  if (!(RequiredIterations() <= kMaxIterations)) {
+    return fail("subset_size " + std::to_string(subset_size) + " with outlier_fraction " +
+                std::to_string(outlier_fraction) + " needs more than " + std::to_string(kMaxIterations) +
+                " subsets (n = log(1-p)/log(1-(1-e)^s)); use a smaller subset or outlier fraction");
   }
-  return ok;
+  return true;
 }
 
 SolveResult RansacSolver::Solve(std::span<const Eigen::Vector3d> p, std::span<const double> d) const {
@@ -34,7 +51,7 @@ SolveResult RansacSolver::Solve(std::span<const Eigen::Vector3d> p, std::span<co
   std::vector<Eigen::Vector3d> subset_p(s), inlier_p;
   std::vector<double> subset_d(s), inlier_d;
   auto is_inlier = [&](std::size_t k, const SolveResult& fit) {
-    return std::abs((p[k] - fit.p_world_anchor).norm() + fit.bias_m - d[k]) < options_.inlier_threshold_m;
+    return std::abs(RangeResidual(fit.p_world_anchor, fit.bias_m, p[k], d[k])) < options_.inlier_threshold_m;
   };
   std::size_t best_inliers = 0;
   SolveResult best;
@@ -56,7 +73,7 @@ SolveResult RansacSolver::Solve(std::span<const Eigen::Vector3d> p, std::span<co
       best = candidate;
     }
   }
-  if (best_inliers < 6) {
+  if (best_inliers < static_cast<std::size_t>(kMinSamplesLs)) {
     best.status = best_inliers == 0 ? SolveStatus::kNoConvergence : SolveStatus::kTooFewSamples;
     return best;
   }

@@ -12,8 +12,19 @@ namespace anchorbench::estimator {
 namespace {
 
 constexpr double kLimitTolerance = 1e-9;  // |alpha - 2| or |alpha| below this: use the exact limit
+// log Z~ is tabulated every 0.01 in alpha and interpolated linearly: the alpha search stops at a
+// tolerance of 0.01 (AlphaSelector::kAlphaTolerance), so a finer table would not change a choice.
 constexpr double kTableAlphaStep = 0.01;
 constexpr int kSimpsonIntervals = 1000;  // over [0, truncation]; the integrand is smooth
+
+// The alpha search (ours; the paper does not say how alpha is minimized). From scratch, a grid of
+// kCoarseGridPoints over [alpha_min, 2] (every 1 at the default alpha_min = -10) guards against
+// the NLL's shallow second minimum; COBYLA then refines around the best grid point (or the
+// previous iteration's alpha) with a first step of a quarter grid cell, within
+// kMaxRefineEvaluations evaluations: it needs ~15 to reach the 0.01 tolerance from there.
+constexpr int kCoarseGridPoints = 13;
+constexpr double kFirstStepInGridCells = 0.25;
+constexpr int kMaxRefineEvaluations = 40;
 
 bool IsL2(double alpha) { return std::abs(alpha - 2.0) < kLimitTolerance; }
 bool IsCauchy(double alpha) { return std::abs(alpha) < kLimitTolerance; }
@@ -61,15 +72,13 @@ LogPartitionTable::LogPartitionTable(double truncation, double alpha_min)
   }
 }
 
-std::shared_ptr<const LogPartitionTable> LogPartitionTable::Shared(double truncation, double alpha_min) {
-  static std::mutex mutex;
-  static std::vector<std::shared_ptr<const LogPartitionTable>> tables;
-  std::lock_guard<std::mutex> lock(mutex);
-  for (const auto& table : tables) {
+std::shared_ptr<const LogPartitionTable> LogPartitionTables::Get(double truncation, double alpha_min) {
+  std::lock_guard<std::mutex> lock(mutex_);
+  for (const auto& table : tables_) {
     if (table->truncation() == truncation && table->alpha_min() == alpha_min) return table;
   }
-  tables.push_back(std::make_shared<const LogPartitionTable>(truncation, alpha_min));
-  return tables.back();
+  tables_.push_back(std::make_shared<const LogPartitionTable>(truncation, alpha_min));
+  return tables_.back();
 }
 
 double LogPartitionTable::LogZ(double alpha) const {
@@ -87,7 +96,7 @@ AlphaSelector::AlphaSelector(std::shared_ptr<const LogPartitionTable> table)
   };
   optimizer_->set_min_objective(objective, this);
   optimizer_->set_xtol_abs(kAlphaTolerance);
-  optimizer_->set_maxeval(40);
+  optimizer_->set_maxeval(kMaxRefineEvaluations);
 }
 
 AlphaSelector::~AlphaSelector() = default;
@@ -98,7 +107,8 @@ void AlphaSelector::Clear() {
   total_count_ = 0.0;
 }
 
-// Upper edges of the histogram bins in |x|: even in log(1 + |x|) up to kMaxAbsX.
+// Upper edges of the histogram bins in |x|: even in log(1 + |x|) up to kMaxAbsX. Computed once,
+// immutable (a constant table, not state).
 static const std::array<double, AlphaSelector::kBins - 1>& BinEdges() {
   static const auto edges = [] {
     std::array<double, AlphaSelector::kBins - 1> e{};
@@ -136,11 +146,10 @@ double AlphaSelector::ExactNll(std::span<const double> x, double alpha, const Lo
   return static_cast<double>(x.size()) * table.LogZ(alpha) + sum_rho;
 }
 
-double AlphaSelector::Select(std::optional<double> previous_alpha) const {
+double AlphaSelector::Select(std::optional<double> previous_alpha) {
   const double alpha_min = table_->alpha_min();
   if (total_count_ == 0.0) return 2.0;
-  constexpr int kGrid = 13;
-  const double grid_step = (2.0 - alpha_min) / (kGrid - 1);
+  const double grid_step = (2.0 - alpha_min) / (kCoarseGridPoints - 1);
   double best_alpha = 2.0;
   double best_nll = Nll(2.0);
   double lower = alpha_min, upper = 2.0;
@@ -151,7 +160,7 @@ double AlphaSelector::Select(std::optional<double> previous_alpha) const {
   } else {
     // From scratch, a coarse grid first: the NLL can have a shallow second minimum that a local
     // search from a fixed start would miss.
-    for (int i = 0; i < kGrid - 1; ++i) {
+    for (int i = 0; i < kCoarseGridPoints - 1; ++i) {
       const double alpha = alpha_min + i * grid_step;
       const double nll = Nll(alpha);
       if (nll < best_nll) {
@@ -165,7 +174,7 @@ double AlphaSelector::Select(std::optional<double> previous_alpha) const {
   nlopt::opt& optimizer = *optimizer_;
   optimizer.set_lower_bounds(lower);
   optimizer.set_upper_bounds(upper);
-  optimizer.set_initial_step(0.25 * grid_step);
+  optimizer.set_initial_step(kFirstStepInGridCells * grid_step);
   std::vector<double> alpha{best_alpha};
   double nll = best_nll;
   try {

@@ -4,24 +4,26 @@
 
 #include <gtest/gtest.h>
 
-#include "anchorbench/estimator/components.hpp"
-#include "anchorbench/estimator/pdop.hpp"
-#include "test_data.hpp"
+#include "anchorbench/estimator/triggers.hpp"
+#include "anchorbench/testing/test_data.hpp"
 
 namespace anchorbench::estimator {
 namespace {
 
-using testing::Builtins;
 using testing::PassBy;
 
 // Named, not `{}`: GCC 12 warns falsely (-Wmaybe-uninitialized) on brace temporaries of it.
-const InitializerOptions kDefaults;
+const PaperChainOptions kDefaults;
+
+// The consistency check, the given trigger and LS + adaptive NLS, typed, without a registry.
+AnchorInitializer Chain(std::unique_ptr<InitTrigger> trigger, const InitializerOptions& options = {}) {
+  return AnchorInitializer(7, options, std::make_unique<ConsistencyFilter>(), std::move(trigger),
+                           std::make_shared<AnchorSolver>());
+}
 
 TEST(AnchorInitializer, GatedFiresOnceWhenPdopDropsBelowThreshold) {
   const Eigen::Vector3d p_anchor(0, 4, 3);
-  InitializerOptions options;
-  options.trigger.pdop_threshold = 1.0;
-  AnchorInitializer initializer(7, options);
+  AnchorInitializer initializer = MakePaperInitializer(7, kDefaults);
   std::optional<InitEvent> event;
   double pdop_before = 0.0;
   for (const RangeSample& s : PassBy(p_anchor, 0.05, 1)) {
@@ -44,7 +46,7 @@ TEST(AnchorInitializer, GatedFiresOnceWhenPdopDropsBelowThreshold) {
 
 TEST(AnchorInitializer, FixedWindowSolvesOnAllDataAtFinish) {
   const Eigen::Vector3d p_anchor(0, 4, 3);
-  AnchorInitializer initializer = MakeInitializer(Builtins(), 7, kDefaults, "fixed_window", 0);
+  AnchorInitializer initializer = Chain(std::make_unique<FixedWindowTrigger>());
   const auto samples = PassBy(p_anchor, 0.05, 2);
   for (const RangeSample& s : samples) EXPECT_FALSE(initializer.Feed(s).event.has_value());
   const auto event = initializer.Finish(samples.back().t_s);
@@ -55,8 +57,7 @@ TEST(AnchorInitializer, FixedWindowSolvesOnAllDataAtFinish) {
 }
 
 TEST(AnchorInitializer, NeverFiresOnAStraightLine) {
-  InitializerOptions options;
-  AnchorInitializer initializer(1, options);
+  AnchorInitializer initializer = MakePaperInitializer(1, kDefaults);
   for (int k = 0; k < 2000; ++k) {
     const Eigen::Vector3d p(0.05 * k, 0.0, 1.0);
     const FeedResult fed = initializer.Feed({0.1 * k, 0, 1, (p - Eigen::Vector3d(50, 3, 3)).norm(), p});
@@ -66,19 +67,88 @@ TEST(AnchorInitializer, NeverFiresOnAStraightLine) {
 }
 
 TEST(AnchorInitializer, RejectsNonPositiveRanges) {
-  AnchorInitializer initializer(1, kDefaults);
+  AnchorInitializer initializer = MakePaperInitializer(1, kDefaults);
   EXPECT_FALSE(initializer.Feed({0.0, 0, 1, 0.0, Eigen::Vector3d::Zero()}).accepted);
   EXPECT_FALSE(initializer.Feed({0.1, 0, 1, -1.0, Eigen::Vector3d::Zero()}).accepted);
   EXPECT_TRUE(initializer.Feed({0.2, 0, 1, 3.0, Eigen::Vector3d::Zero()}).accepted);
+}
+
+// Deferred solves give exactly the inline results, including retries after failed solves: the
+// pass-by starts on a straight stretch where the first solves are degenerate.
+TEST(AnchorInitializer, DeferredSolvesGiveTheInlineResults) {
+  const auto samples = PassBy(Eigen::Vector3d(0, 4, 3), 0.05, 3);
+  for (int every : {1, 7, 1000}) {  // run the pending solve after every sample, every 7th, or at the end
+    AnchorInitializer inline_solves = Chain(std::make_unique<SampleCountTrigger>(25));
+    AnchorInitializer deferred = Chain(std::make_unique<SampleCountTrigger>(25));
+    deferred.SetDeferSolves(true);
+    std::optional<InitEvent> a, b;
+    int pending_seen = 0;
+    for (std::size_t i = 0; i < samples.size(); ++i) {
+      if (const FeedResult fed = inline_solves.Feed(samples[i]); fed.event) a = fed.event;
+      pending_seen += deferred.Feed(samples[i]).solve_pending;
+      if (i % every == 0) {
+        while (deferred.solve_pending()) {
+          if (auto event = deferred.RunPendingSolve()) b = event;
+        }
+      }
+    }
+    if (auto event = deferred.Finish(samples.back().t_s)) b = event;
+    ASSERT_TRUE(a && b) << every;
+    EXPECT_GT(pending_seen, 0);
+    EXPECT_EQ(a->t_s, b->t_s);
+    EXPECT_EQ(a->n_used, b->n_used);
+    EXPECT_EQ(a->pdop_estimate, b->pdop_estimate);
+    EXPECT_EQ(a->solve.p_world_anchor, b->solve.p_world_anchor);
+    EXPECT_EQ(inline_solves.last_failed_solve().has_value(), deferred.last_failed_solve().has_value());
+  }
+}
+
+// With the cap reached, `thin` keeps every 2^k-th sample over the whole run, `keep_first` the
+// first ones; either way the buffer never exceeds the cap and the PDOP still counts everything.
+TEST(AnchorInitializer, TheBufferStaysWithinItsCap) {
+  const auto samples = PassBy(Eigen::Vector3d(0, 4, 3), 0.05, 4);
+  for (BufferPolicy policy : {BufferPolicy::kThin, BufferPolicy::kKeepFirst}) {
+    InitializerOptions options;
+    options.max_buffered_samples = 100;
+    options.at_cap = policy;
+    AnchorInitializer initializer(7, options, std::make_unique<NullFilter>(), std::make_unique<FixedWindowTrigger>(),
+                                  std::make_shared<AnchorSolver>());
+    for (const RangeSample& s : samples) {
+      initializer.Feed(s);
+      ASSERT_LE(initializer.range_m().size(), 100u);
+    }
+    EXPECT_EQ(initializer.pdop().count(), static_cast<int>(samples.size()));
+    EXPECT_EQ(initializer.samples_not_buffered() + static_cast<long>(initializer.range_m().size()),
+              static_cast<long>(samples.size()));
+    if (policy == BufferPolicy::kKeepFirst) {
+      EXPECT_EQ(initializer.range_m().back(), samples[99].range_m);
+    } else {
+      // 1200 samples into 100 slots: every 16th is kept (1200 / 16 = 75), the last kept is 1184.
+      EXPECT_EQ(initializer.range_m().size(), 75u);
+      EXPECT_EQ(initializer.range_m()[1], samples[16].range_m);
+      EXPECT_EQ(initializer.range_m().back(), samples[1184].range_m);
+    }
+    const auto event = initializer.Finish(samples.back().t_s);
+    ASSERT_TRUE(event);
+    EXPECT_TRUE(Succeeded(event->solve.status));
+  }
 }
 
 TEST(InitializerOptions, ValidationNamesTheProblem) {
   InitializerOptions options;
   std::string why;
   EXPECT_TRUE(options.IsValid(&why));
-  options.filter.consistency.tau_m = -1.0;
+  options.min_samples = 5;
   EXPECT_FALSE(options.IsValid(&why));
-  EXPECT_NE(why.find("tau"), std::string::npos);
+  EXPECT_EQ(why.rfind("min_samples", 0), 0u) << why;
+  options = {};
+  options.retry_growth = 1e300;  // would overflow the retry size
+  EXPECT_FALSE(options.IsValid(&why));
+  EXPECT_EQ(why.rfind("retry_growth", 0), 0u) << why;
+  options = {};
+  options.max_buffered_samples = 30;
+  EXPECT_FALSE(options.IsValid(&why));
+  EXPECT_EQ(why.rfind("max_buffered_samples", 0), 0u) << why;
 }
 
 }  // namespace

@@ -2,7 +2,7 @@
 
 #include <gtest/gtest.h>
 
-#include "test_data.hpp"
+#include "anchorbench/testing/test_data.hpp"
 
 namespace anchorbench::estimator {
 namespace {

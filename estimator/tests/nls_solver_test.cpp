@@ -5,7 +5,7 @@
 #include <gtest/gtest.h>
 
 #include "anchorbench/estimator/anchor_solver.hpp"
-#include "test_data.hpp"
+#include "anchorbench/testing/test_data.hpp"
 
 namespace anchorbench::estimator {
 namespace {

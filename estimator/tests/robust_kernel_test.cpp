@@ -6,7 +6,7 @@
 
 #include <gtest/gtest.h>
 
-#include "test_data.hpp"
+#include "anchorbench/testing/test_data.hpp"
 
 namespace anchorbench::estimator {
 namespace {
@@ -61,8 +61,10 @@ TEST(LogPartitionTable, IntegralMatchesReferenceValues) {
 }
 
 TEST(LogPartitionTable, InterpolationMatchesDirectIntegralOffGrid) {
-  const auto table = LogPartitionTable::Shared(10.0, -10.0);
-  EXPECT_EQ(table, LogPartitionTable::Shared(10.0, -10.0));  // built once, shared
+  LogPartitionTables tables;
+  const auto table = tables.Get(10.0, -10.0);
+  EXPECT_EQ(table, tables.Get(10.0, -10.0));  // built once, shared by whoever asks the same owner
+  EXPECT_NE(table, tables.Get(50.0, -10.0));
   for (double alpha : {1.99, 1.234, 0.005, -0.777, -3.3333, -9.995}) {
     EXPECT_NEAR(table->LogZ(alpha), std::log(LogPartitionTable::IntegrateZ(alpha, 10.0)), 2e-5) << alpha;
   }
@@ -78,7 +80,7 @@ std::vector<double> GaussianWithOutliers(int n, double outlier_fraction, std::ui
 }
 
 TEST(AlphaSelector, HistogramNllTracksExactNll) {
-  const auto table = LogPartitionTable::Shared(10.0, -10.0);
+  const auto table = std::make_shared<const LogPartitionTable>(10.0, -10.0);
   const auto x = GaussianWithOutliers(2000, 0.1, 3);
   AlphaSelector selector(table);
   for (double xi : x) selector.Add(xi);
@@ -89,7 +91,7 @@ TEST(AlphaSelector, HistogramNllTracksExactNll) {
 }
 
 TEST(AlphaSelector, GaussianResidualsKeepAlphaNearTwoOutliersPushItNegative) {
-  const auto table = LogPartitionTable::Shared(10.0, -10.0);
+  const auto table = std::make_shared<const LogPartitionTable>(10.0, -10.0);
   AlphaSelector clean(table);
   for (double xi : GaussianWithOutliers(3000, 0.0, 5)) clean.Add(xi);
   EXPECT_GT(clean.Select(), 1.5);  // the Gaussian is the alpha = 2 member of the family

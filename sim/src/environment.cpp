@@ -6,33 +6,35 @@
 namespace anchorbench::sim {
 namespace {
 
+// Messages name the key first ("length_m must be > 0"), so a config reader can point at it.
 bool Fail(std::string* why, const char* message) {
   if (why) *why = message;
   return false;
 }
 
-bool ValidHeights(double min_m, double max_m, double height_m) {
-  return min_m >= 0.0 && min_m <= max_m && max_m <= height_m;
+// The keys tunnels and halls share: a box and the anchors on its walls.
+template <typename Box>
+bool ValidBox(const Box& o, std::string* why) {
+  if (!(o.length_m > 0.0) || !std::isfinite(o.length_m)) return Fail(why, "length_m must be > 0");
+  if (!(o.width_m > 0.0) || !std::isfinite(o.width_m)) return Fail(why, "width_m must be > 0");
+  if (!(o.height_m > 0.0) || !std::isfinite(o.height_m)) return Fail(why, "height_m must be > 0");
+  if (o.num_anchors < 1 || o.num_anchors > kMaxAnchors) return Fail(why, "num_anchors must be in [1, 10000]");
+  if (!(o.anchor_height_min_m >= 0.0)) return Fail(why, "anchor_height_min_m must be >= 0");
+  if (!(o.anchor_height_max_m >= o.anchor_height_min_m && o.anchor_height_max_m <= o.height_m)) {
+    return Fail(why, "anchor_height_max_m must be in [anchor_height_min_m, height_m]");
+  }
+  return true;
 }
 
 }  // namespace
 
 bool TunnelOptions::IsValid(std::string* why) const {
-  if (!(length_m > 0.0 && width_m > 0.0 && height_m > 0.0)) return Fail(why, "tunnel dimensions must be > 0");
-  if (num_anchors < 1) return Fail(why, "num_anchors must be >= 1");
-  if (!ValidHeights(anchor_height_min_m, anchor_height_max_m, height_m))
-    return Fail(why, "anchor heights must satisfy 0 <= min <= max <= height_m");
-  if (!(along_jitter_m >= 0.0)) return Fail(why, "along_jitter_m must be >= 0");
+  if (!ValidBox(*this, why)) return false;
+  if (!(along_jitter_m >= 0.0) || !std::isfinite(along_jitter_m)) return Fail(why, "along_jitter_m must be >= 0");
   return true;
 }
 
-bool HallOptions::IsValid(std::string* why) const {
-  if (!(length_m > 0.0 && width_m > 0.0 && height_m > 0.0)) return Fail(why, "hall dimensions must be > 0");
-  if (num_anchors < 1) return Fail(why, "num_anchors must be >= 1");
-  if (!ValidHeights(anchor_height_min_m, anchor_height_max_m, height_m))
-    return Fail(why, "anchor heights must satisfy 0 <= min <= max <= height_m");
-  return true;
-}
+bool HallOptions::IsValid(std::string* why) const { return ValidBox(*this, why); }
 
 std::vector<Eigen::Vector3d> TunnelAnchors(const TunnelOptions& o, RandomStream& layout) {
   std::vector<Eigen::Vector3d> anchors;

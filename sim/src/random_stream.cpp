@@ -21,9 +21,10 @@ std::array<std::uint32_t, 4> Philox4x32(std::array<std::uint32_t, 4> c, std::arr
   return c;
 }
 
-RandomStream::RandomStream(std::uint64_t seed, std::uint64_t realization, StreamId stream, std::uint32_t substream)
+// Ids beyond their bits are masked rather than allowed to spill into each other's bits.
+RandomStream::RandomStream(std::uint64_t seed, std::uint64_t realization, std::uint32_t stream, std::uint32_t substream)
     : key_{static_cast<std::uint32_t>(seed), static_cast<std::uint32_t>(seed >> 32)},
-      counter_{0u, (static_cast<std::uint32_t>(stream) << 24) ^ substream, static_cast<std::uint32_t>(realization),
+      counter_{0u, ((stream & kMaxStream) << 24) ^ (substream & kMaxSubstream), static_cast<std::uint32_t>(realization),
                static_cast<std::uint32_t>(realization >> 32)} {}
 
 void RandomStream::Refill() {

@@ -1,6 +1,7 @@
 #include "anchorbench/sim/range_model.hpp"
 
 #include <cmath>
+#include <string>
 
 namespace anchorbench::sim {
 
@@ -22,24 +23,34 @@ bool ParseOutlierKind(std::string_view name, OutlierKind* k) {
 }
 
 bool RangeModelOptions::IsValid(std::string* why) const {
-  auto fail = [why](const char* m) {
-    if (why) *why = m;
+  auto fail = [why](std::string m) {
+    if (why) *why = std::move(m);
     return false;
   };
-  if (!(sigma_range_m >= 0.0) || !std::isfinite(sigma_range_m)) return fail("sigma_range_m must be >= 0");
-  if (!std::isfinite(bias_a_m) || !std::isfinite(bias_b_m)) return fail("bias bounds must be finite");
+  auto non_negative = [](double v) { return v >= 0.0 && std::isfinite(v); };
+  if (!non_negative(sigma_range_m)) return fail("sigma_range_m must be >= 0");
+  if (!std::isfinite(bias_a_m)) return fail("bias_a_m must be finite");
+  if (!std::isfinite(bias_b_m)) return fail("bias_b_m must be finite");
   if (bias_distribution == BiasDistribution::kUniform && !(bias_a_m <= bias_b_m))
-    return fail("uniform bias needs bias_a_m <= bias_b_m");
+    return fail("bias_b_m must be >= bias_a_m for a uniform bias");
   if (bias_distribution == BiasDistribution::kNormal && !(bias_b_m >= 0.0))
-    return fail("normal bias needs bias_b_m (sigma) >= 0");
+    return fail("bias_b_m (the normal bias's sigma) must be >= 0");
   if (!(outlier_probability >= 0.0 && outlier_probability <= 1.0)) return fail("outlier_probability must be in [0, 1]");
   if (!(outlier_burst_length >= 1.0) || !std::isfinite(outlier_burst_length))
     return fail("outlier_burst_length must be >= 1");
-  if (!(outlier_min_m >= 0.0 && outlier_min_m <= outlier_max_m) || !std::isfinite(outlier_max_m))
-    return fail("outlier magnitudes must satisfy 0 <= min <= max");
-  if (!(max_range_m > 0.0)) return fail("max_range_m must be > 0");
+  // Episodes start at rate p/(L (1 - p)) per clean range (scenario.cpp), which must be a
+  // probability: bursts of mean length L cannot make more than L/(L+1) of the ranges outliers.
+  const double reachable = outlier_burst_length / (outlier_burst_length + 1.0);
+  if (outlier_probability > reachable) {
+    return fail("outlier_probability must be <= L/(L+1) = " + std::to_string(reachable) +
+                " for outlier_burst_length L = " + std::to_string(outlier_burst_length) +
+                " (an episode always ends on a clean range)");
+  }
+  if (!non_negative(outlier_min_m)) return fail("outlier_min_m must be >= 0");
+  if (!(outlier_max_m >= outlier_min_m) || !std::isfinite(outlier_max_m)) return fail("outlier_max_m must be >= outlier_min_m");
+  if (!(max_range_m > 0.0) || !std::isfinite(max_range_m)) return fail("max_range_m must be > 0");
   if (!(dropout_probability >= 0.0 && dropout_probability < 1.0)) return fail("dropout_probability must be in [0, 1)");
-  if (!(sigma_position_m >= 0.0) || !std::isfinite(sigma_position_m)) return fail("sigma_position_m must be >= 0");
+  if (!non_negative(sigma_position_m)) return fail("sigma_position_m must be >= 0");
   return true;
 }
 

@@ -10,6 +10,10 @@
 namespace anchorbench::sim {
 namespace {
 
+// (tag << 16 | anchor id) must fit a 24-bit sub-stream and stay distinct.
+static_assert(kMaxAnchors <= (1 << 16) && ScenarioOptions::kMaxTags <= (1 << 8),
+              "sub-stream keys (tag << 16 | anchor) must fit 24 bits");
+
 double DrawBias(const RangeModelOptions& o, RandomStream& rng) {
   return o.bias_distribution == BiasDistribution::kUniform ? rng.Uniform(o.bias_a_m, o.bias_b_m)
                                                            : rng.Normal(o.bias_a_m, o.bias_b_m);
@@ -53,72 +57,63 @@ class OutlierProcess {
   double offset_m_ = 0.0;
 };
 
-}  // namespace
-
-std::string_view ToString(EnvironmentKind kind) { return kind == EnvironmentKind::kTunnel ? "tunnel" : "hall"; }
-
-bool ParseEnvironmentKind(std::string_view name, EnvironmentKind* kind) {
-  if (name == "tunnel") *kind = EnvironmentKind::kTunnel;
-  else if (name == "hall") *kind = EnvironmentKind::kHall;
-  else return false;
-  return true;
-}
-
-bool ScenarioOptions::IsValid(std::string* why) const {
-  if (tag_offsets_m.empty() || tag_offsets_m.size() > 16 ||
-      !std::all_of(tag_offsets_m.begin(), tag_offsets_m.end(), [](const Eigen::Vector3d& p) { return p.allFinite(); })) {
-    if (why) *why = "tag_offsets_m must list 1 to 16 finite offsets [x, y, z]";
-    return false;
-  }
-  const bool environment_ok = environment == EnvironmentKind::kTunnel ? tunnel.IsValid(why) : hall.IsValid(why);
-  return environment_ok && trajectory.IsValid(why) && ranging.IsValid(why);
-}
-
-Scenario GenerateScenario(const ScenarioOptions& options, std::uint64_t seed, std::uint64_t realization) {
-  Scenario scenario;
+std::vector<SimAnchor> DrawAnchors(const ScenarioOptions& options, std::uint64_t seed, std::uint64_t realization) {
   RandomStream layout(seed, realization, StreamId::kLayout);
-  RandomStream shape(seed, realization, StreamId::kTrajectory);
-  const bool tunnel = options.environment == EnvironmentKind::kTunnel;
-  const std::vector<Eigen::Vector3d> positions =
-      tunnel ? TunnelAnchors(options.tunnel, layout) : HallAnchors(options.hall, layout);
-  TrajectoryOptions trajectory_options = options.trajectory;
-  trajectory_options.kind = DrawTrajectoryKind(options.trajectory, shape);
-  scenario.trajectory_kind = trajectory_options.kind;
-  Trajectory trajectory = tunnel ? TunnelTrajectory(options.tunnel, trajectory_options, shape)
-                                 : HallTrajectory(options.hall, trajectory_options, shape);
-
-  const RangeModelOptions& model = options.ranging;
+  const std::vector<Eigen::Vector3d> positions = options.environment == EnvironmentKind::kTunnel
+                                                     ? TunnelAnchors(options.tunnel, layout)
+                                                     : HallAnchors(options.hall, layout);
   RandomStream bias_rng(seed, realization, StreamId::kBias);
+  std::vector<SimAnchor> anchors;
   for (std::size_t i = 0; i < positions.size(); ++i) {
-    scenario.anchors.push_back({static_cast<int>(i), positions[i], DrawBias(model, bias_rng)});
+    anchors.push_back({static_cast<int>(i), positions[i], DrawBias(options.ranging, bias_rng)});
   }
+  return anchors;
+}
 
-  // Heading along the direction of travel (central differences; kept while standing still).
-  scenario.t_s = std::move(trajectory.t_s);
-  scenario.p_world_body = std::move(trajectory.p_world_tag);
-  const std::size_t epochs = scenario.t_s.size();
-  scenario.yaw_rad.assign(epochs, 0.0);
+// The body's path, its kind drawn for this realization (Table I's mix of suboptimal runs).
+Trajectory DrawTrajectory(const ScenarioOptions& options, std::uint64_t seed, std::uint64_t realization) {
+  RandomStream shape(seed, realization, StreamId::kTrajectory);
+  TrajectoryOptions trajectory = options.trajectory;
+  trajectory.kind = DrawTrajectoryKind(options.trajectory, shape);
+  return options.environment == EnvironmentKind::kTunnel ? TunnelTrajectory(options.tunnel, trajectory, shape)
+                                                         : HallTrajectory(options.hall, trajectory, shape);
+}
+
+// Heading along the direction of travel (central differences; kept while standing still).
+std::vector<double> Headings(const std::vector<Eigen::Vector3d>& p_world_body) {
+  const std::size_t epochs = p_world_body.size();
+  std::vector<double> yaw_rad(epochs, 0.0);
   for (std::size_t k = 0; k < epochs; ++k) {
-    const Eigen::Vector3d step = scenario.p_world_body[std::min(k + 1, epochs - 1)] - scenario.p_world_body[k > 0 ? k - 1 : 0];
-    scenario.yaw_rad[k] = step.head<2>().norm() > 1e-9 ? std::atan2(step.y(), step.x()) : (k > 0 ? scenario.yaw_rad[k - 1] : 0.0);
+    const Eigen::Vector3d step = p_world_body[std::min(k + 1, epochs - 1)] - p_world_body[k > 0 ? k - 1 : 0];
+    yaw_rad[k] = step.head<2>().norm() > 1e-9 ? std::atan2(step.y(), step.x()) : (k > 0 ? yaw_rad[k - 1] : 0.0);
   }
+  return yaw_rad;
+}
 
+// Each tag at its rigid offset, true and as reported: one navigation error per epoch, shared.
+void PlaceTags(const ScenarioOptions& options, std::uint64_t seed, std::uint64_t realization, Scenario& scenario) {
   RandomStream position_rng(seed, realization, StreamId::kPositionNoise);
   const std::size_t tags = options.tag_offsets_m.size();
   scenario.p_world_tag_true.assign(tags, {});
   scenario.p_world_tag_reported.assign(tags, {});
-  for (std::size_t k = 0; k < epochs; ++k) {
+  for (std::size_t k = 0; k < scenario.t_s.size(); ++k) {
     const Eigen::Vector3d noise(position_rng.Normal(), position_rng.Normal(), position_rng.Normal());
-    const Eigen::Matrix3d R_world_body = Eigen::AngleAxisd(scenario.yaw_rad[k], Eigen::Vector3d::UnitZ()).toRotationMatrix();
+    const Eigen::Matrix3d R_world_body =
+        Eigen::AngleAxisd(scenario.yaw_rad[k], Eigen::Vector3d::UnitZ()).toRotationMatrix();
     for (std::size_t tag = 0; tag < tags; ++tag) {
       const Eigen::Vector3d p_true = scenario.p_world_body[k] + R_world_body * options.tag_offsets_m[tag];
       scenario.p_world_tag_true[tag].push_back(p_true);
-      scenario.p_world_tag_reported[tag].push_back(p_true + model.sigma_position_m * noise);
+      scenario.p_world_tag_reported[tag].push_back(p_true + options.ranging.sigma_position_m * noise);
     }
   }
+}
 
-  // One stream per (tag, anchor) and noise source, so a pair's noise does not depend on which
-  // other anchors happen to be in range; tag 0 keeps the sub-stream of a single-tag robot.
+// The range stream of Eq. (1), epoch by epoch, tag by tag, anchor by anchor. One stream per
+// (tag, anchor) and noise source, so a pair's noise does not depend on which other anchors happen
+// to be in range; tag 0 keeps the sub-stream of a single-tag robot.
+std::vector<SimRange> DrawRanges(const RangeModelOptions& model, std::uint64_t seed, std::uint64_t realization,
+                                 const Scenario& scenario) {
+  const std::size_t tags = scenario.p_world_tag_true.size();
   const auto substream = [](std::size_t tag, const SimAnchor& anchor) {
     return static_cast<std::uint32_t>((tag << 16) | static_cast<std::uint32_t>(anchor.id));
   };
@@ -131,8 +126,9 @@ Scenario GenerateScenario(const ScenarioOptions& options, std::uint64_t seed, st
       dropout_rng.emplace_back(seed, realization, StreamId::kDropout, substream(tag, anchor));
     }
   }
+  std::vector<SimRange> ranges;
   const std::size_t anchors = scenario.anchors.size();
-  for (std::size_t k = 0; k < epochs; ++k) {
+  for (std::size_t k = 0; k < scenario.t_s.size(); ++k) {
     for (std::size_t tag = 0; tag < tags; ++tag) {
       for (const SimAnchor& anchor : scenario.anchors) {
         const std::size_t pair = tag * anchors + static_cast<std::size_t>(anchor.id);
@@ -143,11 +139,43 @@ Scenario GenerateScenario(const ScenarioOptions& options, std::uint64_t seed, st
         const double range_m = distance_m + anchor.bias_m + model.sigma_range_m * noise_rng[pair].Normal() +
                                outlier_m;  // Eq. (1) plus the outlier, if any
         // A ranging device never reports a negative distance.
-        scenario.ranges.push_back({scenario.t_s[k], static_cast<int>(tag), anchor.id, std::max(range_m, 0.0),
-                                   outlier_m != 0.0});
+        ranges.push_back({k, scenario.t_s[k], static_cast<int>(tag), anchor.id, std::max(range_m, 0.0), outlier_m != 0.0});
       }
     }
   }
+  return ranges;
+}
+
+}  // namespace
+
+std::string_view ToString(EnvironmentKind kind) { return kind == EnvironmentKind::kTunnel ? "tunnel" : "hall"; }
+
+bool ParseEnvironmentKind(std::string_view name, EnvironmentKind* kind) {
+  if (name == "tunnel") *kind = EnvironmentKind::kTunnel;
+  else if (name == "hall") *kind = EnvironmentKind::kHall;
+  else return false;
+  return true;
+}
+
+bool ScenarioOptions::IsValid(std::string* why) const {
+  if (tag_offsets_m.empty() || tag_offsets_m.size() > static_cast<std::size_t>(kMaxTags) ||
+      !std::all_of(tag_offsets_m.begin(), tag_offsets_m.end(), [](const Eigen::Vector3d& p) { return p.allFinite(); })) {
+    if (why) *why = "tag_offsets_m must list 1 to 16 finite offsets [x, y, z]";
+    return false;
+  }
+  const bool environment_ok = environment == EnvironmentKind::kTunnel ? tunnel.IsValid(why) : hall.IsValid(why);
+  return environment_ok && trajectory.IsValid(why) && ranging.IsValid(why);
+}
+
+Scenario GenerateScenario(const ScenarioOptions& options, std::uint64_t seed, std::uint64_t realization) {
+  Scenario scenario;
+  scenario.anchors = DrawAnchors(options, seed, realization);
+  Trajectory trajectory = DrawTrajectory(options, seed, realization);
+  scenario.t_s = std::move(trajectory.t_s);
+  scenario.p_world_body = std::move(trajectory.p_world_tag);
+  scenario.yaw_rad = Headings(scenario.p_world_body);
+  PlaceTags(options, seed, realization, scenario);
+  scenario.ranges = DrawRanges(options.ranging, seed, realization, scenario);
   return scenario;
 }
 

@@ -76,18 +76,23 @@ bool TrajectoryOptions::IsValid(std::string* why) const {
     if (why) *why = m;
     return false;
   };
+  auto non_negative = [](double v) { return v >= 0.0 && std::isfinite(v); };
   if (!(rate_hz > 0.0 && rate_hz <= 1000.0)) return fail("rate_hz must be in (0, 1000]");
-  if (!(speed_mps > 0.0)) return fail("speed_mps must be > 0");
+  if (!(speed_mps > 0.0) || !std::isfinite(speed_mps)) return fail("speed_mps must be > 0");
   if (!(speed_variation >= 0.0 && speed_variation < 1.0)) return fail("speed_variation must be in [0, 1)");
-  if (!(height_m >= 0.0)) return fail("height_m must be >= 0");
-  if (!(lateral_excursion_m >= 0.0) || !(vertical_excursion_m >= 0.0) || !(planar_vertical_excursion_m >= 0.0))
-    return fail("excursions must be >= 0");
-  if (!(min_period_s > 0.0 && min_period_s <= max_period_s)) return fail("periods must satisfy 0 < min <= max");
+  if (!non_negative(height_m)) return fail("height_m must be >= 0");
+  if (!non_negative(lateral_excursion_m)) return fail("lateral_excursion_m must be >= 0");
+  if (!non_negative(vertical_excursion_m)) return fail("vertical_excursion_m must be >= 0");
+  if (!non_negative(planar_vertical_excursion_m)) return fail("planar_vertical_excursion_m must be >= 0");
+  if (!(min_period_s > 0.0) || !std::isfinite(min_period_s)) return fail("min_period_s must be > 0");
+  if (!(max_period_s >= min_period_s) || !std::isfinite(max_period_s)) return fail("max_period_s must be >= min_period_s");
   if (!(short_fraction > 0.0 && short_fraction <= 1.0)) return fail("short_fraction must be in (0, 1]");
-  if (!(hall_duration_s > 0.0)) return fail("hall_duration_s must be > 0");
-  if (!(fraction_straight >= 0.0 && fraction_planar >= 0.0 && fraction_short >= 0.0) ||
-      !(fraction_straight + fraction_planar + fraction_short <= 1.0)) {
-    return fail("fraction_straight, fraction_planar and fraction_short must be >= 0 and sum to <= 1");
+  if (!(hall_duration_s > 0.0) || !std::isfinite(hall_duration_s)) return fail("hall_duration_s must be > 0");
+  for (double fraction : {fraction_straight, fraction_planar, fraction_short}) {
+    if (!(fraction >= 0.0 && fraction <= 1.0)) return fail("fraction_straight, fraction_planar and fraction_short must be in [0, 1]");
+  }
+  if (!(fraction_straight + fraction_planar + fraction_short <= 1.0)) {
+    return fail("fraction_straight, fraction_planar and fraction_short must sum to <= 1");
   }
   return true;
 }

@@ -32,7 +32,7 @@ TEST(RandomStream, SameKeySameSequenceDifferentKeyDifferentSequence) {
 }
 
 TEST(RandomStream, UniformAndNormalMoments) {
-  RandomStream rng(7, 0, StreamId::kSolver);
+  RandomStream rng(7, 0, kFirstFreeStreamId);
   constexpr int kN = 200000;
   double sum_u = 0, sum_z = 0, sum_z2 = 0, sum_z4 = 0, min_u = 1, max_u = 0;
   for (int i = 0; i < kN; ++i) {

@@ -1,32 +1,43 @@
 #pragma once
 
+#include <cstddef>
+#include <deque>
 #include <memory>
 #include <optional>
 #include <span>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "anchorbench/estimator/anchor_solver.hpp"
 #include "anchorbench/estimator/closest_point_pdop.hpp"
-#include "anchorbench/estimator/filter_registry.hpp"
+#include "anchorbench/estimator/consistency_filter.hpp"
 #include "anchorbench/estimator/init_trigger.hpp"
+#include "anchorbench/estimator/outlier_filter.hpp"
 #include "anchorbench/estimator/range_sample.hpp"
 
 namespace anchorbench::estimator {
 
+// What an initializer does when its buffer of accepted samples is full.
+enum class BufferPolicy {
+  kThin,       // drop every second buffered sample and from then on buffer every 2nd accepted one
+               // (then every 4th, ...): the buffer keeps spanning the whole run, at a coarser rate
+  kKeepFirst,  // stop buffering: solves use the first max_buffered_samples accepted samples
+};
+std::string_view ToString(BufferPolicy policy);
+bool ParseBufferPolicy(std::string_view name, BufferPolicy* policy);
+
 struct InitializerOptions {
-  FilterOptions filter;
-  TriggerOptions trigger;
-  int min_samples = 20;  // accepted samples needed before any trigger may fire
+  int min_samples = 20;  // accepted samples needed before any trigger may fire (ours; the paper gives none)
   // After a failed solve (degenerate or non-finite), retry once the accepted data has grown by
   // this factor, so a bad geometry does not cost a solve per sample.
   double retry_growth = 1.2;
-  AnchorSolverOptions solver;
-  // Registry names, resolved by whoever owns the registries (MakeInitializer): the solver, and the
-  // triggers an experiment runs side by side on the same data, one initializer each. The filter's
-  // name is filter.kind.
-  std::string solver_name = "lm_adaptive";
-  std::vector<std::string> triggers = {"fixed_window", "pdop_closest_point"};
+  // The memory bound of one initializer: at most this many samples (32 bytes each) are kept for
+  // the solve, whatever the run's length; the closest-point PDOP still counts every sample. The
+  // default holds 80 minutes of one tag at 10 Hz, beyond every committed experiment (largest:
+  // 6002 samples), so it changes none of their numbers.
+  int max_buffered_samples = 50000;
+  BufferPolicy at_cap = BufferPolicy::kThin;
 
   bool IsValid(std::string* why) const;
 };
@@ -35,8 +46,8 @@ struct InitializerOptions {
 struct InitEvent {
   int anchor_id = 0;
   double t_s = 0.0;
-  int n_used = 0;
-  double pdop_estimate = 0.0;  // closest-point PDOP at that moment
+  int n_used = 0;              // samples in the solve
+  double pdop_estimate = 0.0;  // closest-point PDOP when the trigger fired (fixed window: at the end)
   SolveResult solve;
 };
 
@@ -45,39 +56,66 @@ struct FeedResult {
   bool accepted = false;
   int n_accepted = 0;
   double pdop = 0.0;               // closest-point PDOP after this sample (+inf if undefined)
-  std::optional<InitEvent> event;  // set on the sample that initialized the anchor (online triggers)
+  std::optional<InitEvent> event;  // set on the sample that initialized the anchor (inline solves)
+  bool solve_pending = false;      // deferred solves: a solve waits for RunPendingSolve()
 };
 
 // Online initializer for one anchor (Fig. 2): filter -> trigger -> solver. Fed one sample at a
-// time in time order; no I/O, no global state, so a navigation stack can own one per anchor. The
-// closest-point PDOP is kept for every trigger (traces, reports). After an online initialization
-// the filter and the PDOP keep updating but no more data is buffered.
+// time in time order; no I/O, no global state, bounded memory, so a navigation stack can own one
+// per anchor. The closest-point PDOP is kept for every trigger (traces, reports). After an online
+// initialization the filter and the PDOP keep updating but no more data is buffered.
+//
+// Solves run inside Feed() by default. With SetDeferSolves(true), Feed() only marks the solve as
+// pending and queues later samples; RunPendingSolve() runs it when the caller likes (outside a
+// sensor callback, on another thread) and then catches up on the queued samples. The results
+// are identical to solving inline.
 class AnchorInitializer {
  public:
-  // The paper's chain: consistency check (options.filter.consistency), closest-point PDOP trigger
-  // (options.trigger.pdop_threshold), LS + adaptive NLS (options.solver).
-  explicit AnchorInitializer(int anchor_id, const InitializerOptions& options = {});
-  // Any chain (MakeInitializer builds one from registry names).
   AnchorInitializer(int anchor_id, const InitializerOptions& options, std::unique_ptr<OutlierFilter> filter,
                     std::unique_ptr<InitTrigger> trigger, std::shared_ptr<const Solver> solver);
 
   FeedResult Feed(const RangeSample& sample);
 
-  // End of data. An offline trigger (fixed window) solves on everything accepted and returns the
-  // event, possibly with a failure status. Online triggers return nothing; their event came from Feed.
+  void SetDeferSolves(bool defer) { defer_solves_ = defer; }
+  bool solve_pending() const { return pending_.has_value(); }
+  // Runs the pending solve; the event if it initialized the anchor. After a failed solve the
+  // queued samples are fed to the trigger, which may leave another solve pending.
+  std::optional<InitEvent> RunPendingSolve();
+
+  // End of data. Pending solves run first (their event, if one initializes). An offline trigger
+  // (fixed window) then solves on everything buffered and returns the event, possibly with a
+  // failure status. Online triggers return nothing here when their event came from Feed().
   std::optional<InitEvent> Finish(double t_s);
 
   bool initialized() const { return initialized_; }
   int anchor_id() const { return anchor_id_; }
-  // Accepted data so far (online triggers: up to the initialization).
+  bool online() const { return trigger_->online(); }
+  // The buffered data (online triggers: up to the initialization).
   std::span<const Eigen::Vector3d> p_world_tag() const { return p_world_tag_; }
   std::span<const double> range_m() const { return range_m_; }
   const ClosestPointPdop& pdop() const { return pdop_; }
   // The latest online solve that failed (degenerate, non-finite), if any: why it is not initialized.
   const std::optional<SolveResult>& last_failed_solve() const { return last_failed_solve_; }
+  // Accepted samples left out of the buffer by its cap, and samples lost because the queue behind
+  // a deferred solve reached the cap (the solve was not run in time).
+  long samples_not_buffered() const { return samples_not_buffered_; }
+  long samples_dropped_while_pending() const { return samples_dropped_while_pending_; }
 
  private:
-  InitEvent SolveNow(double t_s);
+  struct Accepted {
+    double t_s;
+    Eigen::Vector3d p_world_tag;
+    double range_m;
+    double pdop;  // closest-point PDOP right after this sample
+  };
+  struct Pending {
+    double t_s;
+    double pdop;
+  };
+
+  void Admit(const Accepted& sample);  // buffer it and ask the trigger
+  void Buffer(const Eigen::Vector3d& p_world_tag, double range_m);
+  InitEvent SolveNow(double t_s, double pdop);
 
   int anchor_id_;
   InitializerOptions options_;
@@ -87,10 +125,28 @@ class AnchorInitializer {
   ClosestPointPdop pdop_;
   std::vector<Eigen::Vector3d> p_world_tag_;
   std::vector<double> range_m_;
+  std::size_t n_admitted_ = 0;   // samples the trigger has seen
+  std::size_t keep_every_ = 1;   // BufferPolicy::kThin: buffer every keep_every_-th admitted sample
   double t_first_s_ = 0.0;
   bool initialized_ = false;
   std::size_t next_attempt_size_ = 0;
   std::optional<SolveResult> last_failed_solve_;
+  bool defer_solves_ = false;
+  std::optional<Pending> pending_;
+  std::deque<Accepted> queued_;  // accepted while a deferred solve was pending
+  long samples_not_buffered_ = 0;
+  long samples_dropped_while_pending_ = 0;
 };
+
+// The paper's chain with typed options: the consistency check (Sec. III-B), the closest-point
+// PDOP trigger (Sec. III-C) and LS + adaptive-kernel NLS (Sec. III-D).
+struct PaperChainOptions {
+  InitializerOptions initializer;
+  ConsistencyFilterOptions filter;
+  double pdop_threshold = 1.0;
+  AnchorSolverOptions solver;
+};
+AnchorInitializer MakePaperInitializer(int anchor_id, const PaperChainOptions& options = {},
+                                       std::shared_ptr<const LogPartitionTable> table = nullptr);
 
 }  // namespace anchorbench::estimator

@@ -1,5 +1,6 @@
 #pragma once
 
+#include <memory>
 #include <span>
 #include <string>
 
@@ -19,7 +20,9 @@ struct AnchorSolverOptions {
 // Sec. III-D in full: the double-difference LS coarse solution seeds the NLS refinement.
 class AnchorSolver : public Solver {
  public:
-  explicit AnchorSolver(const AnchorSolverOptions& options = {}) : options_(options), nls_(options.nls) {}
+  explicit AnchorSolver(const AnchorSolverOptions& options = {},
+                        std::shared_ptr<const LogPartitionTable> table = nullptr)
+      : options_(options), nls_(options.nls, std::move(table)) {}
 
   SolveResult Solve(std::span<const Eigen::Vector3d> p_world_tag, std::span<const double> range_m) const override {
     const SolveResult coarse = SolveDoubleDifferenceLs(p_world_tag, range_m, options_.ls);

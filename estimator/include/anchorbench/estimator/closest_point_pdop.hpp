@@ -23,7 +23,6 @@ class ClosestPointPdop {
   Eigen::Matrix3d Information() const;
 
   int count() const { return count_; }
-  double min_range_m() const { return min_range_m_; }
   Eigen::Vector3d p_world_closest() const { return origin_ + p_closest_; }
 
  private:

@@ -54,7 +54,10 @@ SolveResult SummarizeSolution(std::span<const Eigen::Vector3d> p_world_tag, std:
 // with 4x4 normal equations; nothing is allocated inside the loop.
 class NlsSolver {
  public:
-  explicit NlsSolver(const NlsOptions& options = {});
+  // The adaptive kernel needs the log-partition table of (truncation, alpha_min); pass a shared
+  // one (LogPartitionTables) to avoid building it (~40 ms) per solver. Without one, or with one
+  // for other settings, the solver builds its own.
+  explicit NlsSolver(const NlsOptions& options = {}, std::shared_ptr<const LogPartitionTable> table = nullptr);
 
   SolveResult Solve(std::span<const Eigen::Vector3d> p_world_tag, std::span<const double> range_m,
                     const Eigen::Vector3d& p_world_anchor_initial, double bias_initial_m) const;

@@ -2,6 +2,7 @@
 
 #include <array>
 #include <memory>
+#include <mutex>
 #include <optional>
 #include <span>
 #include <vector>
@@ -37,10 +38,6 @@ class LogPartitionTable {
  public:
   LogPartitionTable(double truncation, double alpha_min);
 
-  // Shared table for (truncation, alpha_min): built once per process and reused by every solver
-  // (thread-safe; the memo is the estimator library's only static and holds immutable tables).
-  static std::shared_ptr<const LogPartitionTable> Shared(double truncation, double alpha_min);
-
   double LogZ(double alpha) const;
   double truncation() const { return truncation_; }
   double alpha_min() const { return alpha_min_; }
@@ -53,6 +50,18 @@ class LogPartitionTable {
   double alpha_min_;
   double alpha_step_;
   std::vector<double> log_z_;
+};
+
+// Tables by (truncation, alpha_min), each built on first request (~40 ms) and then shared by every
+// solver that asks. Owned by whoever builds the solvers (the registry's Components, or your code):
+// no process-wide state. Thread-safe.
+class LogPartitionTables {
+ public:
+  std::shared_ptr<const LogPartitionTable> Get(double truncation, double alpha_min);
+
+ private:
+  std::mutex mutex_;
+  std::vector<std::shared_ptr<const LogPartitionTable>> tables_;
 };
 
 // Chooses the kernel shape alpha in [alpha_min, 2] by minimizing the negative log-likelihood of
@@ -76,8 +85,8 @@ class AlphaSelector {
   void Clear();
   void Add(double x);  // one normalized residual r / c
   // argmin NLL over [alpha_min, 2]: a coarse grid plus NLopt refinement, or, given the previous
-  // iteration's alpha, NLopt refinement from there.
-  double Select(std::optional<double> previous_alpha = std::nullopt) const;
+  // iteration's alpha, NLopt refinement from there. Not const: it sets the optimizer's bounds.
+  double Select(std::optional<double> previous_alpha = std::nullopt);
   double Nll(double alpha) const;  // from the histogram: what Select minimizes
   // NLL evaluated exactly on residuals, for tests.
   static double ExactNll(std::span<const double> x, double alpha, const LogPartitionTable& table);

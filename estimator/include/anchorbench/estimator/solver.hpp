@@ -8,6 +8,13 @@
 
 namespace anchorbench::estimator {
 
+// The fewest samples each solve accepts (fewer: SolveStatus::kTooFewSamples).
+// Double-difference LS: 4 unknowns (p_A, gamma), one sample spent as the pivot of Eqs. (9)-(10),
+// and one redundant row so the residual variance of the covariance has a degree of freedom.
+constexpr int kMinSamplesLs = 6;
+// Nonlinear refinement: 4 unknowns and one degree of freedom for s^2 = sum w r^2 / (N - 4).
+constexpr int kMinSamplesNls = 5;
+
 // A solver for (p_A, gamma) from tag positions and ranges. Implementations report failure through
 // SolveResult::status (never an exception, never a non-finite estimate with a success status).
 class Solver {

@@ -10,6 +10,8 @@
 
 namespace anchorbench::sim {
 
+constexpr int kMaxAnchors = 10000;  // per environment (random sub-stream keys: scenario.hpp)
+
 // Tunnel frame: x along the tunnel in [0, length], y across in [-width/2, width/2], z up from the
 // floor in [0, height]. Anchors are spread evenly along the whole length (Sec. IV-A) with a
 // random jitter, cycling left wall -> right wall -> ceiling; wall anchors get a random height.

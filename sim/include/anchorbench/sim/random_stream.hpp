@@ -5,27 +5,34 @@
 
 namespace anchorbench::sim {
 
-// Which random stream a draw belongs to. Each noise source has its own stream (after open_vins),
-// so a new realization changes the noise, and changing one source leaves the others untouched.
+// The simulator's random streams. Each noise source has its own stream (after open_vins), so a new
+// realization changes the noise, and changing one source leaves the others untouched. Stream ids
+// belong to whoever draws them: the simulator uses 1 to 7; other layers pick ids from
+// kFirstFreeStreamId up and name them where they draw (runner: solver seeds; report: bootstrap).
 enum class StreamId : std::uint32_t {
   kLayout = 1,      // anchor positions
   kTrajectory = 2,  // trajectory shape and kind
   kBias = 3,        // per-anchor constant range bias
-  kRangeNoise = 4,  // Gaussian range noise eta (one sub-stream per anchor)
-  kOutlier = 5,     // outlier occurrence and magnitude (one sub-stream per anchor)
+  kRangeNoise = 4,  // Gaussian range noise eta (one sub-stream per tag and anchor)
+  kOutlier = 5,     // outlier occurrence and magnitude (one sub-stream per tag and anchor)
   kPositionNoise = 6,
   kDropout = 7,
-  kSolver = 8,      // for solvers that need random numbers
-  kBootstrap = 9,   // resampling in the experiments' statistics
 };
+constexpr std::uint32_t kFirstFreeStreamId = 8;
 
 // Counter-based generator: Philox4x32-10 (Salmon et al., SC'11). The key is the seed; the counter
-// is (block index, stream, sub-stream, realization), so any (seed, realization, stream) is an
-// independent sequence that any thread can produce without shared state. Uniform and normal
-// transforms are our own, so results do not depend on the standard library's distributions.
+// is (block index, stream << 24 ^ sub-stream, realization), so any (seed, realization, stream,
+// sub-stream) is an independent sequence that any thread can produce without shared state.
+// Stream ids take 8 bits and sub-streams 24. Uniform and normal transforms are our own, so
+// results do not depend on the standard library's distributions.
 class RandomStream {
  public:
-  RandomStream(std::uint64_t seed, std::uint64_t realization, StreamId stream, std::uint32_t substream = 0);
+  static constexpr std::uint32_t kMaxStream = 0xFF;
+  static constexpr std::uint32_t kMaxSubstream = 0xFFFFFF;
+
+  RandomStream(std::uint64_t seed, std::uint64_t realization, std::uint32_t stream, std::uint32_t substream = 0);
+  RandomStream(std::uint64_t seed, std::uint64_t realization, StreamId stream, std::uint32_t substream = 0)
+      : RandomStream(seed, realization, static_cast<std::uint32_t>(stream), substream) {}
 
   std::uint32_t NextU32();
   std::uint64_t NextU64();

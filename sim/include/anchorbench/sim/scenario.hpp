@@ -1,5 +1,6 @@
 #pragma once
 
+#include <cstddef>
 #include <cstdint>
 #include <string>
 #include <string_view>
@@ -18,6 +19,10 @@ std::string_view ToString(EnvironmentKind kind);
 bool ParseEnvironmentKind(std::string_view name, EnvironmentKind* kind);
 
 struct ScenarioOptions {
+  // Random sub-streams are keyed (tag << 16 | anchor id) in 24 bits (RandomStream): with at most
+  // kMaxTags tags and kMaxAnchors anchors (environment.hpp) the keys stay distinct.
+  static constexpr int kMaxTags = 16;
+
   EnvironmentKind environment = EnvironmentKind::kTunnel;
   // Tags at rigid offsets in the body frame (x forward along the direction of travel, y left,
   // z up); the trajectory is the body's. Every tag ranges to every anchor in reach at every epoch.
@@ -37,6 +42,7 @@ struct SimAnchor {
 };
 
 struct SimRange {
+  std::size_t epoch = 0;  // index into Scenario::t_s and the tag position tracks
   double t_s = 0.0;
   int tag_id = 0;
   int anchor_id = 0;
@@ -47,7 +53,6 @@ struct SimRange {
 // One realization: ground truth, what the robot believes about its tag positions, and the range
 // stream in time order (tag, then anchor id ascending within one epoch).
 struct Scenario {
-  TrajectoryKind trajectory_kind = TrajectoryKind::kRandom;  // as drawn for this realization
   std::vector<SimAnchor> anchors;
   std::vector<double> t_s;                        // epochs
   std::vector<Eigen::Vector3d> p_world_body;      // the trajectory

@@ -1,0 +1,126 @@
+// anchorbench: Monte Carlo simulation and benchmarking of online UWB anchor initialization.
+// The only file that sees CLI11: it maps the command line onto the commands of commands.hpp.
+#include <iostream>
+
+#include <CLI/CLI.hpp>
+
+#include "anchorbench/eval/oracles.hpp"
+#include "anchorbench/io/input_error.hpp"
+#include "commands.hpp"
+
+namespace app = anchorbench::app;
+
+namespace anchorbench::app {
+const char* BuildRevision();  // generated at build time (cmake/GitRevision.cmake)
+}  // namespace anchorbench::app
+
+namespace {
+
+// The options every Monte Carlo command shares (run, sweep, pdop-study).
+void AddMonteCarloOptions(CLI::App* cmd, app::MonteCarloArgs& args) {
+  cmd->add_option("--out", args.out, "Output folder (default results/<config name>/)");
+  cmd->add_option("--threads", args.threads, "OpenMP threads (default: OMP_NUM_THREADS, else all cores)")
+      ->check(CLI::NonNegativeNumber);
+  cmd->add_option("--realizations", args.realizations, "Override the realizations per row")->check(CLI::PositiveNumber);
+  cmd->add_flag("--quiet", args.quiet, "No progress output");
+}
+
+// Every subcommand's arguments, and the CLI11 subcommand that fills them.
+struct CommandLine {
+  app::SimulateArgs simulate;
+  app::ReplayArgs replay;
+  app::RunArgs run;
+  app::SweepArgs sweep;
+  app::PdopStudyArgs study;
+  app::ConvertHanyangArgs convert;
+  CLI::App* simulate_cmd = nullptr;
+  CLI::App* replay_cmd = nullptr;
+  CLI::App* run_cmd = nullptr;
+  CLI::App* sweep_cmd = nullptr;
+  CLI::App* study_cmd = nullptr;
+  CLI::App* convert_cmd = nullptr;
+  CLI::App* list_cmd = nullptr;
+};
+
+void AddRecordingCommands(CLI::App& cli, CommandLine& c) {
+  c.simulate_cmd = cli.add_subcommand("simulate", "Simulate one realization and write poses.csv, ranges.csv, anchors.csv");
+  c.simulate_cmd->add_option("config", c.simulate.config, "Experiment config (YAML)")->required();
+  c.simulate_cmd->add_option("--out", c.simulate.out, "Output folder (created if needed)")->required();
+  c.simulate_cmd->add_option("--seed", c.simulate.seed, "Override the config's seed");
+  c.simulate_cmd->add_option("--realization", c.simulate.realization, "Realization index (default 0)");
+  c.simulate_cmd->add_option("--set", c.simulate.overrides, "Override a config value: KEY=VALUE (repeatable)");
+
+  c.replay_cmd = cli.add_subcommand("replay", "Run the online initializers (estimator.triggers; by default the fixed "
+                                              "window and the PDOP-gated one) on recorded data");
+  c.replay_cmd->add_option("--poses", c.replay.poses, "poses.csv: t,tag_id,x,y,z")->required();
+  c.replay_cmd->add_option("--ranges", c.replay.ranges, "ranges.csv: t,tag_id,anchor_id,range")->required();
+  c.replay_cmd->add_option("--anchors", c.replay.anchors, "anchors.csv: anchor_id,x,y,z[,bias] (truth, for errors)");
+  c.replay_cmd->add_option("--config", c.replay.config, "Config whose 'estimator' section is used (default: defaults)");
+  c.replay_cmd->add_option("--trace", c.replay.trace,
+                           "Write one row per range: t,tag_id,anchor_id,range,accepted,n_accepted,pdop");
+  c.replay_cmd->add_option("--out", c.replay.out, "Folder for estimates.csv");
+
+  c.convert_cmd = cli.add_subcommand(
+      "convert-hanyang", "Convert a Hanyang outdoor UWB dataset case into poses.csv, ranges.csv, anchors.csv");
+  c.convert_cmd->add_option("case", c.convert.case_folder, "Case folder (A3.csv ... A12.csv, trajectory.csv)")->required();
+  c.convert_cmd->add_option("--out", c.convert.out, "Output folder (created if needed)")->required();
+}
+
+void AddMonteCarloCommands(CLI::App& cli, CommandLine& c) {
+  c.run_cmd = cli.add_subcommand("run", "Monte Carlo: every row x realization x anchor x trigger (estimator.triggers)");
+  c.run_cmd->add_option("config", c.run.config, "Experiment config (YAML) with rows")->required();
+  AddMonteCarloOptions(c.run_cmd, c.run);
+  c.run_cmd->add_option("--seed", c.run.seed, "Override the config's seed");
+  c.run_cmd->add_option("--set", c.run.overrides, "Override a config value: KEY=VALUE, KEY a dotted path (repeatable)");
+
+  c.sweep_cmd = cli.add_subcommand("sweep", "Run a config over a grid of values and tabulate each point");
+  c.sweep_cmd->add_option("config", c.sweep.config, "Experiment config (YAML); its 'sweep' section gives axes")->required();
+  c.sweep_cmd->add_option("--set", c.sweep.axes,
+                          "An axis: KEY=VALUES, a list a,b,c or a range start:stop:step (repeatable)");
+  AddMonteCarloOptions(c.sweep_cmd, c.sweep);
+
+  c.study_cmd = cli.add_subcommand("pdop-study",
+                                   "Closest-point, LS, NLS and true PDOP side by side along random runs (Figs. 6-8)");
+  c.study_cmd->add_option("config", c.study.config, "Experiment config (YAML); its base scenario is used")->required();
+  AddMonteCarloOptions(c.study_cmd, c.study);
+  c.study_cmd->add_option("--every", c.study.every, "Checkpoint every N accepted samples (default 10)")
+      ->check(CLI::PositiveNumber);
+  c.study_cmd->add_option("--bin-s", c.study.bin_s, "Summary time bins in seconds (default 10)")->check(CLI::PositiveNumber);
+}
+
+int Dispatch(const CommandLine& c, const app::AppContext& context) {
+  if (c.simulate_cmd->parsed()) return app::SimulateCommand(c.simulate, context);
+  if (c.replay_cmd->parsed()) return app::ReplayCommand(c.replay, context);
+  if (c.run_cmd->parsed()) return app::RunCommand(c.run, context);
+  if (c.sweep_cmd->parsed()) return app::SweepCommand(c.sweep, context);
+  if (c.study_cmd->parsed()) return app::PdopStudyCommand(c.study, context);
+  if (c.convert_cmd->parsed()) return app::ConvertHanyangCommand(c.convert);
+  if (c.list_cmd->parsed()) return app::ListCommand(context);
+  return 1;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  CLI::App cli{"anchorbench: online initialization of unknown UWB anchors (Delama et al., IROS 2025)"};
+  cli.require_subcommand(1);
+  CommandLine command_line;
+  AddRecordingCommands(cli, command_line);
+  AddMonteCarloCommands(cli, command_line);
+  command_line.list_cmd = cli.add_subcommand("list", "List the registered solvers, filters and triggers");
+  try {
+    cli.parse(argc, argv);
+  } catch (const CLI::ParseError& e) {
+    return cli.exit(e);
+  }
+  try {
+    const anchorbench::registry::Components parts = anchorbench::eval::MakeComponentsWithOracles();
+    return Dispatch(command_line, {parts, app::BuildRevision()});
+  } catch (const anchorbench::io::InputError& e) {
+    std::cerr << "anchorbench: error: " << e.what() << '\n';
+    return 2;
+  } catch (const std::exception& e) {
+    std::cerr << "anchorbench: internal error: " << e.what() << '\n';
+    return 3;
+  }
+}

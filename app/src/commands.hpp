@@ -1,0 +1,70 @@
+#pragma once
+// The subcommands as plain functions on their arguments; main.cpp maps the command line onto them
+// (and is the only file that sees CLI11). Each returns the process exit code; bad input throws
+// io::InputError, which main() reports (exit 2).
+
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "anchorbench/registry/components.hpp"
+
+namespace anchorbench::app {
+
+// What every command gets from the executable: the parts it offers by name, and its revision.
+struct AppContext {
+  const registry::Components& parts;
+  std::string revision;
+};
+
+struct SimulateArgs {
+  std::string config;
+  std::string out;
+  std::optional<std::uint64_t> seed;
+  std::uint64_t realization = 0;
+  std::vector<std::string> overrides;  // --set KEY=VALUE
+};
+int SimulateCommand(const SimulateArgs& args, const AppContext& app);
+
+struct ReplayArgs {
+  std::string poses, ranges, anchors, config, trace, out;
+};
+int ReplayCommand(const ReplayArgs& args, const AppContext& app);
+
+// The options every Monte Carlo command shares.
+struct MonteCarloArgs {
+  std::string config;
+  std::string out;
+  int threads = 0;  // 0: OMP_NUM_THREADS, else every core
+  std::optional<int> realizations;
+  bool quiet = false;
+};
+
+struct RunArgs : MonteCarloArgs {
+  std::optional<std::uint64_t> seed;
+  std::vector<std::string> overrides;  // --set KEY=VALUE
+};
+int RunCommand(const RunArgs& args, const AppContext& app);
+
+struct SweepArgs : MonteCarloArgs {
+  std::vector<std::string> axes;  // --set KEY=VALUES (a list "a,b,c" or a range "start:stop:step")
+};
+int SweepCommand(const SweepArgs& args, const AppContext& app);
+
+struct PdopStudyArgs : MonteCarloArgs {
+  int every = 10;       // a checkpoint (LS and NLS solves) every this many accepted samples
+  double bin_s = 10.0;  // time bins of the summary
+};
+int PdopStudyCommand(const PdopStudyArgs& args, const AppContext& app);
+
+struct ConvertHanyangArgs {
+  std::string case_folder;
+  std::string out;
+};
+int ConvertHanyangCommand(const ConvertHanyangArgs& args);
+
+// Every registered part with a one-line description.
+int ListCommand(const AppContext& app);
+
+}  // namespace anchorbench::app

@@ -1,0 +1,26 @@
+#include <iomanip>
+#include <iostream>
+
+#include "commands.hpp"
+
+namespace anchorbench::app {
+namespace {
+
+template <typename Registry>
+void Print(const char* heading, const Registry& registry) {
+  std::cout << heading << '\n';
+  for (const auto& [name, description] : registry.List()) {
+    std::cout << "  " << std::left << std::setw(20) << name << description << '\n';
+  }
+}
+
+}  // namespace
+
+int ListCommand(const AppContext& app) {
+  Print("solvers (estimator.solver):", app.parts.solvers);
+  Print("filters (estimator.filter.kind):", app.parts.filters);
+  Print("triggers (estimator.triggers, run side by side on the same data):", app.parts.triggers);
+  return 0;
+}
+
+}  // namespace anchorbench::app

@@ -1,0 +1,29 @@
+#pragma once
+// What run, sweep and pdop-study share: the thread count, the output folder, progress, and the
+// manifest's record of the run.
+
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "anchorbench/report/run_outputs.hpp"
+#include "anchorbench/runner/experiment.hpp"
+#include "commands.hpp"
+#include "progress.hpp"
+
+namespace anchorbench::app {
+
+struct MonteCarloSetup {
+  int threads = 1;
+  std::filesystem::path out;
+};
+// Resolves the thread count and creates the output folder (call it only once the input is valid).
+MonteCarloSetup SetUpMonteCarlo(const MonteCarloArgs& args, const std::string& config_name);
+
+// The manifest's record: the command line's changes (--realizations and any `more`), threads,
+// wall time, revision and the resolved config.
+report::RunInfo RunInfoOf(const MonteCarloArgs& args, const MonteCarloSetup& setup, const AppContext& app,
+                          const runner::ExperimentConfig& config, double wall_time_s,
+                          std::vector<std::string> more_command_line = {});
+
+}  // namespace anchorbench::app

@@ -1,0 +1,77 @@
+#include <iostream>
+#include <sstream>
+
+#include "anchorbench/config/load_config.hpp"
+#include "anchorbench/io/atomic_file.hpp"
+#include "anchorbench/io/input_error.hpp"
+#include "anchorbench/report/summary.hpp"
+#include "anchorbench/report/sweep_report.hpp"
+#include "anchorbench/runner/monte_carlo.hpp"
+#include "anchorbench/runner/sweep.hpp"
+#include "monte_carlo_command.hpp"
+
+namespace anchorbench::app {
+namespace {
+
+// Every grid point parsed and validated before the first trial runs.
+std::vector<runner::ExperimentConfig> PointConfigs(const SweepArgs& args, const std::vector<runner::SweepPoint>& grid,
+                                                   const AppContext& app) {
+  std::vector<runner::ExperimentConfig> configs;
+  for (const runner::SweepPoint& point : grid) {
+    runner::ExperimentConfig config = config::LoadConfig(args.config, point.overrides, app.parts);
+    if (args.realizations) config.realizations = *args.realizations;
+    runner::CheckRows(runner::RowsOf(config), app.parts);
+    configs.push_back(std::move(config));
+  }
+  return configs;
+}
+
+}  // namespace
+
+int SweepCommand(const SweepArgs& args, const AppContext& app) {
+  const runner::ExperimentConfig base = config::LoadConfig(args.config, {}, app.parts);
+  const std::vector<runner::SweepAxis> axes = runner::SweepAxes(base.sweep, args.axes);
+  if (axes.empty()) throw io::InputError(args.config + ": nothing to sweep: give --set KEY=VALUES or a 'sweep' section");
+  const std::vector<runner::SweepPoint> grid = runner::SweepGrid(axes);
+  const std::vector<runner::ExperimentConfig> configs = PointConfigs(args, grid, app);
+  int total_tasks = 0;
+  for (const runner::ExperimentConfig& config : configs) {
+    total_tasks += static_cast<int>(runner::RowsOf(config).size()) * config.realizations;
+  }
+  const MonteCarloSetup setup = SetUpMonteCarlo(args, base.name);
+
+  Progress progress("sweep " + base.name, args.quiet);
+  std::vector<report::SweepPointResult> results;
+  int tasks_done = 0;
+  for (std::size_t p = 0; p < configs.size(); ++p) {
+    const runner::ExperimentConfig& config = configs[p];
+    const std::vector<runner::Attempt> attempts = runner::RunMonteCarlo(
+        config, app.parts, {setup.threads, [&](int done, int) { progress.Update(tasks_done + done, total_tasks); }});
+    report::SweepPointResult result{grid[p], runner::RowsOf(config), {}};
+    result.summaries = report::Summarize(attempts, result.rows, config.realizations, config.bootstrap_resamples, config.seed);
+    tasks_done += static_cast<int>(result.rows.size()) * config.realizations;
+    results.push_back(std::move(result));
+  }
+  const double wall_time_s = progress.elapsed_s();
+  progress.Finish(total_tasks);
+
+  io::AtomicFile csv(setup.out / "sweep.csv");
+  report::WriteSweepCsv(csv.stream(), axes, results);
+  io::AtomicFile timing(setup.out / "timing.csv");
+  report::WriteSweepTiming(timing.stream(), axes, results);
+  std::ostringstream md;
+  report::WriteSweepMarkdown(md, base.name, configs.front().realizations, configs.front().seed, axes, results);
+  io::AtomicFile markdown(setup.out / "sweep.md");
+  markdown.stream() << md.str();
+  std::vector<std::string> command_line;
+  for (const std::string& axis : args.axes) command_line.push_back("--set " + axis);
+  report::RunInfo info = RunInfoOf(args, setup, app, base, wall_time_s, command_line);
+  info.sweep_axes = runner::DescribeAxes(axes);
+  io::AtomicFile manifest(setup.out / "manifest.json");
+  manifest.stream() << report::ManifestJson(configs.front(), info);
+  for (io::AtomicFile* file : {&csv, &timing, &markdown, &manifest}) file->Commit();
+  if (!args.quiet) std::cout << md.str();
+  return 0;
+}
+
+}  // namespace anchorbench::app

@@ -1,0 +1,26 @@
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "anchorbench/registry/components.hpp"
+#include "anchorbench/runner/experiment.hpp"
+
+namespace anchorbench::config {
+
+// Reads and validates an experiment file (configs/*.yaml; docs/config.md lists the keys); throws
+// io::InputError naming the file and key path. `overrides` are KEY=VALUE pairs (KEY a dotted
+// path such as scenario.tunnel.width_m) applied to the YAML before validation, so an override is
+// checked exactly like a value in the file. Part names (solver, filter, triggers) are checked
+// against `components`, the caller's registries: a part of your own can be named in a file.
+runner::ExperimentConfig LoadConfig(const std::string& path, const std::vector<std::string>& overrides,
+                                    const registry::Components& components);
+
+// The `estimator` section of a file only (replay --config).
+registry::EstimatorConfig LoadEstimatorConfig(const std::string& path, const registry::Components& components);
+
+// The resolved configuration in the file schema: YAML text, and JSON (for manifests).
+std::string ToYaml(const runner::ExperimentConfig& config);
+std::string ToJson(const runner::ExperimentConfig& config, int indent = 2);
+
+}  // namespace anchorbench::config

@@ -1,0 +1,182 @@
+#pragma once
+
+#include <functional>
+#include <optional>
+#include <set>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include <Eigen/Core>
+#include <yaml-cpp/yaml.h>
+
+namespace anchorbench::config {
+
+struct Bounds {
+  double min = -1e300;
+  double max = 1e300;
+  bool min_exclusive = false;
+};
+
+// Reads a YAML mapping field by field with the key path in every error. Absent keys keep the
+// value they had (the options structs' defaults, or a base configuration being overlaid);
+// Finish() rejects keys nobody asked for. The config visitors (config.cpp) drive it, and drive
+// YamlWriter the same way, so every key is listed once.
+class YamlSection {
+ public:
+  YamlSection(const YAML::Node& node, std::string path, std::string file);
+
+  void Number(std::string_view key, double& value, Bounds bounds = {});
+  void Integer(std::string_view key, int& value, int min = -2147483647, int max = 2147483647);
+  void Flag(std::string_view key, bool& value);
+  template <typename Enum, typename Parse, typename Name>
+  void Choice(std::string_view key, Enum& value, Parse parse, Name /*to_string*/, std::string_view choices) {
+    if (!Has(key)) return;
+    const YAML::Node n = Get(key);
+    if (!n.IsScalar() || !parse(n.Scalar(), &value)) {
+      Fail(key, "unknown value " + Describe(n) + " (choices: " + std::string(choices) + ")");
+    }
+  }
+  void Text(std::string_view key, std::string& value);
+  void TextList(std::string_view key, std::vector<std::string>& values);
+  // A registered name: known(name, &why) is a registry's Knows, so the message says why not.
+  template <typename Known>
+  void Name(std::string_view key, std::string& value, Known known) {
+    if (!Has(key)) return;
+    Text(key, value);
+    std::string why;
+    if (!known(value, &why)) Fail(key, why);
+  }
+  // A non-empty list of distinct registered names.
+  template <typename Known>
+  void NameList(std::string_view key, std::vector<std::string>& values, Known known) {
+    if (!Has(key)) return;
+    TextList(key, values);
+    if (values.empty()) Fail(key, "expected at least one name (anchorbench list shows the choices)");
+    for (std::size_t i = 0; i < values.size(); ++i) {
+      std::string why;
+      if (!known(values[i], &why)) Fail(key, why);
+      for (std::size_t j = 0; j < i; ++j)
+        if (values[j] == values[i]) Fail(key, "'" + values[i] + "' is listed twice");
+    }
+  }
+  void VectorList(std::string_view key, std::vector<Eigen::Vector3d>& values);  // [[x, y, z], ...]
+  // A mapping of free-form keys to a scalar or a list (joined with ','), in file order.
+  void TextMap(std::string_view key, std::vector<std::pair<std::string, std::string>>& entries);
+  template <typename Visit>
+  void Section(std::string_view key, Visit visit) {
+    YamlSection child = Has(key) ? YamlSection(Get(key), KeyPath(key), file_)
+                                 : YamlSection(YAML::Node(YAML::NodeType::Map), KeyPath(key), file_);
+    used_.emplace(key);
+    visit(child);
+    child.Finish();
+  }
+  // A section that may be absent: read into a fresh value only if present.
+  template <typename T, typename Visit>
+  void OptionalSection(std::string_view key, std::optional<T>& value, Visit visit) {
+    if (!Has(key)) return;
+    value.emplace();
+    Section(key, [&](YamlSection& child) { visit(child, *value); });
+  }
+  // A list of mappings; each item starts as make_item() (e.g. a copy of the base) and is overlaid.
+  template <typename T, typename Make, typename Visit>
+  void List(std::string_view key, std::vector<T>& items, Make make_item, Visit visit) {
+    if (!Has(key)) return;
+    const YAML::Node list = Get(key);
+    if (!list.IsSequence()) Fail(key, "expected a list, got " + Describe(list));
+    items.clear();
+    for (std::size_t i = 0; i < list.size(); ++i) {
+      T item = make_item();
+      YamlSection child(list[i], KeyPath(key) + "[" + std::to_string(i) + "]", file_);
+      visit(child, item);
+      child.Finish();
+      items.push_back(std::move(item));
+    }
+  }
+  // An options struct's IsValid, the one place its limits are checked. Its message starts with
+  // the key it is about ("sigma_range_m must be >= 0"); where that is a key of this section, the
+  // error names the key's path and value, otherwise the section.
+  template <typename Options>
+  void Check(const Options& options) const {
+    std::string why;
+    if (!options.IsValid(&why)) FailValidation(why);
+  }
+
+  bool Has(std::string_view key) const;
+  void Finish() const;  // throws on keys that were never read
+  [[noreturn]] void Fail(std::string_view key, const std::string& message) const;
+  [[noreturn]] void FailSection(const std::string& message) const;
+  [[noreturn]] void FailValidation(const std::string& why) const;
+  std::string KeyPath(std::string_view key) const;
+  static std::string Describe(const YAML::Node& node);
+
+ private:
+  YAML::Node Get(std::string_view key);
+
+  YAML::Node node_;
+  std::string path_;
+  std::string file_;
+  std::set<std::string, std::less<>> used_;
+};
+
+// The writing twin of YamlSection: the same visitors fill a YAML node (resolved configs in manifests).
+class YamlWriter {
+ public:
+  explicit YamlWriter(YAML::Node node) : node_(node) {}
+
+  void Number(std::string_view key, double& value, Bounds = {}) { node_[std::string(key)] = value; }
+  void Integer(std::string_view key, int& value, int = 0, int = 0) { node_[std::string(key)] = value; }
+  void Flag(std::string_view key, bool& value) { node_[std::string(key)] = value; }
+  template <typename Enum, typename Parse, typename Name>
+  void Choice(std::string_view key, Enum& value, Parse, Name to_string, std::string_view) {
+    node_[std::string(key)] = std::string(to_string(value));
+  }
+  void Text(std::string_view key, std::string& value) { node_[std::string(key)] = value; }
+  void TextList(std::string_view key, std::vector<std::string>& values) {
+    if (!values.empty()) node_[std::string(key)] = values;
+  }
+  template <typename Known>
+  void Name(std::string_view key, std::string& value, Known) {
+    Text(key, value);
+  }
+  template <typename Known>
+  void NameList(std::string_view key, std::vector<std::string>& values, Known) {
+    TextList(key, values);
+  }
+  void VectorList(std::string_view key, std::vector<Eigen::Vector3d>& values) {
+    YAML::Node list(YAML::NodeType::Sequence);
+    for (const Eigen::Vector3d& v : values) list.push_back(std::vector<double>{v.x(), v.y(), v.z()});
+    node_[std::string(key)] = list;
+  }
+  void TextMap(std::string_view key, std::vector<std::pair<std::string, std::string>>& entries) {
+    for (const auto& [name, text] : entries) node_[std::string(key)][name] = text;
+  }
+  template <typename Visit>
+  void Section(std::string_view key, Visit visit) {
+    YamlWriter child(node_[std::string(key)]);
+    visit(child);
+  }
+  template <typename T, typename Visit>
+  void OptionalSection(std::string_view key, std::optional<T>& value, Visit visit) {
+    if (value) Section(key, [&](YamlWriter& child) { visit(child, *value); });
+  }
+  template <typename T, typename Make, typename Visit>
+  void List(std::string_view key, std::vector<T>& items, Make, Visit visit) {
+    if (items.empty()) return;
+    YAML::Node list(YAML::NodeType::Sequence);
+    for (T& item : items) {
+      YAML::Node entry(YAML::NodeType::Map);
+      YamlWriter child(entry);
+      visit(child, item);
+      list.push_back(entry);
+    }
+    node_[std::string(key)] = list;
+  }
+  template <typename Options>
+  void Check(const Options&) const {}
+
+ private:
+  YAML::Node node_;
+};
+
+}  // namespace anchorbench::config

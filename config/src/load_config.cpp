@@ -1,0 +1,91 @@
+#include "anchorbench/config/load_config.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+
+#include "anchorbench/config/config_yaml.hpp"
+#include "anchorbench/config/yaml_section.hpp"
+#include "anchorbench/io/format.hpp"
+#include "anchorbench/io/input_error.hpp"
+#include "visitors.hpp"
+
+namespace anchorbench::config {
+namespace {
+
+std::string JsonString(const std::string& text) {
+  std::string out = "\"";
+  for (char c : text) {
+    if (c == '"' || c == '\\') out += '\\';
+    if (c == '\n') {
+      out += "\\n";
+      continue;
+    }
+    out += c;
+  }
+  return out + "\"";
+}
+
+// YAML (as yaml-cpp holds it) to JSON: mappings, lists, numbers and booleans as such, text quoted.
+std::string YamlToJson(const YAML::Node& node, int indent) {
+  const std::string pad(static_cast<std::size_t>(indent + 2), ' ');
+  if (node.IsMap()) {
+    std::string out = "{";
+    bool first = true;
+    for (const auto& entry : node) {
+      out += (first ? "\n" : ",\n") + pad + JsonString(entry.first.as<std::string>()) + ": " +
+             YamlToJson(entry.second, indent + 2);
+      first = false;
+    }
+    return out + "\n" + std::string(static_cast<std::size_t>(indent), ' ') + "}";
+  }
+  if (node.IsSequence()) {
+    std::string out = "[";
+    for (std::size_t i = 0; i < node.size(); ++i) out += (i ? ",\n" : "\n") + pad + YamlToJson(node[i], indent + 2);
+    return out + "\n" + std::string(static_cast<std::size_t>(indent), ' ') + "]";
+  }
+  const std::string scalar = node.Scalar();
+  double number = 0.0;
+  if (scalar == "true" || scalar == "false") return scalar;
+  if (YAML::convert<double>::decode(node, number) && std::isfinite(number)) return io::FormatNumber(number);
+  return JsonString(scalar);
+}
+
+}  // namespace
+
+runner::ExperimentConfig LoadConfig(const std::string& path, const std::vector<std::string>& overrides,
+                                    const registry::Components& components) {
+  YAML::Node root = LoadConfigYaml(path, overrides);
+  runner::ExperimentConfig config;
+  config.name = std::filesystem::path(path).stem().string();
+  YamlSection top(root, "", path);
+  visit::Experiment(top, config, components);
+  top.Finish();
+  for (const std::string& name : config.only_rows) {
+    const bool known =
+        std::any_of(config.rows.begin(), config.rows.end(), [&](const runner::RowConfig& r) { return r.name == name; });
+    if (!known) top.Fail("only_rows", "no row named '" + name + "'");
+  }
+  return config;
+}
+
+registry::EstimatorConfig LoadEstimatorConfig(const std::string& path, const registry::Components& components) {
+  return LoadConfig(path, {}, components).estimator;
+}
+
+std::string ToYaml(const runner::ExperimentConfig& config) {
+  runner::ExperimentConfig copy = config;
+  YAML::Node root(YAML::NodeType::Map);
+  YamlWriter writer(root);
+  const registry::Components no_parts;  // the writer does not check names
+  visit::Experiment(writer, copy, no_parts);
+  YAML::Emitter out;
+  out << root;
+  return out.c_str();
+}
+
+std::string ToJson(const runner::ExperimentConfig& config, int indent) {
+  return YamlToJson(YAML::Load(ToYaml(config)), indent);
+}
+
+}  // namespace anchorbench::config

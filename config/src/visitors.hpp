@@ -1,0 +1,197 @@
+#pragma once
+// The experiment schema, listed once: one visitor per options struct names its keys. YamlSection
+// reads a file through them (validating each struct with its own IsValid) and YamlWriter writes
+// the resolved configuration back through the same visitors. Bounds appear here only for the
+// experiment's own keys; the options structs check their limits themselves.
+
+#include <limits>
+#include <string>
+
+#include "anchorbench/registry/components.hpp"
+#include "anchorbench/runner/experiment.hpp"
+
+namespace anchorbench::config::visit {
+
+template <typename V, typename Options>
+void Box(V& v, Options& o) {
+  v.Number("length_m", o.length_m);
+  v.Number("width_m", o.width_m);
+  v.Number("height_m", o.height_m);
+  v.Integer("num_anchors", o.num_anchors);
+  v.Number("anchor_height_min_m", o.anchor_height_min_m);
+  v.Number("anchor_height_max_m", o.anchor_height_max_m);
+}
+
+template <typename V>
+void Tunnel(V& v, sim::TunnelOptions& o) {
+  Box(v, o);
+  v.Number("along_jitter_m", o.along_jitter_m);
+  v.Check(o);
+}
+
+template <typename V>
+void Hall(V& v, sim::HallOptions& o) {
+  Box(v, o);
+  v.Choice("anchor_walls", o.anchor_walls, sim::ParseHallWalls, [](auto w) { return sim::ToString(w); }, "all, front");
+  v.Check(o);
+}
+
+template <typename V>
+void Trajectory(V& v, sim::TrajectoryOptions& o) {
+  v.Choice("kind", o.kind, sim::ParseTrajectoryKind, [](auto k) { return sim::ToString(k); },
+           "random, straight, planar, short");
+  v.Number("fraction_straight", o.fraction_straight);
+  v.Number("fraction_planar", o.fraction_planar);
+  v.Number("fraction_short", o.fraction_short);
+  v.Number("rate_hz", o.rate_hz);
+  v.Number("speed_mps", o.speed_mps);
+  v.Number("speed_variation", o.speed_variation);
+  v.Number("height_m", o.height_m);
+  v.Number("lateral_excursion_m", o.lateral_excursion_m);
+  v.Number("vertical_excursion_m", o.vertical_excursion_m);
+  v.Number("planar_vertical_excursion_m", o.planar_vertical_excursion_m);
+  v.Number("min_period_s", o.min_period_s);
+  v.Number("max_period_s", o.max_period_s);
+  v.Number("short_fraction", o.short_fraction);
+  v.Number("hall_duration_s", o.hall_duration_s);
+  v.Check(o);
+}
+
+template <typename V>
+void Ranging(V& v, sim::RangeModelOptions& o) {
+  v.Number("sigma_range_m", o.sigma_range_m);
+  v.Choice("bias_distribution", o.bias_distribution, sim::ParseBiasDistribution,
+           [](auto d) { return sim::ToString(d); }, "uniform, normal");
+  v.Number("bias_a_m", o.bias_a_m);
+  v.Number("bias_b_m", o.bias_b_m);
+  v.Number("outlier_probability", o.outlier_probability);
+  v.Number("outlier_burst_length", o.outlier_burst_length);
+  v.Choice("outlier_kind", o.outlier_kind, sim::ParseOutlierKind, [](auto k) { return sim::ToString(k); },
+           "positive, symmetric");
+  v.Number("outlier_min_m", o.outlier_min_m);
+  v.Number("outlier_max_m", o.outlier_max_m);
+  v.Number("max_range_m", o.max_range_m);
+  v.Number("dropout_probability", o.dropout_probability);
+  v.Number("sigma_position_m", o.sigma_position_m);
+  v.Check(o);
+}
+
+template <typename V>
+void Scenario(V& v, sim::ScenarioOptions& o) {
+  v.Choice("environment", o.environment, sim::ParseEnvironmentKind, [](auto k) { return sim::ToString(k); },
+           "tunnel, hall");
+  v.VectorList("tag_offsets_m", o.tag_offsets_m);
+  v.Section("tunnel", [&](auto& s) { Tunnel(s, o.tunnel); });
+  v.Section("hall", [&](auto& s) { Hall(s, o.hall); });
+  v.Section("trajectory", [&](auto& s) { Trajectory(s, o.trajectory); });
+  v.Section("ranging", [&](auto& s) { Ranging(s, o.ranging); });
+  v.Check(o);
+}
+
+template <typename V>
+void Filter(V& v, registry::FilterConfig& o, const registry::Components& parts) {
+  v.Name("kind", o.kind, [&](const std::string& name, std::string* why) { return parts.filters.Knows(name, why); });
+  v.Number("tau_m", o.consistency.tau_m);
+  v.Integer("reseed_after_rejections", o.consistency.reseed_after_rejections);
+  v.Check(o.consistency);
+  v.Section("ransac", [&](auto& r) {
+    r.Number("success_probability", o.ransac.success_probability);
+    r.Integer("subset_size", o.ransac.subset_size);
+    r.Number("outlier_fraction", o.ransac.outlier_fraction);
+    r.Number("inlier_threshold_m", o.ransac.inlier_threshold_m);
+    r.Check(o.ransac);
+  });
+}
+
+// `trigger`: when and how often an initializer may solve, and how much it keeps.
+template <typename V>
+void Trigger(V& v, registry::EstimatorConfig& o) {
+  v.Number("pdop_threshold", o.trigger.pdop_threshold);
+  v.Integer("min_samples", o.initializer.min_samples);
+  v.Number("retry_growth", o.initializer.retry_growth);
+  v.Integer("max_buffered_samples", o.initializer.max_buffered_samples);
+  v.Choice("at_cap", o.initializer.at_cap, estimator::ParseBufferPolicy, [](auto p) { return estimator::ToString(p); },
+           "thin, keep_first");
+  v.Integer("sample_count", o.trigger.sample_count);
+  v.Number("timeout_s", o.trigger.timeout_s);
+  v.Integer("evaluate_every", o.trigger.evaluate_every);
+  v.Check(o.trigger);
+  v.Check(o.initializer);
+}
+
+template <typename V>
+void Ls(V& v, estimator::LsOptions& o) {
+  v.Choice("pivot", o.pivot, estimator::ParseLsPivot, [](auto p) { return estimator::ToString(p); },
+           "shortest_range, minimum_variance");
+  v.Number("sigma_range_m", o.sigma_range_m);
+  v.Number("sigma_position_m", o.sigma_position_m);
+  v.Check(o);
+}
+
+template <typename V>
+void Nls(V& v, estimator::NlsOptions& o) {
+  v.Choice("kernel", o.kernel, estimator::ParseKernelMode, [](auto k) { return estimator::ToString(k); },
+           "adaptive, l2, fixed");
+  v.Number("fixed_alpha", o.fixed_alpha);
+  v.Number("alpha_min", o.alpha_min);
+  v.Number("kernel_scale_m", o.kernel_scale_m);
+  v.Number("truncation", o.truncation);
+  v.Integer("max_iterations", o.max_iterations);
+  v.Number("step_tolerance_m", o.step_tolerance_m);
+  v.Number("alpha_tolerance", o.alpha_tolerance);
+  v.Number("initial_damping", o.initial_damping);
+  v.Flag("l2_warm_start", o.l2_warm_start);
+  v.Check(o);
+}
+
+template <typename V>
+void Estimator(V& v, registry::EstimatorConfig& o, const registry::Components& parts) {
+  v.Name("solver", o.solver, [&](const std::string& name, std::string* why) { return parts.solvers.Knows(name, why); });
+  v.NameList("triggers", o.triggers,
+             [&](const std::string& name, std::string* why) { return parts.triggers.Knows(name, why); });
+  v.Section("filter", [&](auto& s) { Filter(s, o.filter, parts); });
+  v.Section("trigger", [&](auto& s) { Trigger(s, o); });
+  v.Section("ls", [&](auto& s) { Ls(s, o.solver_options.ls); });
+  v.Section("nls", [&](auto& s) { Nls(s, o.solver_options.nls); });
+}
+
+template <typename V>
+void PaperCells(V& v, runner::PaperCells& cells) {
+  constexpr Bounds kNonNegative{0.0};
+  v.Number("avg_m", cells.avg_m, kNonNegative);
+  v.Number("med_m", cells.med_m, kNonNegative);
+  v.Number("init", cells.init, kNonNegative);
+  v.Number("gt1m", cells.gt1m, kNonNegative);
+  v.Number("ratio_pct", cells.ratio_pct, {0.0, 100.0});
+}
+
+template <typename V>
+void Row(V& v, runner::RowConfig& row, const registry::Components& parts) {
+  v.Text("name", row.name);
+  v.Section("scenario", [&](auto& s) { Scenario(s, row.scenario); });
+  v.Section("estimator", [&](auto& s) { Estimator(s, row.estimator, parts); });
+  v.OptionalSection("paper", row.paper, [](auto& s, runner::PaperRow& paper) {
+    s.Section("fixed", [&](auto& cells) { PaperCells(cells, paper.fixed); });
+    s.Section("gated", [&](auto& cells) { PaperCells(cells, paper.gated); });
+  });
+}
+
+template <typename V>
+void Experiment(V& v, runner::ExperimentConfig& c, const registry::Components& parts) {
+  int seed = static_cast<int>(c.seed);
+  v.Integer("seed", seed, 0, std::numeric_limits<int>::max());
+  c.seed = static_cast<std::uint64_t>(seed);
+  v.Integer("realizations", c.realizations, 1, 100000000);
+  v.Integer("bootstrap_resamples", c.bootstrap_resamples, 0, 1000000);
+  v.Section("scenario", [&](auto& s) { Scenario(s, c.scenario); });
+  v.Section("estimator", [&](auto& s) { Estimator(s, c.estimator, parts); });
+  v.TextList("only_rows", c.only_rows);
+  v.TextMap("sweep", c.sweep);
+  // Rows start from the base read above, so the base must come first in the visit.
+  int index = 0;
+  v.List("rows", c.rows,
+         [&] { return runner::RowConfig{std::to_string(++index), c.scenario, c.estimator, std::nullopt}; },
+         [&](auto& s, runner::RowConfig& row) { Row(s, row, parts); });
+}
+
+}  // namespace anchorbench::config::visit

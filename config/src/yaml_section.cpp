@@ -1,0 +1,149 @@
+#include "anchorbench/config/yaml_section.hpp"
+
+#include <cmath>
+#include <sstream>
+
+#include "anchorbench/io/input_error.hpp"
+
+namespace anchorbench::config {
+
+using io::InputError;
+std::string YamlSection::Describe(const YAML::Node& node) {
+  if (node.IsScalar()) return "'" + node.Scalar() + "'";
+  if (node.IsSequence()) return "a list";
+  if (node.IsMap()) return "a mapping";
+  return "nothing";
+}
+
+YamlSection::YamlSection(const YAML::Node& node, std::string path, std::string file)
+    : node_(node), path_(std::move(path)), file_(std::move(file)) {
+  if (node_ && !node_.IsNull() && !node_.IsMap()) {
+    throw InputError(file_ + ": key '" + path_ + "': expected a mapping, got " + Describe(node_));
+  }
+}
+
+std::string YamlSection::KeyPath(std::string_view key) const {
+  return path_.empty() ? std::string(key) : path_ + "." + std::string(key);
+}
+
+void YamlSection::Fail(std::string_view key, const std::string& message) const {
+  throw InputError(file_ + ": key '" + KeyPath(key) + "': " + message);
+}
+
+void YamlSection::FailSection(const std::string& message) const {
+  throw InputError(file_ + ": " + (path_.empty() ? std::string("top level") : "key '" + path_ + "'") + ": " + message);
+}
+
+void YamlSection::FailValidation(const std::string& why) const {
+  const std::string key = why.substr(0, why.find(' '));
+  if (key.size() < why.size() && Has(key)) Fail(key, why.substr(key.size() + 1) + ", got " + Describe(node_[key]));
+  FailSection(why);
+}
+
+bool YamlSection::Has(std::string_view key) const {
+  return node_.IsMap() && node_[std::string(key)].IsDefined() && !node_[std::string(key)].IsNull();
+}
+
+YAML::Node YamlSection::Get(std::string_view key) {
+  used_.emplace(key);
+  return node_[std::string(key)];
+}
+
+void YamlSection::Number(std::string_view key, double& value, Bounds bounds) {
+  if (!Has(key)) return;
+  const YAML::Node n = Get(key);
+  double parsed = 0.0;
+  if (!n.IsScalar() || !YAML::convert<double>::decode(n, parsed)) Fail(key, "expected a number, got " + Describe(n));
+  if (!std::isfinite(parsed)) Fail(key, "must be finite, got " + Describe(n));
+  const bool below = bounds.min_exclusive ? parsed <= bounds.min : parsed < bounds.min;
+  if (below || parsed > bounds.max) {
+    std::ostringstream range;
+    range << "must be " << (bounds.min_exclusive ? "> " : ">= ") << bounds.min;
+    if (bounds.max < 1e300) range << " and <= " << bounds.max;
+    Fail(key, range.str() + ", got " + Describe(n));
+  }
+  value = parsed;
+}
+
+void YamlSection::Integer(std::string_view key, int& value, int min, int max) {
+  if (!Has(key)) return;
+  const YAML::Node n = Get(key);
+  int parsed = 0;
+  if (!n.IsScalar() || !YAML::convert<int>::decode(n, parsed)) Fail(key, "expected an integer, got " + Describe(n));
+  if (parsed < min || parsed > max) {
+    Fail(key, "must be in [" + std::to_string(min) + ", " + std::to_string(max) + "], got " + Describe(n));
+  }
+  value = parsed;
+}
+
+void YamlSection::Flag(std::string_view key, bool& value) {
+  if (!Has(key)) return;
+  const YAML::Node n = Get(key);
+  bool parsed = false;
+  if (!n.IsScalar() || !YAML::convert<bool>::decode(n, parsed)) Fail(key, "expected true or false, got " + Describe(n));
+  value = parsed;
+}
+
+void YamlSection::Text(std::string_view key, std::string& value) {
+  if (!Has(key)) return;
+  const YAML::Node n = Get(key);
+  if (!n.IsScalar()) Fail(key, "expected text, got " + Describe(n));
+  value = n.Scalar();
+}
+
+void YamlSection::TextList(std::string_view key, std::vector<std::string>& values) {
+  if (!Has(key)) return;
+  const YAML::Node n = Get(key);
+  if (!n.IsSequence()) Fail(key, "expected a list, got " + Describe(n));
+  values.clear();
+  for (const auto& item : n) {
+    if (!item.IsScalar()) Fail(key, "expected a list of names, got " + Describe(item));
+    values.push_back(item.Scalar());
+  }
+}
+
+void YamlSection::VectorList(std::string_view key, std::vector<Eigen::Vector3d>& values) {
+  if (!Has(key)) return;
+  const YAML::Node n = Get(key);
+  if (!n.IsSequence()) Fail(key, "expected a list of [x, y, z], got " + Describe(n));
+  values.clear();
+  for (const auto& item : n) {
+    Eigen::Vector3d v;
+    bool ok = item.IsSequence() && item.size() == 3;
+    for (std::size_t i = 0; ok && i < 3; ++i) ok = item[i].IsScalar() && YAML::convert<double>::decode(item[i], v[i]);
+    if (!ok || !v.allFinite()) Fail(key, "expected a list of [x, y, z] (metres), got an entry " + Describe(item));
+    values.push_back(v);
+  }
+}
+
+void YamlSection::TextMap(std::string_view key, std::vector<std::pair<std::string, std::string>>& entries) {
+  if (!Has(key)) return;
+  const YAML::Node n = Get(key);
+  if (!n.IsMap()) Fail(key, "expected a mapping, got " + Describe(n));
+  entries.clear();
+  for (const auto& entry : n) {
+    const std::string name = entry.first.as<std::string>();
+    std::string text;
+    if (entry.second.IsScalar()) {
+      text = entry.second.Scalar();
+    } else if (entry.second.IsSequence()) {
+      for (const auto& item : entry.second) {
+        if (!item.IsScalar()) Fail(std::string(key) + "." + name, "expected values, got " + Describe(item));
+        text += (text.empty() ? "" : ",") + item.Scalar();
+      }
+    } else {
+      Fail(std::string(key) + "." + name, "expected a value, a list or a range, got " + Describe(entry.second));
+    }
+    entries.emplace_back(name, text);
+  }
+}
+
+void YamlSection::Finish() const {
+  if (!node_.IsMap()) return;
+  for (const auto& entry : node_) {
+    const std::string key = entry.first.as<std::string>();
+    if (!used_.contains(key)) Fail(key, "unknown key");
+  }
+}
+
+}  // namespace anchorbench::config

@@ -1,0 +1,225 @@
+#include "anchorbench/config/load_config.hpp"
+
+#include <gtest/gtest.h>
+
+#include "anchorbench/eval/oracles.hpp"
+#include "anchorbench/testing/parts.hpp"
+#include "anchorbench/io/input_error.hpp"
+#include "anchorbench/testing/temp_dir.hpp"
+
+namespace anchorbench::config {
+namespace {
+
+using io::InputError;
+using runner::ExperimentConfig;
+using runner::RowsOf;
+
+using anchorbench::testing::Parts;
+
+ExperimentConfig LoadConfig(const std::string& path, const std::vector<std::string>& overrides = {}) {
+  return config::LoadConfig(path, overrides, Parts());
+}
+
+// The error message for a config text, or "" if it loads.
+std::string ErrorFor(const std::string& yaml) {
+  testing::TempDir dir("config");
+  const std::string path = dir.Write("c.yaml", yaml);
+  try {
+    LoadConfig(path);
+  } catch (const InputError& e) {
+    return e.what();
+  }
+  return "";
+}
+
+TEST(Config, ShippedConfigsLoad) {
+  const ExperimentConfig config = LoadConfig(std::string(ANCHORBENCH_CONFIG_DIR) + "/tunnel.yaml");
+  EXPECT_EQ(config.name, "tunnel");
+  EXPECT_EQ(config.scenario.tunnel.num_anchors, 30);
+  EXPECT_DOUBLE_EQ(config.estimator.trigger.pdop_threshold, 1.0);
+}
+
+TEST(Config, AbsentKeysKeepDefaults) {
+  EXPECT_EQ(ErrorFor("seed: 3\n"), "");
+  EXPECT_EQ(ErrorFor(""), "");
+}
+
+TEST(Config, UnknownKeyNamesItsPath) {
+  const std::string error = ErrorFor("scenario:\n  ranging:\n    sigma_rnage_m: 0.1\n");
+  EXPECT_NE(error.find("key 'scenario.ranging.sigma_rnage_m': unknown key"), std::string::npos) << error;
+  EXPECT_NE(ErrorFor("estimatr: {}\n").find("key 'estimatr': unknown key"), std::string::npos);
+}
+
+TEST(Config, ComponentNamesAreCheckedAgainstTheRegistries) {
+  EXPECT_EQ(ErrorFor("estimator:\n  triggers: [pdop_true, pdop_ls, timeout]\n  filter: {kind: ransac}\n"), "");
+  std::string error = ErrorFor("estimator:\n  triggers: [fixed_window, pdop_best]\n");
+  EXPECT_NE(error.find("key 'estimator.triggers': unknown trigger 'pdop_best' (anchorbench list shows the choices)"),
+            std::string::npos)
+      << error;
+  error = ErrorFor("estimator:\n  triggers: [timeout, timeout]\n");
+  EXPECT_NE(error.find("key 'estimator.triggers': 'timeout' is listed twice"), std::string::npos) << error;
+  error = ErrorFor("estimator:\n  triggers: []\n");
+  EXPECT_NE(error.find("key 'estimator.triggers': expected at least one name"), std::string::npos) << error;
+  error = ErrorFor("estimator:\n  filter: {kind: median}\n");
+  EXPECT_NE(error.find("key 'estimator.filter.kind': unknown filter 'median'"), std::string::npos) << error;
+  error = ErrorFor("estimator:\n  filter: {enabled: false}\n");  // the switch that filter.kind replaced
+  EXPECT_NE(error.find("key 'estimator.filter.enabled': unknown key"), std::string::npos) << error;
+  error = ErrorFor("estimator:\n  trigger: {evaluate_every: 0}\n");
+  EXPECT_NE(error.find("key 'estimator.trigger.evaluate_every'"), std::string::npos) << error;
+}
+
+TEST(Config, WrongTypeNamesItsPath) {
+  const std::string error = ErrorFor("scenario:\n  tunnel:\n    num_anchors: many\n");
+  EXPECT_NE(error.find("key 'scenario.tunnel.num_anchors': expected an integer, got 'many'"), std::string::npos)
+      << error;
+  EXPECT_NE(ErrorFor("estimator:\n  nls:\n    l2_warm_start: maybe\n").find("expected true or false"), std::string::npos);
+  EXPECT_NE(ErrorFor("scenario: 5\n").find("key 'scenario': expected a mapping"), std::string::npos);
+}
+
+TEST(Config, OutOfRangeValuesNameTheirPath) {
+  EXPECT_NE(ErrorFor("scenario:\n  ranging:\n    sigma_range_m: -0.1\n").find("key 'scenario.ranging.sigma_range_m': must be >= 0"),
+            std::string::npos);
+  EXPECT_NE(ErrorFor("estimator:\n  filter:\n    tau_m: -1\n").find("key 'estimator.filter.tau_m'"), std::string::npos);
+  EXPECT_NE(ErrorFor("estimator:\n  trigger:\n    pdop_threshold: 0\n").find("key 'estimator.trigger.pdop_threshold': must be > 0"),
+            std::string::npos);
+  EXPECT_NE(ErrorFor("scenario:\n  ranging:\n    sigma_range_m: .nan\n").find("must be finite"), std::string::npos);
+  EXPECT_NE(ErrorFor("scenario:\n  ranging:\n    outlier_probability: 1.5\n").find("outlier_probability"),
+            std::string::npos);
+  EXPECT_NE(ErrorFor("scenario:\n  trajectory:\n    kind: spiral\n").find("unknown value 'spiral' (choices: random"),
+            std::string::npos);
+}
+
+// The options structs check their own limits (IsValid); the config reader names the key they
+// are about, with its value, or the section where no single key is to blame.
+TEST(Config, CrossFieldChecksNameTheKeyOrTheSection) {
+  std::string error = ErrorFor("scenario:\n  tunnel:\n    anchor_height_min_m: 4\n    anchor_height_max_m: 2\n");
+  EXPECT_NE(error.find("key 'scenario.tunnel.anchor_height_max_m': must be in [anchor_height_min_m, height_m], got '2'"),
+            std::string::npos)
+      << error;
+  error = ErrorFor("scenario:\n  trajectory: {fraction_straight: 0.6, fraction_planar: 0.6}\n");
+  EXPECT_NE(error.find("key 'scenario.trajectory': fraction_straight, fraction_planar and fraction_short must sum to <= 1"),
+            std::string::npos)
+      << error;
+  // Bursts of mean length 1 cannot make more than half of the ranges outliers.
+  error = ErrorFor("scenario:\n  ranging: {outlier_probability: 0.99, outlier_burst_length: 1}\n");
+  EXPECT_NE(error.find("key 'scenario.ranging.outlier_probability': must be <= L/(L+1)"), std::string::npos) << error;
+  error = ErrorFor("estimator:\n  filter: {ransac: {subset_size: 200, outlier_fraction: 0.99}}\n");
+  EXPECT_NE(error.find("key 'estimator.filter.ransac.subset_size'"), std::string::npos) << error;
+}
+
+TEST(Config, SyntaxErrorNamesTheLine) {
+  const std::string error = ErrorFor("seed: 1\nscenario:\n  tunnel: [1, 2\n");
+  EXPECT_NE(error.find(".yaml:"), std::string::npos);
+  EXPECT_NE(error.find("YAML syntax error"), std::string::npos) << error;
+}
+
+TEST(Config, RowsOverlayTheBaseAndNameTheirPath) {
+  testing::TempDir dir("rows");
+  const std::string path = dir.Write("t.yaml",
+                                     "scenario:\n  ranging: {sigma_range_m: 0.2, outlier_probability: 0.1}\n"
+                                     "rows:\n  - name: a\n  - name: b\n    scenario: {ranging: {sigma_range_m: 0.5}}\n");
+  const ExperimentConfig config = LoadConfig(path);
+  ASSERT_EQ(config.rows.size(), 2u);
+  EXPECT_EQ(config.rows[0].scenario.ranging.sigma_range_m, 0.2);
+  EXPECT_EQ(config.rows[1].scenario.ranging.sigma_range_m, 0.5);
+  EXPECT_EQ(config.rows[1].scenario.ranging.outlier_probability, 0.1);  // inherited from the base
+  EXPECT_NE(ErrorFor("rows:\n  - scenario: {tunnel: {num_anchors: 0}}\n").find("key 'rows[0].scenario.tunnel.num_anchors'"),
+            std::string::npos);
+  EXPECT_NE(ErrorFor("realizations: 0\n").find("key 'realizations': must be in [1"), std::string::npos);
+  EXPECT_NE(ErrorFor("rows: 3\n").find("key 'rows': expected a list"), std::string::npos);
+}
+
+TEST(Config, OverridesAreValidatedLikeTheFile) {
+  testing::TempDir dir("set");
+  const std::string path = dir.Write("t.yaml", "scenario:\n  tunnel: {width_m: 8}\n");
+  const ExperimentConfig config = LoadConfig(path, {"scenario.tunnel.width_m=12", "estimator.trigger.pdop_threshold=0.5"});
+  EXPECT_EQ(config.scenario.tunnel.width_m, 12.0);
+  EXPECT_EQ(config.estimator.trigger.pdop_threshold, 0.5);
+  auto error_for = [&](const std::string& assignment) {
+    try {
+      LoadConfig(path, {assignment});
+    } catch (const InputError& e) {
+      return std::string(e.what());
+    }
+    return std::string();
+  };
+  EXPECT_NE(error_for("scenario.tunnel.widht_m=3").find("key 'scenario.tunnel.widht_m': unknown key"), std::string::npos);
+  EXPECT_NE(error_for("scenario.tunnel.width_m=-3").find("must be > 0"), std::string::npos);
+  EXPECT_NE(error_for("scenario.tunnel").find("expected KEY=VALUE"), std::string::npos);
+  EXPECT_NE(error_for("scenario.tunnel.width_m.x=1").find("'width_m' is not a section"), std::string::npos);
+  EXPECT_NE(error_for("seed.x=1").find("key 'seed': expected an integer"), std::string::npos);
+
+  const std::string table = dir.Write("rows.yaml", "rows:\n  - name: a\n  - name: b\n");
+  const ExperimentConfig rows = LoadConfig(table, {"rows.1.scenario.ranging.sigma_range_m=0.3"});
+  EXPECT_EQ(rows.rows[0].scenario.ranging.sigma_range_m, 0.1);
+  EXPECT_EQ(rows.rows[1].scenario.ranging.sigma_range_m, 0.3);
+  EXPECT_THROW(LoadConfig(table, {"rows.2.scenario.ranging.sigma_range_m=0.3"}), InputError);
+}
+
+TEST(Config, SolverByRegistryName) {
+  testing::TempDir dir("solver");
+  EXPECT_EQ(LoadConfig(dir.Write("a.yaml", "estimator: {solver: nlopt:LN_BOBYQA}\n")).estimator.solver,
+            "nlopt:LN_BOBYQA");
+  EXPECT_NE(ErrorFor("estimator: {solver: lm_magic}\n").find("key 'estimator.solver': unknown solver 'lm_magic'"),
+            std::string::npos);
+  EXPECT_NE(ErrorFor("estimator: {solver: 'nlopt:GN_CRS2_LM'}\n").find("draws from NLopt's process-wide random generator"),
+            std::string::npos);
+}
+
+// A part registered by the caller can be named in a file; one the caller did not register cannot.
+TEST(Config, NamesAreValidatedAgainstTheCallersRegistry) {
+  testing::TempDir dir("own_solver");
+  const std::string path = dir.Write("own.yaml", "estimator: {solver: my_solver}\n");
+  EXPECT_THROW(LoadConfig(path), InputError);
+  registry::Components mine = eval::MakeComponentsWithOracles();
+  mine.solvers.Register("my_solver", "mine", [](const std::string&, const registry::SolverContext& context) {
+    return std::make_unique<estimator::AnchorSolver>(context.options);
+  });
+  EXPECT_EQ(config::LoadConfig(path, {}, mine).estimator.solver, "my_solver");
+}
+
+TEST(Config, MissingFileIsAnInputError) {
+  EXPECT_THROW(LoadConfig("/nonexistent/config.yaml"), InputError);
+}
+
+TEST(Config, ResolvedYamlReadsBackToTheSameConfig) {
+  ExperimentConfig config = LoadConfig(std::string(ANCHORBENCH_CONFIG_DIR) + "/tunnel.yaml");
+  testing::TempDir dir("roundtrip");
+  const std::string path = dir.Write("tunnel.yaml", ToYaml(config));
+  const ExperimentConfig again = LoadConfig(path);
+  EXPECT_EQ(ToYaml(again), ToYaml(config));
+  EXPECT_EQ(again.scenario.ranging.outlier_probability, config.scenario.ranging.outlier_probability);
+  EXPECT_EQ(again.estimator.solver_options.nls.kernel, config.estimator.solver_options.nls.kernel);
+}
+
+TEST(ConfigFiles, BaseInheritanceOnlyRowsAndOverridesThatReachRows) {
+  testing::TempDir dir("base");
+  dir.Write("table.yaml",
+            "scenario:\n  tunnel: {width_m: 10}\nestimator:\n  filter: {tau_m: 0.2}\n"
+            "rows:\n  - {name: a, estimator: {filter: {tau_m: 0.3}}}\n  - {name: b}\n");
+  const std::string derived = dir.Write("derived.yaml",
+                                        "base: table.yaml\nrealizations: 7\nonly_rows: [b]\n"
+                                        "scenario:\n  tunnel: {height_m: 7}\nsweep:\n  estimator.filter.tau_m: 0.1:0.3:0.1\n");
+  const ExperimentConfig config = LoadConfig(derived);
+  EXPECT_EQ(config.realizations, 7);
+  EXPECT_EQ(config.scenario.tunnel.width_m, 10.0);  // from the base file
+  EXPECT_EQ(config.scenario.tunnel.height_m, 7.0);  // merged over it
+  ASSERT_EQ(RowsOf(config).size(), 1u);
+  EXPECT_EQ(RowsOf(config)[0].name, "b");
+  ASSERT_EQ(config.sweep.size(), 1u);
+  EXPECT_EQ(config.sweep[0].second, "0.1:0.3:0.1");
+
+  // An override of a base key also replaces the rows' own values of it.
+  const ExperimentConfig swept = LoadConfig(derived, {"estimator.filter.tau_m=0.9"});
+  EXPECT_EQ(swept.estimator.filter.consistency.tau_m, 0.9);
+  EXPECT_EQ(swept.rows[0].estimator.filter.consistency.tau_m, 0.9);  // row a had its own 0.3
+  EXPECT_EQ(swept.rows[1].estimator.filter.consistency.tau_m, 0.9);
+
+  const std::string unknown_row = dir.Write("bad.yaml", "base: table.yaml\nonly_rows: [c]\n");
+  EXPECT_THROW(LoadConfig(unknown_row), InputError);
+  const std::string cycle = dir.Write("cycle.yaml", "base: cycle.yaml\n");
+  EXPECT_THROW(LoadConfig(cycle), InputError);
+}
+
+}  // namespace
+}  // namespace anchorbench::config

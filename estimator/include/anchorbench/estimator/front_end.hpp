@@ -1,0 +1,118 @@
+#pragma once
+
+#include <cstddef>
+#include <deque>
+#include <functional>
+#include <limits>
+#include <map>
+#include <vector>
+
+#include "anchorbench/estimator/anchor_initializer.hpp"
+#include "anchorbench/estimator/pose_buffer.hpp"
+
+namespace anchorbench::estimator {
+
+struct FrontEndOptions {
+  PoseBufferOptions poses;
+  // A range waits for a pose of its tag at or after its time; once the newest time seen anywhere
+  // is this far past it, it is dropped and counted (a tag whose poses stopped or never came).
+  double max_wait_s = 10.0;
+  std::size_t max_waiting_ranges = 100000;  // beyond this, the oldest waiting range is dropped
+  // Solves run when the caller calls RunPendingSolves() instead of inside AddRange/AddSample
+  // (same results; see AnchorInitializer::SetDeferSolves).
+  bool defer_solves = false;
+};
+
+// An initialization (or a fixed-window solve at the end) of one anchor by one of its chains.
+struct FrontEndEvent {
+  int anchor_id = 0;
+  std::size_t chain = 0;  // index in the factory's list (e.g. the trigger)
+  InitEvent init;         // when, on how many samples, the estimate with covariance and status, the PDOP
+};
+
+// A range the front end could not hand to the initializers, and why.
+struct DroppedRange {
+  enum class Reason {
+    kOutsidePoses,  // before the oldest pose kept, or after the tag's last pose at the end of data
+    kNoPoseInTime,  // waited longer than max_wait_s, or the waiting queue was full
+  };
+  double t_s = 0.0;
+  int tag_id = 0;
+  int anchor_id = 0;
+  double range_m = 0.0;
+  Reason reason = Reason::kOutsidePoses;
+};
+
+// What the front end dropped before the initializers, by reason.
+struct FrontEndCounters {
+  long samples = 0;                 // ranges handed to the initializers
+  long ranges_outside_poses = 0;    // before the oldest pose kept, or after the last at the end of data
+  long ranges_without_pose = 0;     // waited longer than max_wait_s, or the waiting queue was full
+  long poses_ignored = 0;           // time not increasing for the tag, or not finite
+};
+
+// The online front end of a navigation stack with many anchors and one sensor callback: fed tag
+// poses and ranges as they arrive (or samples whose tag position is known), it interpolates the
+// tag position at each range time, creates the anchor's initializers on first sight (one per
+// chain: e.g. one per trigger), feeds them, and reports initializations as events. Memory is
+// bounded: a sliding pose history, a bounded queue of ranges waiting for their pose, and each
+// initializer's bounded buffer. No I/O, no global state.
+class FrontEnd {
+ public:
+  // The chains of a new anchor; may throw std::invalid_argument (the front end passes it on).
+  using ChainFactory = std::function<std::vector<AnchorInitializer>(int anchor_id)>;
+  // Sees every sample handed to the initializers, with the first chain's view of it.
+  using SampleObserver = std::function<void(const RangeSample&, const FeedResult&)>;
+  // Sees every range dropped. Ranges leave the waiting queue (used or dropped) in arrival order.
+  using DropObserver = std::function<void(const DroppedRange&)>;
+
+  explicit FrontEnd(ChainFactory factory, const FrontEndOptions& options = {});
+
+  void AddAnchor(int anchor_id);  // known before its first range, so it is reported even without one
+  void AddPose(double t_s, int tag_id, const Eigen::Vector3d& p_world_tag);
+  void AddRange(double t_s, int tag_id, int anchor_id, double range_m);
+  void AddSample(const RangeSample& sample);  // the tag position already known (e.g. simulation)
+
+  bool HasPendingSolves() const { return !pending_.empty(); }
+  std::size_t RunPendingSolves();  // returns the number of solves run
+  std::vector<FrontEndEvent> TakeEvents();
+
+  // End of data at t_end_s: ranges still waiting are dropped (never extrapolated), pending solves
+  // run, and offline chains (the fixed window) solve; their events join the others.
+  void Finish(double t_end_s);
+
+  void SetSampleObserver(SampleObserver observer) { observer_ = std::move(observer); }
+  void SetDropObserver(DropObserver observer) { drop_observer_ = std::move(observer); }
+  std::vector<int> anchor_ids() const;  // ascending
+  const std::vector<AnchorInitializer>& chains(int anchor_id) const { return anchors_.at(anchor_id); }
+  const FrontEndCounters& counters() const { return counters_; }
+  double t_last_sample_s() const { return t_last_sample_s_; }
+
+ private:
+  struct WaitingRange {
+    double t_s;
+    int tag_id;
+    int anchor_id;
+    double range_m;
+  };
+  std::vector<AnchorInitializer>& Anchor(int anchor_id);
+  void Feed(const RangeSample& sample);
+  void ReleaseWaiting();
+  void Emit(int anchor_id, std::size_t chain, const InitEvent& event);
+  void Drop(const WaitingRange& range, DroppedRange::Reason reason);
+
+  ChainFactory factory_;
+  FrontEndOptions options_;
+  PoseBuffer poses_;
+  std::map<int, std::vector<AnchorInitializer>> anchors_;
+  std::deque<WaitingRange> waiting_;
+  std::deque<std::pair<int, std::size_t>> pending_;  // (anchor, chain) with a deferred solve
+  std::vector<FrontEndEvent> events_;
+  SampleObserver observer_;
+  DropObserver drop_observer_;
+  FrontEndCounters counters_;
+  double t_latest_s_ = -std::numeric_limits<double>::infinity();  // newest time of any input
+  double t_last_sample_s_ = 0.0;
+};
+
+}  // namespace anchorbench::estimator

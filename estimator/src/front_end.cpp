@@ -1,0 +1,127 @@
+#include "anchorbench/estimator/front_end.hpp"
+
+#include <algorithm>
+
+namespace anchorbench::estimator {
+
+FrontEnd::FrontEnd(ChainFactory factory, const FrontEndOptions& options)
+    : factory_(std::move(factory)), options_(options), poses_(options.poses) {}
+
+std::vector<AnchorInitializer>& FrontEnd::Anchor(int anchor_id) {
+  if (const auto found = anchors_.find(anchor_id); found != anchors_.end()) return found->second;
+  std::vector<AnchorInitializer> chains = factory_(anchor_id);
+  for (AnchorInitializer& chain : chains) chain.SetDeferSolves(options_.defer_solves);
+  return anchors_.emplace(anchor_id, std::move(chains)).first->second;
+}
+
+void FrontEnd::AddAnchor(int anchor_id) { Anchor(anchor_id); }
+
+void FrontEnd::Emit(int anchor_id, std::size_t chain, const InitEvent& event) {
+  events_.push_back({anchor_id, chain, event});
+}
+
+void FrontEnd::Drop(const WaitingRange& range, DroppedRange::Reason reason) {
+  ++(reason == DroppedRange::Reason::kOutsidePoses ? counters_.ranges_outside_poses : counters_.ranges_without_pose);
+  if (drop_observer_) drop_observer_({range.t_s, range.tag_id, range.anchor_id, range.range_m, reason});
+}
+
+void FrontEnd::Feed(const RangeSample& sample) {
+  std::vector<AnchorInitializer>& chains = Anchor(sample.anchor_id);
+  ++counters_.samples;
+  t_last_sample_s_ = sample.t_s;
+  for (std::size_t c = 0; c < chains.size(); ++c) {
+    const bool was_pending = chains[c].solve_pending();
+    const FeedResult fed = chains[c].Feed(sample);
+    if (fed.event) Emit(sample.anchor_id, c, *fed.event);
+    if (fed.solve_pending && !was_pending) pending_.emplace_back(sample.anchor_id, c);
+    if (c == 0 && observer_) observer_(sample, fed);
+  }
+}
+
+void FrontEnd::AddSample(const RangeSample& sample) {
+  t_latest_s_ = std::max(t_latest_s_, sample.t_s);
+  Feed(sample);
+}
+
+void FrontEnd::AddPose(double t_s, int tag_id, const Eigen::Vector3d& p_world_tag) {
+  if (!poses_.Add(tag_id, t_s, p_world_tag)) {
+    ++counters_.poses_ignored;
+    return;
+  }
+  t_latest_s_ = std::max(t_latest_s_, t_s);
+  ReleaseWaiting();
+}
+
+void FrontEnd::AddRange(double t_s, int tag_id, int anchor_id, double range_m) {
+  t_latest_s_ = std::max(t_latest_s_, t_s);
+  if (waiting_.size() >= options_.max_waiting_ranges) {
+    Drop(waiting_.front(), DroppedRange::Reason::kNoPoseInTime);
+    waiting_.pop_front();
+  }
+  waiting_.push_back({t_s, tag_id, anchor_id, range_m});  // behind any earlier one: time order holds
+  ReleaseWaiting();
+}
+
+// Ranges leave the queue in arrival order, each once its tag's poses reach its time.
+void FrontEnd::ReleaseWaiting() {
+  while (!waiting_.empty()) {
+    const WaitingRange range = waiting_.front();
+    Eigen::Vector3d p_world_tag;
+    const PoseBuffer::Lookup lookup = poses_.At(range.tag_id, range.t_s, &p_world_tag);
+    if (lookup == PoseBuffer::Lookup::kNotYet && t_latest_s_ - range.t_s <= options_.max_wait_s) return;
+    waiting_.pop_front();
+    if (lookup == PoseBuffer::Lookup::kFound) {
+      Feed({range.t_s, range.tag_id, range.anchor_id, range.range_m, p_world_tag});
+    } else {
+      Drop(range, lookup == PoseBuffer::Lookup::kOutside ? DroppedRange::Reason::kOutsidePoses
+                                                          : DroppedRange::Reason::kNoPoseInTime);
+    }
+  }
+}
+
+std::size_t FrontEnd::RunPendingSolves() {
+  std::size_t solved = 0;
+  while (!pending_.empty()) {
+    const auto [anchor_id, chain] = pending_.front();
+    pending_.pop_front();
+    AnchorInitializer& initializer = anchors_.at(anchor_id)[chain];
+    if (std::optional<InitEvent> event = initializer.RunPendingSolve()) Emit(anchor_id, chain, *event);
+    ++solved;
+    if (initializer.solve_pending()) pending_.emplace_back(anchor_id, chain);  // the catch-up fired again
+  }
+  return solved;
+}
+
+std::vector<FrontEndEvent> FrontEnd::TakeEvents() {
+  std::vector<FrontEndEvent> events;
+  events.swap(events_);
+  return events;
+}
+
+void FrontEnd::Finish(double t_end_s) {
+  // No pose will come: what waits behind a range of another tag is used if its pose is known.
+  while (!waiting_.empty()) {
+    const WaitingRange range = waiting_.front();
+    waiting_.pop_front();
+    Eigen::Vector3d p_world_tag;
+    if (poses_.At(range.tag_id, range.t_s, &p_world_tag) == PoseBuffer::Lookup::kFound) {
+      Feed({range.t_s, range.tag_id, range.anchor_id, range.range_m, p_world_tag});
+    } else {
+      Drop(range, DroppedRange::Reason::kOutsidePoses);
+    }
+  }
+  RunPendingSolves();
+  for (auto& [anchor_id, chains] : anchors_) {
+    for (std::size_t c = 0; c < chains.size(); ++c) {
+      if (std::optional<InitEvent> event = chains[c].Finish(t_end_s)) Emit(anchor_id, c, *event);
+    }
+  }
+}
+
+std::vector<int> FrontEnd::anchor_ids() const {
+  std::vector<int> ids;
+  for (const auto& [id, chains] : anchors_) ids.push_back(id);
+  return ids;
+}
+
+}  // namespace anchorbench::estimator

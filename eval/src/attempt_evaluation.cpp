@@ -1,0 +1,25 @@
+#include "anchorbench/eval/attempt_evaluation.hpp"
+
+#include <cmath>
+
+#include "anchorbench/eval/true_geometry.hpp"
+
+namespace anchorbench::eval {
+
+AttemptEvaluation Evaluate(std::span<const Eigen::Vector3d> p_world_tag_used, const estimator::SolveResult* estimate,
+                           const AnchorTruth& truth) {
+  AttemptEvaluation evaluation;
+  TrueGeometry geometry(truth.p_world_anchor);
+  for (const Eigen::Vector3d& p : p_world_tag_used) geometry.Add(p);
+  evaluation.pdop_true = geometry.Pdop();
+  const double bias_aware = geometry.BiasAwareDop();
+  if (std::isfinite(bias_aware)) evaluation.bias_aware_dop = bias_aware;
+  if (estimate) {
+    evaluation.error_xyz_m = estimate->p_world_anchor - truth.p_world_anchor;
+    evaluation.error_m = (estimate->p_world_anchor - truth.p_world_anchor).norm();
+    if (truth.bias_m) evaluation.bias_error_m = estimate->bias_m - *truth.bias_m;
+  }
+  return evaluation;
+}
+
+}  // namespace anchorbench::eval

@@ -1,0 +1,19 @@
+#pragma once
+
+#include <optional>
+#include <string>
+#include <string_view>
+
+namespace anchorbench::io {
+
+// Shortest text that reads back to the same double ("inf"/"-inf" for infinities): CSV cells.
+std::string FormatNumber(double value);
+// Fixed decimals for tables meant for people; "-" for a non-finite value.
+std::string FormatFixed(double value, int decimals);
+// FormatNumber, or an empty cell where there is no value (never "nan").
+std::string FormatOptional(const std::optional<double>& value);
+// The text with control bytes and non-ASCII bytes as \xNN, so a message quoting input stays one
+// printable line.
+std::string Printable(std::string_view text);
+
+}  // namespace anchorbench::io

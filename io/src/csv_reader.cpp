@@ -1,0 +1,108 @@
+#include "anchorbench/io/csv_reader.hpp"
+
+#include <charconv>
+#include <cmath>
+
+#include "anchorbench/io/format.hpp"
+#include "anchorbench/io/input_error.hpp"
+
+namespace anchorbench::io {
+namespace {
+
+std::string_view Trim(std::string_view s) {
+  while (!s.empty() && (s.front() == ' ' || s.front() == '\t')) s.remove_prefix(1);
+  while (!s.empty() && (s.back() == ' ' || s.back() == '\t' || s.back() == '\r')) s.remove_suffix(1);
+  return s;
+}
+
+std::vector<std::string_view> Split(std::string_view line) {
+  std::vector<std::string_view> fields;
+  std::size_t start = 0;
+  while (true) {
+    const std::size_t comma = line.find(',', start);
+    fields.push_back(Trim(line.substr(start, comma == std::string_view::npos ? std::string_view::npos : comma - start)));
+    if (comma == std::string_view::npos) break;
+    start = comma + 1;
+  }
+  return fields;
+}
+
+}  // namespace
+
+std::ifstream OpenForReading(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw InputError(path + ": cannot open the file");
+  return in;
+}
+
+CsvReader::CsvReader(std::istream& in, std::string source) : in_(in), source_(std::move(source)) {
+  std::string header_line;
+  if (!std::getline(in_, header_line)) throw InputError(source_ + ":1: empty file, expected a header line");
+  line_ = 1;
+  for (std::string_view name : Split(header_line)) header_.emplace_back(name);
+}
+
+int CsvReader::OptionalColumn(std::initializer_list<std::string_view> names) const {
+  for (std::string_view name : names) {
+    for (std::size_t i = 0; i < header_.size(); ++i)
+      if (header_[i] == name) return static_cast<int>(i);
+  }
+  return -1;
+}
+
+int CsvReader::Column(std::initializer_list<std::string_view> names) const {
+  const int index = OptionalColumn(names);
+  if (index >= 0) return index;
+  std::string listed;
+  for (std::string_view name : names) listed += (listed.empty() ? "'" : " or '") + std::string(name) + "'";
+  throw InputError(source_ + ":1: missing column " + listed);
+}
+
+void CsvReader::Fail(const std::string& message) const {
+  throw InputError(source_ + ":" + std::to_string(line_) + ": " + message);
+}
+
+bool CsvReader::Next() {
+  while (std::getline(in_, text_)) {
+    ++line_;
+    const std::string_view trimmed = Trim(text_);
+    if (trimmed.empty() || trimmed.front() == '#') continue;
+    fields_ = Split(text_);
+    if (fields_.size() != header_.size()) {
+      Fail("expected " + std::to_string(header_.size()) + " fields as in the header, found " +
+           std::to_string(fields_.size()));
+    }
+    return true;
+  }
+  return false;
+}
+
+std::string_view CsvReader::Field(int column) const { return fields_[static_cast<std::size_t>(column)]; }
+
+bool CsvReader::Empty(int column) const { return Field(column).empty(); }
+
+template <typename T>
+T CsvReader::Parse(int column, const char* what) const {
+  const std::string_view field = Field(column);
+  T value{};
+  const char* end = field.data() + field.size();
+  const auto [ptr, ec] = std::from_chars(field.data(), end, value);
+  if (field.empty() || ec != std::errc() || ptr != end) {
+    Fail("column '" + Printable(header_[static_cast<std::size_t>(column)]) + "': '" + Printable(field) + "' is not " +
+         what);
+  }
+  return value;
+}
+
+double CsvReader::Number(int column) const {
+  const double value = Parse<double>(column, "a number");
+  if (!std::isfinite(value)) {
+    Fail("column '" + Printable(header_[static_cast<std::size_t>(column)]) + "': '" + Printable(Field(column)) +
+         "' is not finite");
+  }
+  return value;
+}
+
+int CsvReader::Integer(int column) const { return Parse<int>(column, "an integer"); }
+
+}  // namespace anchorbench::io

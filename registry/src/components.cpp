@@ -1,0 +1,46 @@
+#include "anchorbench/registry/components.hpp"
+
+#include <stdexcept>
+
+namespace anchorbench::registry {
+
+bool Components::Check(const EstimatorConfig& config, std::string* why) const {
+  if (!solvers.Knows(config.solver, why) || !filters.Knows(config.filter.kind, why)) return false;
+  for (const std::string& trigger : config.triggers) {
+    if (!triggers.Knows(trigger, why)) return false;
+  }
+  return true;
+}
+
+void RegisterBuiltins(Components& components) {
+  RegisterBuiltinSolvers(components.solvers);
+  RegisterBuiltinFilters(components.filters);
+  RegisterBuiltinTriggers(components.triggers);
+}
+
+estimator::AnchorInitializer MakeInitializer(const Components& components, int anchor_id, const EstimatorConfig& config,
+                                             const std::string& trigger, std::uint64_t seed,
+                                             const std::optional<Eigen::Vector3d>& p_world_anchor_reference) {
+  std::string why;
+  std::shared_ptr<const estimator::Solver> solver =
+      components.solvers.Create(config.solver, {config.solver_options, seed, components.tables.get()}, &why);
+  if (!solver) throw std::invalid_argument(why);
+  std::unique_ptr<estimator::OutlierFilter> filter = components.filters.Create(config.filter.kind, {config.filter, seed}, &why);
+  if (!filter) throw std::invalid_argument(why);
+  std::unique_ptr<estimator::InitTrigger> made = components.triggers.Create(
+      trigger, {config.trigger, config.solver_options.ls, solver, p_world_anchor_reference}, &why);
+  if (!made) throw std::invalid_argument(why);
+  return estimator::AnchorInitializer(anchor_id, config.initializer, std::move(filter), std::move(made), std::move(solver));
+}
+
+std::vector<estimator::AnchorInitializer> MakeChains(const Components& components, int anchor_id,
+                                                     const EstimatorConfig& config, std::uint64_t seed,
+                                                     const std::optional<Eigen::Vector3d>& p_world_anchor_reference) {
+  std::vector<estimator::AnchorInitializer> chains;
+  for (const std::string& trigger : config.triggers) {
+    chains.push_back(MakeInitializer(components, anchor_id, config, trigger, seed, p_world_anchor_reference));
+  }
+  return chains;
+}
+
+}  // namespace anchorbench::registry

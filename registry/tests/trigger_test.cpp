@@ -1,0 +1,179 @@
+// Every built-in trigger against a direct computation of its rule on the same samples.
+#include <cmath>
+#include <stdexcept>
+
+#include <gtest/gtest.h>
+
+#include "anchorbench/estimator/anchor_initializer.hpp"
+#include "anchorbench/estimator/ls_solver.hpp"
+#include "anchorbench/estimator/pdop.hpp"
+#include "anchorbench/registry/components.hpp"
+#include "anchorbench/testing/test_data.hpp"
+#include "builtins.hpp"
+
+namespace anchorbench::registry {
+namespace {
+
+using testing::Builtins;
+using estimator::AnchorInitializer;
+using estimator::FeedResult;
+using estimator::InitEvent;
+using estimator::RangeSample;
+using estimator::SolveResult;
+using anchorbench::testing::PassBy;
+
+// Named, not `{}`: GCC 12 warns falsely (-Wmaybe-uninitialized) on brace temporaries of it.
+const EstimatorConfig kDefaults;
+
+const Eigen::Vector3d kAnchor(0, 4, 3);
+
+// Feeds the samples; returns the sample index of the event (-1 if none) and the initializer.
+struct Fed {
+  int index = -1;
+  std::optional<InitEvent> event;
+};
+Fed FeedAll(AnchorInitializer& initializer, const std::vector<RangeSample>& samples) {
+  Fed fed;
+  for (std::size_t i = 0; i < samples.size(); ++i) {
+    FeedResult r = initializer.Feed(samples[i]);
+    if (r.event) {
+      EXPECT_EQ(fed.index, -1) << "fired twice";
+      fed.index = static_cast<int>(i);
+      fed.event = r.event;
+    }
+  }
+  return fed;
+}
+
+// With no filter every sample is accepted, so sample i is the (i+1)-th accepted one.
+EstimatorConfig Unfiltered() {
+  EstimatorConfig options;
+  options.filter.kind = "none";
+  return options;
+}
+
+TEST(Triggers, SampleCountFiresAtTheCount) {
+  EstimatorConfig options = Unfiltered();
+  options.trigger.sample_count = 137;
+  AnchorInitializer initializer = MakeInitializer(Builtins(), 7, options, "sample_count", 0);
+  const Fed fed = FeedAll(initializer, PassBy(kAnchor, 0.05, 1));
+  EXPECT_EQ(fed.index, 136);
+  ASSERT_TRUE(fed.event);
+  EXPECT_EQ(fed.event->n_used, 137);
+}
+
+TEST(Triggers, SampleCountBelowMinSamplesActsAsMinSamples) {
+  EstimatorConfig options = Unfiltered();
+  options.trigger.sample_count = 5;  // min_samples = 20 still applies
+  AnchorInitializer below = MakeInitializer(Builtins(), 7, options, "sample_count", 0);
+  options.trigger.sample_count = options.initializer.min_samples;
+  AnchorInitializer at = MakeInitializer(Builtins(), 7, options, "sample_count", 0);
+  const auto samples = PassBy(kAnchor, 0.05, 1);
+  const Fed a = FeedAll(below, samples), b = FeedAll(at, samples);
+  ASSERT_TRUE(a.event && b.event);
+  EXPECT_EQ(a.index, b.index);  // both retry after the first 20 samples fail to solve, alike
+  EXPECT_GE(a.event->n_used, 20);
+}
+
+TEST(Triggers, TimeoutFiresOnTheFirstSampleThatLongAfterTheFirst) {
+  EstimatorConfig options = Unfiltered();
+  options.trigger.timeout_s = 12.25;
+  AnchorInitializer initializer = MakeInitializer(Builtins(), 7, options, "timeout", 0);
+  const auto samples = PassBy(kAnchor, 0.05, 1);  // 10 Hz from t = 0
+  const Fed fed = FeedAll(initializer, samples);
+  ASSERT_TRUE(fed.event);
+  EXPECT_EQ(fed.index, 123);  // t = 12.3 s is the first >= 12.25 s
+  EXPECT_DOUBLE_EQ(fed.event->t_s, samples[123].t_s);
+}
+
+TEST(Triggers, FixedWindowNeverFiresOnlineAndSolvesEverythingAtFinish) {
+  AnchorInitializer initializer = MakeInitializer(Builtins(), 7, Unfiltered(), "fixed_window", 0);
+  const auto samples = PassBy(kAnchor, 0.05, 1);
+  EXPECT_EQ(FeedAll(initializer, samples).index, -1);
+  const auto event = initializer.Finish(samples.back().t_s);
+  ASSERT_TRUE(event);
+  EXPECT_EQ(event->n_used, static_cast<int>(samples.size()));
+  EXPECT_TRUE(initializer.initialized());
+}
+
+// pdop_ls re-solves every evaluate_every samples from the first eligible one; it fires at the
+// first evaluation whose LS estimate gives Eq. (2)-(3) below the threshold.
+TEST(Triggers, LsEvaluatesOnItsCadenceAndFiresOnTheFirstGoodEstimate) {
+  const auto samples = PassBy(kAnchor, 0.05, 3);
+  for (int every : {1, 10}) {
+    EstimatorConfig options = Unfiltered();
+    options.trigger.evaluate_every = every;
+    AnchorInitializer initializer = MakeInitializer(Builtins(), 7, options, "pdop_ls", 0);
+    const Fed fed = FeedAll(initializer, samples);
+    int expected = -1;
+    std::vector<Eigen::Vector3d> p;
+    std::vector<double> d;
+    for (std::size_t i = 0; i < samples.size() && expected < 0; ++i) {
+      p.push_back(samples[i].p_world_tag);
+      d.push_back(samples[i].range_m);
+      if (p.size() < 20 || (p.size() - 20) % static_cast<std::size_t>(every) != 0) continue;
+      const SolveResult ls = estimator::SolveDoubleDifferenceLs(p, d);
+      if (estimator::Succeeded(ls.status) && estimator::GeometryPdop(p, d, ls.p_world_anchor) < 1.0) expected = static_cast<int>(i);
+    }
+    ASSERT_GE(expected, 0) << "every " << every;
+    EXPECT_EQ(fed.index, expected) << "every " << every;
+  }
+}
+
+TEST(Triggers, NlsUsesTheAnchorsSolver) {
+  const auto samples = PassBy(kAnchor, 0.05, 4);
+  EstimatorConfig options = Unfiltered();
+  options.solver = "lm_l2";
+  AnchorInitializer initializer = MakeInitializer(Builtins(), 7, options, "pdop_nls", 0);
+  const Fed fed = FeedAll(initializer, samples);
+  ASSERT_TRUE(fed.event);
+  const auto n = static_cast<std::size_t>(fed.event->n_used);
+  const std::span<const Eigen::Vector3d> p(initializer.p_world_tag().data(), n);
+  const std::span<const double> d(initializer.range_m().data(), n);
+  // The event's solve is the trigger's estimate (same solver, same data): its PDOP is below 1.
+  EXPECT_LT(estimator::GeometryPdop(p, d, fed.event->solve.p_world_anchor), 1.0);
+  EXPECT_EQ((n - 20) % 10, 0u);
+  EXPECT_LT((fed.event->solve.p_world_anchor - kAnchor).norm(), 0.5);
+}
+
+TEST(Triggers, DefaultChainIsTheRegistrysPaperChain) {
+  const auto samples = PassBy(kAnchor, 0.05, 5);
+  AnchorInitializer by_hand = estimator::MakePaperInitializer(7);
+  AnchorInitializer by_name = MakeInitializer(Builtins(), 7, kDefaults, "pdop_closest_point", 0);
+  const Fed a = FeedAll(by_hand, samples), b = FeedAll(by_name, samples);
+  ASSERT_TRUE(a.event && b.event);
+  EXPECT_EQ(a.index, b.index);
+  EXPECT_EQ(a.event->solve.p_world_anchor, b.event->solve.p_world_anchor);
+}
+
+TEST(Triggers, UnknownNamesAreRefusedWithTheReason) {
+  for (const char* name : {"pdop_best", ""}) {
+    try {
+      MakeInitializer(Builtins(), 7, kDefaults, name, 0);
+      FAIL() << "no exception for '" << name << "'";
+    } catch (const std::invalid_argument& e) {
+      EXPECT_NE(std::string(e.what()).find("unknown trigger"), std::string::npos) << e.what();
+    }
+  }
+  EstimatorConfig bad_filter = kDefaults;
+  bad_filter.filter.kind = "median";
+  EXPECT_THROW(MakeInitializer(Builtins(), 7, bad_filter, "fixed_window", 0), std::invalid_argument);
+  EstimatorConfig bad_solver = kDefaults;
+  bad_solver.solver = "nlopt:LN_NOPE";
+  EXPECT_THROW(MakeInitializer(Builtins(), 7, bad_solver, "fixed_window", 0), std::invalid_argument);
+}
+
+TEST(Triggers, RegistryListsEveryBuiltInWithADescription) {
+  const auto entries = Builtins().triggers.List();
+  std::vector<std::string> names;
+  for (const auto& [name, description] : entries) {
+    names.push_back(name);
+    EXPECT_FALSE(description.empty()) << name;
+  }
+  // The built-ins need no truth; the oracle pdop_true is eval's, registered on top by who wants it.
+  EXPECT_EQ(names, (std::vector<std::string>{"fixed_window", "pdop_closest_point", "pdop_ls", "pdop_nls", "sample_count",
+                                             "timeout"}));
+}
+
+}  // namespace
+}  // namespace anchorbench::registry

@@ -1,0 +1,21 @@
+#pragma once
+
+#include <ostream>
+#include <vector>
+
+#include "anchorbench/estimator/anchor_initializer.hpp"
+#include "anchorbench/io/recorded_data.hpp"
+#include "anchorbench/runner/attempt.hpp"
+
+namespace anchorbench::report {
+
+// estimates.csv: anchor_id,method,initialized,t_init,n_used,pdop_est,pdop_true,x,y,z,bias,err_m
+void WriteEstimates(std::ostream& out, const std::vector<runner::Attempt>& attempts);
+// The same, aligned for a terminal.
+void PrintEstimates(std::ostream& out, const std::vector<runner::Attempt>& attempts);
+
+// trace.csv: one line per range handed to the initializers, the first trigger's view of it.
+constexpr const char* kTraceHeader = "t,tag_id,anchor_id,range,accepted,n_accepted,pdop";
+void WriteTraceRow(std::ostream& out, const io::RangeRecord& range, const estimator::FeedResult& fed);
+
+}  // namespace anchorbench::report

@@ -1,0 +1,52 @@
+#pragma once
+
+#include <ostream>
+#include <string>
+#include <vector>
+
+#include "anchorbench/report/summary.hpp"
+#include "anchorbench/runner/attempt.hpp"
+#include "anchorbench/runner/experiment.hpp"
+
+namespace anchorbench::report {
+
+// attempts.csv: one row per attempt, columns
+// row,realization,anchor_id,method,initialized,t_init,n_used,pdop_est,pdop_true,crlb_m,err_m,
+// err_x,err_y,err_z,bias_err,alpha,status,bias_aware_dop (empty where not applicable; never NaN).
+void WriteAttempts(std::ostream& out, const std::vector<runner::Attempt>& attempts,
+                   const std::vector<runner::RowConfig>& rows);
+
+// summary.csv: row,method,avg_m,med_m,init,gt1m,ratio_pct,avg_lo,avg_hi,ratio_lo,ratio_hi, then
+// the initialization times and, where rows carry the paper's values, those.
+constexpr const char* kSummaryColumns = "row,method,avg_m,med_m,init,gt1m,ratio_pct,avg_lo,avg_hi,ratio_lo,ratio_hi";
+std::string SummaryCsvFields(const MethodSummary& summary, const std::vector<runner::RowConfig>& rows);
+void WriteSummaryCsv(std::ostream& out, const std::vector<MethodSummary>& summaries,
+                     const std::vector<runner::RowConfig>& rows);
+
+// summary.md: our table, and where rows carry the paper's values, the two side by side cell by
+// cell with the relative difference, and whether the paper's conclusions hold.
+void WriteSummaryMarkdown(std::ostream& out, const std::vector<MethodSummary>& summaries,
+                          const std::vector<runner::RowConfig>& rows, const runner::ExperimentConfig& config);
+
+// timing.csv: the wall time the triggers' passes took on this machine. It varies from run to run
+// (and with the thread count), so it stays out of the tables above, which repeat byte for byte.
+constexpr const char* kTimingColumns = "row,method,attempts,init,compute_s,us_per_attempt,us_per_init";
+std::string TimingCsvFields(const MethodSummary& summary, const std::vector<runner::RowConfig>& rows);
+void WriteTimingCsv(std::ostream& out, const std::vector<MethodSummary>& summaries,
+                    const std::vector<runner::RowConfig>& rows);
+
+// What a manifest records besides the config.
+struct RunInfo {
+  std::string config_path;
+  std::string revision;  // of the build that ran (the app reads it)
+  int threads = 1;
+  double wall_time_s = 0.0;
+  std::vector<std::string> command_line;  // what the command line changed: --seed 3, --set a.b=c, ...
+  std::vector<std::string> sweep_axes;    // "KEY=VALUES" of a sweep, empty for run
+  std::string resolved_config_json;       // the config as it ran (config::ToJson)
+};
+// manifest.json: config file, seed, realizations, threads, revision, compiler, wall time, the
+// command line's changes, the sweep axes and the resolved config.
+std::string ManifestJson(const runner::ExperimentConfig& config, const RunInfo& info);
+
+}  // namespace anchorbench::report

@@ -1,0 +1,41 @@
+#pragma once
+
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "anchorbench/runner/attempt.hpp"
+#include "anchorbench/runner/experiment.hpp"
+
+namespace anchorbench::report {
+
+// Table I's columns for one row and trigger, over its initialized attempts.
+struct MethodSummary {
+  int row = 0;
+  std::string method;  // the trigger's name
+  int attempts = 0;
+  int init = 0;                      // initialized attempts
+  std::optional<double> avg_m;       // mean error (absent when init = 0: never NaN)
+  std::optional<double> med_m;       // median error
+  int gt1m = 0;                      // initialized with error > 1 m
+  std::optional<double> ratio_pct;   // 100 gt1m / init
+  std::optional<double> t_init_mean_s, t_init_med_s;  // when the initialized attempts initialized
+  // 95% percentile intervals from a bootstrap over realizations (whole realizations are resampled:
+  // the anchors of one realization share a trajectory, so they are not independent), drawn from
+  // the stream (seed, 0, kBootstrapStream, summary index).
+  std::optional<double> avg_lo, avg_hi, ratio_lo, ratio_hi;
+  double compute_s = 0.0;  // summed Attempt::compute_s (timing files only)
+};
+
+constexpr std::uint32_t kBootstrapStream = 9;  // above the simulator's ids and runner::kSolverStream
+
+// The q-quantile (0..1) with linear interpolation; absent for no values.
+std::optional<double> Percentile(std::vector<double> values, double q);
+
+// Summaries ordered by row, then by the row's trigger list (estimator.triggers; the default puts
+// fixed_window first, the paper's order). `rows` are the ones the attempts were run on.
+std::vector<MethodSummary> Summarize(const std::vector<runner::Attempt>& attempts, const std::vector<runner::RowConfig>& rows,
+                                     int realizations, int bootstrap_resamples, std::uint64_t seed);
+
+}  // namespace anchorbench::report

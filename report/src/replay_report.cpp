@@ -1,0 +1,76 @@
+#include "anchorbench/report/replay_report.hpp"
+
+#include <cmath>
+#include <iomanip>
+#include <string>
+
+#include "anchorbench/io/format.hpp"
+
+namespace anchorbench::report {
+namespace {
+
+using io::FormatFixed;
+using io::FormatNumber;
+using io::FormatOptional;
+
+constexpr const char* kEstimateColumns[] = {"anchor_id", "method", "initialized", "t_init", "n_used", "pdop_est",
+                                            "pdop_true", "x", "y", "z", "bias", "err_m"};
+
+// The columns of estimates.csv for one attempt, as text (empty where not applicable).
+std::vector<std::string> EstimateFields(const runner::Attempt& a) {
+  const bool has_estimate = a.initialized && a.solve;
+  const Eigen::Vector3d p = has_estimate ? a.solve->p_world_anchor : Eigen::Vector3d::Zero();
+  return {std::to_string(a.anchor_id),
+          a.method,
+          a.initialized ? "1" : "0",
+          FormatOptional(a.t_init_s),
+          std::to_string(a.n_used),
+          FormatNumber(a.pdop_estimate),
+          a.evaluation ? FormatNumber(a.evaluation->pdop_true) : "",
+          has_estimate ? FormatNumber(p.x()) : "",
+          has_estimate ? FormatNumber(p.y()) : "",
+          has_estimate ? FormatNumber(p.z()) : "",
+          has_estimate ? FormatNumber(a.solve->bias_m) : "",
+          a.evaluation ? FormatOptional(a.evaluation->error_m) : ""};
+}
+
+}  // namespace
+
+void WriteEstimates(std::ostream& out, const std::vector<runner::Attempt>& attempts) {
+  for (std::size_t i = 0; i < std::size(kEstimateColumns); ++i) out << (i ? "," : "") << kEstimateColumns[i];
+  out << '\n';
+  for (const runner::Attempt& a : attempts) {
+    const std::vector<std::string> fields = EstimateFields(a);
+    for (std::size_t i = 0; i < fields.size(); ++i) out << (i ? "," : "") << fields[i];
+    out << '\n';
+  }
+}
+
+void PrintEstimates(std::ostream& out, const std::vector<runner::Attempt>& attempts) {
+  constexpr int kWidth[] = {10, 20, 12, 10, 8, 10, 10, 10, 10, 10, 10, 10};
+  for (std::size_t i = 0; i < std::size(kEstimateColumns); ++i) out << std::setw(kWidth[i]) << kEstimateColumns[i];
+  out << '\n';
+  for (const runner::Attempt& a : attempts) {
+    std::vector<std::string> fields = EstimateFields(a);
+    // Terminal view: three decimals instead of the lossless CSV text.
+    const std::optional<double> pdop_true = a.evaluation ? std::optional(a.evaluation->pdop_true) : std::nullopt;
+    const std::optional<double> numbers[] = {a.t_init_s, a.pdop_estimate, pdop_true};
+    const int columns[] = {3, 5, 6};
+    for (int k = 0; k < 3; ++k)
+      if (numbers[k] && std::isfinite(*numbers[k])) fields[columns[k]] = FormatFixed(*numbers[k], 3);
+    if (a.initialized && a.solve) {
+      for (int k = 0; k < 3; ++k) fields[7 + k] = FormatFixed(a.solve->p_world_anchor[k], 3);
+      fields[10] = FormatFixed(a.solve->bias_m, 3);
+    }
+    if (a.evaluation && a.evaluation->error_m) fields[11] = FormatFixed(*a.evaluation->error_m, 3);
+    for (std::size_t i = 0; i < fields.size(); ++i) out << std::setw(kWidth[i]) << (fields[i].empty() ? "-" : fields[i]);
+    out << '\n';
+  }
+}
+
+void WriteTraceRow(std::ostream& out, const io::RangeRecord& range, const estimator::FeedResult& fed) {
+  out << FormatNumber(range.t_s) << ',' << range.tag_id << ',' << range.anchor_id << ',' << FormatNumber(range.range_m)
+      << ',' << (fed.accepted ? 1 : 0) << ',' << fed.n_accepted << ',' << FormatNumber(fed.pdop) << '\n';
+}
+
+}  // namespace anchorbench::report

@@ -1,0 +1,203 @@
+#include "anchorbench/report/run_outputs.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+
+#include "anchorbench/io/format.hpp"
+
+namespace anchorbench::report {
+namespace {
+
+using io::FormatFixed;
+using io::FormatNumber;
+using io::FormatOptional;
+using runner::Attempt;
+using runner::RowConfig;
+
+// The cells of a solve or an evaluation, empty where there is none.
+std::optional<double> Of(const std::optional<Eigen::Vector3d>& v, int axis) {
+  return v ? std::optional<double>((*v)[axis]) : std::nullopt;
+}
+
+std::string JsonString(const std::string& text) {
+  std::string out = "\"";
+  for (char c : text) {
+    if (c == '"' || c == '\\') out += '\\';
+    out += c;
+  }
+  return out + "\"";
+}
+
+std::string JsonList(const std::vector<std::string>& items) {
+  std::string out = "[";
+  for (std::size_t i = 0; i < items.size(); ++i) out += (i ? ", " : "") + JsonString(items[i]);
+  return out + "]";
+}
+
+// "paper / ours (+x%)" with the verdict against the +-25% target.
+std::string Compare(double paper, const std::optional<double>& ours, int decimals, bool* within) {
+  if (!ours) {
+    *within = false;
+    return FormatFixed(paper, decimals) + " / - ";
+  }
+  const double relative = paper != 0.0 ? (*ours - paper) / paper : 0.0;
+  *within = std::abs(relative) <= 0.25 + 1e-12;
+  std::ostringstream s;
+  s << FormatFixed(paper, decimals) << " / " << FormatFixed(*ours, decimals) << " (" << (relative >= 0 ? "+" : "")
+    << FormatFixed(100.0 * relative, 0) << "%)" << (*within ? "" : " !");
+  return s.str();
+}
+
+std::string Interval(const std::optional<double>& lo, const std::optional<double>& hi, int decimals) {
+  return lo ? " [" + FormatFixed(*lo, decimals) + ", " + FormatFixed(*hi, decimals) + "]" : std::string();
+}
+
+void WriteOurTable(std::ostream& out, const std::vector<MethodSummary>& summaries, const std::vector<RowConfig>& rows,
+                   const runner::ExperimentConfig& config) {
+  std::string compared;
+  for (const std::string& trigger : rows.front().estimator.triggers) compared += (compared.empty() ? "" : " vs ") + trigger;
+  out << "# " << config.name << ": " << compared << "\n\n"
+      << config.realizations << " realizations per row, seed " << config.seed
+      << ". Errors over initialized attempts; [95% bootstrap interval over realizations].\n\n"
+      << "| # | Method | Avg. (m) | Med. (m) | Init. | >1m | Ratio (%) | t_init mean / median (s) |\n"
+      << "|---|---|---|---|---|---|---|---|\n";
+  for (const MethodSummary& s : summaries) {
+    out << "| " << rows[static_cast<std::size_t>(s.row)].name << " | " << s.method << " | "
+        << (s.avg_m ? FormatFixed(*s.avg_m, 3) + Interval(s.avg_lo, s.avg_hi, 3) : "-") << " | "
+        << (s.med_m ? FormatFixed(*s.med_m, 3) : "-") << " | " << s.init << " / " << s.attempts << " | " << s.gt1m << " | "
+        << (s.ratio_pct ? FormatFixed(*s.ratio_pct, 2) + Interval(s.ratio_lo, s.ratio_hi, 2) : "-") << " | "
+        << (s.t_init_mean_s ? FormatFixed(*s.t_init_mean_s, 1) + " / " + FormatFixed(*s.t_init_med_s, 1) : "-") << " |\n";
+  }
+}
+
+// One table line per method of the paper (paper / ours); counts the four target cells within 25%.
+void WritePaperComparison(std::ostream& out, const MethodSummary& s, const runner::PaperCells& paper,
+                          const std::string& row_name, int* cells, int* within_count) {
+  bool within[5];
+  out << "| " << row_name << " | " << s.method << " | " << Compare(paper.avg_m, s.avg_m, 3, &within[0]) << " | "
+      << Compare(paper.med_m, s.med_m, 3, &within[1]) << " | "
+      << Compare(paper.init, static_cast<double>(s.init), 0, &within[2]) << " | "
+      << Compare(paper.gt1m, static_cast<double>(s.gt1m), 0, &within[3]) << " | "
+      << Compare(paper.ratio_pct, s.ratio_pct, 2, &within[4]) << " |\n";
+  // >1m is a count that follows from Init and Ratio; the targets are the other four cells.
+  for (int c : {0, 1, 2, 4}) {
+    ++*cells;
+    *within_count += within[c];
+  }
+}
+
+std::string Conclusions(const RowConfig& row, const MethodSummary& fixed, const MethodSummary& gated) {
+  const bool avg_holds = gated.avg_m && fixed.avg_m && *gated.avg_m < *fixed.avg_m;
+  const bool ratio_holds = gated.ratio_pct && fixed.ratio_pct && *gated.ratio_pct < *fixed.ratio_pct;
+  return "- row " + row.name + ": gated Avg < fixed Avg: " + (avg_holds ? "yes" : "NO") +
+         "; gated Ratio < fixed Ratio: " + (ratio_holds ? "yes" : "NO") + "\n";
+}
+
+void WriteAgainstThePaper(std::ostream& out, const std::vector<MethodSummary>& summaries,
+                          const std::vector<RowConfig>& rows) {
+  out << "\n## Against the paper (paper / ours, relative difference; ! = outside +-25%)\n\n"
+      << "| # | Method | Avg. (m) | Med. (m) | Init. | >1m | Ratio (%) |\n|---|---|---|---|---|---|---|\n";
+  int cells = 0, within_count = 0;
+  std::string conclusions;
+  for (std::size_t r = 0; r < rows.size(); ++r) {
+    if (!rows[r].paper) continue;
+    // The paper's two methods, if this row ran both.
+    const MethodSummary* fixed = nullptr;
+    const MethodSummary* gated = nullptr;
+    for (const MethodSummary& s : summaries) {
+      if (s.row != static_cast<int>(r)) continue;
+      if (s.method == runner::kFixedWindowTrigger) fixed = &s;
+      if (s.method == runner::kPaperTrigger) gated = &s;
+    }
+    if (!fixed || !gated) continue;
+    for (const MethodSummary* s : {fixed, gated}) {
+      WritePaperComparison(out, *s, *rows[r].paper->For(s->method), rows[r].name, &cells, &within_count);
+    }
+    conclusions += Conclusions(rows[r], *fixed, *gated);
+  }
+  out << "\n" << within_count << " of " << cells << " target cells (Avg, Med, Init, Ratio) within +-25%.\n\n"
+      << "The paper's conclusions, row by row:\n" << conclusions;
+}
+
+}  // namespace
+
+void WriteAttempts(std::ostream& out, const std::vector<Attempt>& attempts, const std::vector<RowConfig>& rows) {
+  out << "row,realization,anchor_id,method,initialized,t_init,n_used,pdop_est,pdop_true,crlb_m,err_m,err_x,err_y,"
+         "err_z,bias_err,alpha,status,bias_aware_dop\n";
+  const eval::AttemptEvaluation none;
+  for (const Attempt& a : attempts) {
+    const eval::AttemptEvaluation& e = a.evaluation ? *a.evaluation : none;
+    out << rows[static_cast<std::size_t>(a.row)].name << ',' << a.realization << ',' << a.anchor_id << ','
+        << a.method << ',' << (a.initialized ? 1 : 0) << ',' << FormatOptional(a.t_init_s) << ',' << a.n_used << ','
+        << FormatNumber(a.pdop_estimate) << ','
+        << (a.evaluation ? FormatNumber(e.pdop_true) : "") << ',' << FormatOptional(a.crlb_m) << ','
+        << FormatOptional(e.error_m) << ',' << FormatOptional(Of(e.error_xyz_m, 0)) << ','
+        << FormatOptional(Of(e.error_xyz_m, 1)) << ',' << FormatOptional(Of(e.error_xyz_m, 2)) << ','
+        << FormatOptional(e.bias_error_m) << ',' << FormatOptional(a.solve ? std::optional(a.solve->alpha) : std::nullopt)
+        << ',' << a.status << ',' << FormatOptional(e.bias_aware_dop) << '\n';
+  }
+}
+
+std::string SummaryCsvFields(const MethodSummary& s, const std::vector<RowConfig>& rows) {
+  std::ostringstream out;
+  out << rows[static_cast<std::size_t>(s.row)].name << ',' << s.method << ',' << FormatOptional(s.avg_m) << ','
+      << FormatOptional(s.med_m) << ',' << s.init << ',' << s.gt1m << ',' << FormatOptional(s.ratio_pct) << ','
+      << FormatOptional(s.avg_lo) << ',' << FormatOptional(s.avg_hi) << ',' << FormatOptional(s.ratio_lo) << ','
+      << FormatOptional(s.ratio_hi);
+  return out.str();
+}
+
+void WriteSummaryCsv(std::ostream& out, const std::vector<MethodSummary>& summaries, const std::vector<RowConfig>& rows) {
+  const bool with_paper = std::any_of(rows.begin(), rows.end(), [](const RowConfig& r) { return r.paper.has_value(); });
+  out << kSummaryColumns << ",t_init_mean_s,t_init_med_s"
+      << (with_paper ? ",paper_avg_m,paper_med_m,paper_init,paper_gt1m,paper_ratio_pct" : "") << '\n';
+  for (const MethodSummary& s : summaries) {
+    out << SummaryCsvFields(s, rows) << ',' << FormatOptional(s.t_init_mean_s) << ',' << FormatOptional(s.t_init_med_s);
+    if (with_paper) {
+      const std::optional<runner::PaperRow>& paper = rows[static_cast<std::size_t>(s.row)].paper;
+      if (const runner::PaperCells* c = paper ? paper->For(s.method) : nullptr) {
+        out << ',' << FormatNumber(c->avg_m) << ',' << FormatNumber(c->med_m) << ',' << FormatNumber(c->init) << ','
+            << FormatNumber(c->gt1m) << ',' << FormatNumber(c->ratio_pct);
+      } else {
+        out << ",,,,,";
+      }
+    }
+    out << '\n';
+  }
+}
+
+void WriteSummaryMarkdown(std::ostream& out, const std::vector<MethodSummary>& summaries,
+                          const std::vector<RowConfig>& rows, const runner::ExperimentConfig& config) {
+  WriteOurTable(out, summaries, rows, config);
+  if (std::any_of(rows.begin(), rows.end(), [](const RowConfig& r) { return r.paper.has_value(); })) {
+    WriteAgainstThePaper(out, summaries, rows);
+  }
+}
+
+std::string TimingCsvFields(const MethodSummary& s, const std::vector<RowConfig>& rows) {
+  std::ostringstream out;
+  out << rows[static_cast<std::size_t>(s.row)].name << ',' << s.method << ',' << s.attempts << ',' << s.init << ','
+      << FormatFixed(s.compute_s, 6) << ',' << (s.attempts ? FormatFixed(1e6 * s.compute_s / s.attempts, 1) : "") << ','
+      << (s.init ? FormatFixed(1e6 * s.compute_s / s.init, 1) : "");
+  return out.str();
+}
+
+void WriteTimingCsv(std::ostream& out, const std::vector<MethodSummary>& summaries, const std::vector<RowConfig>& rows) {
+  out << kTimingColumns << '\n';
+  for (const MethodSummary& s : summaries) out << TimingCsvFields(s, rows) << '\n';
+}
+
+std::string ManifestJson(const runner::ExperimentConfig& config, const RunInfo& info) {
+  std::ostringstream json;
+  json << "{\n  \"config_file\": " << JsonString(info.config_path) << ",\n  \"seed\": " << config.seed
+       << ",\n  \"realizations\": " << config.realizations << ",\n  \"threads\": " << info.threads
+       << ",\n  \"git_revision\": " << JsonString(info.revision) << ",\n  \"compiler\": "
+       << JsonString(std::string("g++ ") + __VERSION__) << ",\n  \"wall_time_s\": " << FormatFixed(info.wall_time_s, 3)
+       << ",\n  \"command_line\": " << JsonList(info.command_line);
+  if (!info.sweep_axes.empty()) json << ",\n  \"sweep_axes\": " << JsonList(info.sweep_axes);
+  json << ",\n  \"resolved_config\": " << info.resolved_config_json << "\n}\n";
+  return json.str();
+}
+
+}  // namespace anchorbench::report

@@ -1,0 +1,105 @@
+#include "anchorbench/report/summary.hpp"
+
+#include <algorithm>
+
+#include "anchorbench/sim/random_stream.hpp"
+
+namespace anchorbench::report {
+
+static_assert(kBootstrapStream >= sim::kFirstFreeStreamId && kBootstrapStream != runner::kSolverStream,
+              "the bootstrap draws from a stream of its own");
+
+using runner::Attempt;
+namespace {
+
+// Sums of one realization for one (row, method): enough to rebuild Avg and Ratio of any resample.
+struct RealizationSums {
+  double error_sum_m = 0.0;
+  int init = 0;
+  int gt1m = 0;
+};
+
+MethodSummary SummarizeOne(const std::vector<const Attempt*>& attempts, const std::vector<RealizationSums>& sums,
+                           int bootstrap_resamples, sim::RandomStream rng) {
+  MethodSummary s;
+  std::vector<double> errors, times;
+  for (const Attempt* a : attempts) {
+    ++s.attempts;
+    s.compute_s += a->compute_s;
+    if (!a->initialized) continue;
+    ++s.init;
+    errors.push_back(*a->evaluation->error_m);
+    times.push_back(*a->t_init_s);
+    s.gt1m += *a->evaluation->error_m > 1.0;
+  }
+  if (s.init == 0) return s;
+  double total = 0.0, total_time = 0.0;
+  for (double e : errors) total += e;
+  for (double t : times) total_time += t;
+  s.avg_m = total / s.init;
+  s.t_init_mean_s = total_time / s.init;
+  s.t_init_med_s = Percentile(times, 0.5);
+  s.med_m = Percentile(errors, 0.5);
+  s.ratio_pct = 100.0 * s.gt1m / s.init;
+
+  std::vector<double> avg_samples, ratio_samples;
+  const int realizations = static_cast<int>(sums.size());
+  for (int b = 0; b < bootstrap_resamples; ++b) {
+    RealizationSums resample;
+    for (int k = 0; k < realizations; ++k) {
+      const RealizationSums& pick = sums[static_cast<std::size_t>(rng.Uniform() * realizations)];
+      resample.error_sum_m += pick.error_sum_m;
+      resample.init += pick.init;
+      resample.gt1m += pick.gt1m;
+    }
+    if (resample.init == 0) continue;
+    avg_samples.push_back(resample.error_sum_m / resample.init);
+    ratio_samples.push_back(100.0 * resample.gt1m / resample.init);
+  }
+  s.avg_lo = Percentile(avg_samples, 0.025);
+  s.avg_hi = Percentile(avg_samples, 0.975);
+  s.ratio_lo = Percentile(ratio_samples, 0.025);
+  s.ratio_hi = Percentile(ratio_samples, 0.975);
+  return s;
+}
+
+}  // namespace
+
+std::optional<double> Percentile(std::vector<double> values, double q) {
+  if (values.empty()) return std::nullopt;
+  std::sort(values.begin(), values.end());
+  const double position = q * static_cast<double>(values.size() - 1);
+  const auto i = static_cast<std::size_t>(position);
+  const double fraction = position - static_cast<double>(i);
+  return i + 1 < values.size() ? values[i] + fraction * (values[i + 1] - values[i]) : values[i];
+}
+
+std::vector<MethodSummary> Summarize(const std::vector<Attempt>& attempts, const std::vector<runner::RowConfig>& rows,
+                                     int realizations, int bootstrap_resamples, std::uint64_t seed) {
+  std::vector<MethodSummary> summaries;
+  for (int row = 0; row < static_cast<int>(rows.size()); ++row) {
+    for (const std::string& method : rows[static_cast<std::size_t>(row)].estimator.triggers) {
+      std::vector<const Attempt*> selected;
+      std::vector<RealizationSums> sums(static_cast<std::size_t>(realizations));
+      for (const Attempt& a : attempts) {
+        if (a.row != row || a.method != method) continue;
+        selected.push_back(&a);
+        if (!a.initialized) continue;
+        RealizationSums& r = sums[static_cast<std::size_t>(a.realization)];
+        r.error_sum_m += *a.evaluation->error_m;
+        ++r.init;
+        r.gt1m += *a.evaluation->error_m > 1.0;
+      }
+      // One bootstrap stream per (row, method), numbered in table order.
+      const auto substream = static_cast<std::uint32_t>(summaries.size());
+      MethodSummary s = SummarizeOne(selected, sums, bootstrap_resamples,
+                                     sim::RandomStream(seed, 0, kBootstrapStream, substream));
+      s.row = row;
+      s.method = method;
+      summaries.push_back(s);
+    }
+  }
+  return summaries;
+}
+
+}  // namespace anchorbench::report

@@ -1,0 +1,82 @@
+#include "anchorbench/report/summary.hpp"
+
+#include <gtest/gtest.h>
+
+#include "anchorbench/report/run_outputs.hpp"
+
+namespace anchorbench::report {
+namespace {
+
+using runner::Attempt;
+using runner::kFixedWindowTrigger;
+using runner::RowConfig;
+
+Attempt Initialized(int realization, double error_m) {
+  Attempt a;
+  a.realization = realization;
+  a.method = kFixedWindowTrigger;
+  a.initialized = true;
+  a.evaluation = eval::AttemptEvaluation{};
+  a.evaluation->error_m = error_m;
+  a.status = "converged";
+  return a;
+}
+
+TEST(Summary, TableColumnsWorkedByHand) {
+  // Errors 0.1, 0.2, 0.3, 2.0 (initialized) and one attempt not initialized:
+  // Avg = 2.6 / 4 = 0.65, Med = (0.2 + 0.3) / 2 = 0.25, Init = 4, >1m = 1, Ratio = 25%.
+  std::vector<Attempt> attempts = {Initialized(0, 0.1), Initialized(0, 0.2), Initialized(1, 0.3), Initialized(1, 2.0)};
+  Attempt missed;
+  missed.realization = 1;
+  missed.method = kFixedWindowTrigger;
+  missed.status = "too_few_samples";
+  attempts.push_back(missed);
+  const auto summaries = Summarize(attempts, {RowConfig{}}, 2, 500, 1);  // default triggers
+  ASSERT_EQ(summaries.size(), 2u);  // fixed_window, then pdop_closest_point
+  const MethodSummary& fixed = summaries[0];
+  EXPECT_EQ(fixed.attempts, 5);
+  EXPECT_EQ(fixed.init, 4);
+  EXPECT_NEAR(*fixed.avg_m, 0.65, 1e-12);
+  EXPECT_NEAR(*fixed.med_m, 0.25, 1e-12);
+  EXPECT_EQ(fixed.gt1m, 1);
+  EXPECT_NEAR(*fixed.ratio_pct, 25.0, 1e-12);
+  // Resampling the two realizations: Avg is 0.15 (realization 0 twice), 0.65 or 1.15.
+  EXPECT_NEAR(*fixed.avg_lo, 0.15, 1e-12);
+  EXPECT_NEAR(*fixed.avg_hi, 1.15, 1e-12);
+  // No gated attempts at all: the cells stay empty, never NaN.
+  EXPECT_EQ(summaries[1].init, 0);
+  EXPECT_FALSE(summaries[1].avg_m.has_value());
+  EXPECT_FALSE(summaries[1].ratio_pct.has_value());
+}
+
+TEST(Summary, ManifestNamesWhatReproducesTheRun) {
+  runner::ExperimentConfig config;
+  config.seed = 7;
+  config.realizations = 6;
+  RunInfo info;
+  info.config_path = "configs/small.yaml";
+  info.revision = "abc123";
+  info.threads = 2;
+  info.wall_time_s = 1.25;
+  info.command_line = {"--realizations 6", "--set scenario.ranging.sigma_range_m=0.4"};
+  info.sweep_axes = {"estimator.filter.tau_m=0.1,0.2"};
+  info.resolved_config_json = "{\"seed\": 7}";
+  const std::string json = ManifestJson(config, info);
+  for (const char* key : {"\"seed\": 7", "\"threads\": 2", "\"realizations\": 6", "\"git_revision\": \"abc123\"",
+                          "\"compiler\"", "\"wall_time_s\": 1.250", "\"resolved_config\": {\"seed\": 7}",
+                          "\"--set scenario.ranging.sigma_range_m=0.4\"", "\"sweep_axes\": [\"estimator.filter.tau_m=0.1,0.2\"]"}) {
+    EXPECT_NE(json.find(key), std::string::npos) << key;
+  }
+}
+
+TEST(Summary, AttemptsCsvLeavesCellsEmptyWhereThereIsNothing) {
+  Attempt a;
+  a.method = kFixedWindowTrigger;
+  a.status = "no_data";
+  std::ostringstream out;
+  WriteAttempts(out, {a}, {RowConfig{"r", {}, {}, std::nullopt}});
+  EXPECT_EQ(out.str().substr(out.str().find('\n') + 1), "r,0,0,fixed_window,0,,0,0,,,,,,,,,no_data,\n");
+}
+
+}  // namespace
+}  // namespace anchorbench::report

@@ -1,0 +1,65 @@
+#pragma once
+
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "anchorbench/registry/estimator_config.hpp"
+#include "anchorbench/sim/scenario.hpp"
+
+namespace anchorbench::runner {
+
+// A published table row to compare with, cell by cell (Table I: Avg., Med., Init., >1m, Ratio).
+struct PaperCells {
+  double avg_m = 0.0;
+  double med_m = 0.0;
+  double init = 0.0;
+  double gt1m = 0.0;
+  double ratio_pct = 0.0;
+};
+// The triggers of the paper's two methods (Table I's "Fixed" and "Our").
+constexpr const char* kFixedWindowTrigger = "fixed_window";
+constexpr const char* kPaperTrigger = "pdop_closest_point";
+
+struct PaperRow {
+  PaperCells fixed;  // kFixedWindowTrigger
+  PaperCells gated;  // kPaperTrigger
+  // The cells for a trigger, or nullptr if the paper has none for it.
+  const PaperCells* For(const std::string& trigger) const {
+    if (trigger == kFixedWindowTrigger) return &fixed;
+    if (trigger == kPaperTrigger) return &gated;
+    return nullptr;
+  }
+};
+
+// One row of a Monte Carlo table: the base scenario and estimator with this row's overrides.
+struct RowConfig {
+  std::string name;
+  sim::ScenarioOptions scenario;
+  registry::EstimatorConfig estimator;
+  std::optional<PaperRow> paper;
+};
+
+// One experiment (configs/*.yaml, read by the config layer): a scenario to simulate and the
+// estimator to run on it, and for `run`, the rows of a Monte Carlo table. docs/config.md lists
+// the keys with units.
+struct ExperimentConfig {
+  std::string name;  // the file's stem, e.g. "tunnel"
+  std::uint64_t seed = 1;
+  int realizations = 100;          // per row (run)
+  int bootstrap_resamples = 1000;  // for the 95% intervals of summary.csv (run)
+  sim::ScenarioOptions scenario;
+  registry::EstimatorConfig estimator;
+  std::vector<RowConfig> rows;         // empty: one row, the base
+  std::vector<std::string> only_rows;  // run these rows only (names); empty: all
+  // Sweep axes (anchorbench sweep): dotted key -> values ("0.5,1,2" or a range "0.25:3:0.25").
+  std::vector<std::pair<std::string, std::string>> sweep;
+};
+
+// The rows `run` executes: config.rows (those in only_rows, if given), or the base as a single
+// row named "base".
+std::vector<RowConfig> RowsOf(const ExperimentConfig& config);
+
+}  // namespace anchorbench::runner

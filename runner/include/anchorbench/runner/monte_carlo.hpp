@@ -1,0 +1,43 @@
+#pragma once
+
+#include <cstdint>
+#include <functional>
+#include <vector>
+
+#include "anchorbench/estimator/range_sample.hpp"
+#include "anchorbench/registry/components.hpp"
+#include "anchorbench/runner/attempt.hpp"
+#include "anchorbench/runner/experiment.hpp"
+
+namespace anchorbench::runner {
+
+// The thread count for a request: `requested` if > 0, else OMP_NUM_THREADS if set, else every core.
+int ResolveThreads(int requested);
+
+struct MonteCarloOptions {
+  int threads = 1;
+  // Called from one thread at a time with (tasks done, tasks total); tasks are (row, realization).
+  std::function<void(int, int)> progress;
+};
+
+// Builds every row's initializers once, on a stand-in anchor, so that what a realization would
+// refuse (an unknown name, a trigger that needs what it lacks) is refused before any trial runs.
+// Throws io::InputError naming the row.
+void CheckRows(const std::vector<RowConfig>& rows, const registry::Components& components);
+
+// Runs every row's realizations (parallel over (row, realization) with OpenMP; realization k of
+// every row uses the random streams keyed (seed, k), so rows differ only by their parameters).
+// Parts are built from `components` (the caller's registries). The result is ordered by row,
+// realization, anchor, method: identical for any thread count. An error in any task ends the run
+// with that error (the first task's, in task order), thrown after the parallel region.
+std::vector<Attempt> RunMonteCarlo(const ExperimentConfig& config, const registry::Components& components,
+                                   const MonteCarloOptions& options);
+
+// The attempts of one realization of one row (what each task computes): the simulated samples
+// go through one front end per trigger (each trigger's pass is timed on its own). `samples` is
+// scratch, reused from call to call by the caller.
+std::vector<Attempt> RunRealization(const RowConfig& row, int row_index, std::uint64_t seed, int realization,
+                                    const registry::Components& components,
+                                    std::vector<estimator::RangeSample>& samples);
+
+}  // namespace anchorbench::runner

@@ -1,0 +1,53 @@
+#pragma once
+
+#include <cmath>
+#include <vector>
+
+#include <Eigen/Core>
+
+#include "anchorbench/estimator/range_sample.hpp"
+#include "anchorbench/sim/random_stream.hpp"
+
+namespace anchorbench::testing {
+
+// Tag positions and ranges for one anchor, generated for estimator tests.
+struct AnchorData {
+  Eigen::Vector3d p_world_anchor;
+  double bias_m = 0.0;
+  std::vector<Eigen::Vector3d> p_world_tag;
+  std::vector<double> range_m;
+};
+
+// Tests draw from a stream id of their own (above the simulator's).
+inline sim::RandomStream TestStream(std::uint64_t realization) {
+  return sim::RandomStream(12345, realization, sim::kFirstFreeStreamId);
+}
+
+// n tag positions uniformly in a box of half-size `spread_m` around `center`, ranges by Eq. (1)
+// with bias and Gaussian noise.
+inline AnchorData BoxData(sim::RandomStream& rng, int n, const Eigen::Vector3d& p_anchor,
+                          const Eigen::Vector3d& center, double spread_m, double bias_m, double sigma_m) {
+  AnchorData data{p_anchor, bias_m, {}, {}};
+  for (int k = 0; k < n; ++k) {
+    const Eigen::Vector3d p = center + spread_m * Eigen::Vector3d(rng.Uniform(-1, 1), rng.Uniform(-1, 1),
+                                                                   rng.Uniform(-1, 1));
+    data.p_world_tag.push_back(p);
+    data.range_m.push_back((p - p_anchor).norm() + bias_m + sigma_m * rng.Normal());
+  }
+  return data;
+}
+
+// A tag weaving past a wall anchor at 10 Hz for 120 s (range bias 0.1 m): the closest-point PDOP
+// falls as the anchor is passed.
+inline std::vector<estimator::RangeSample> PassBy(const Eigen::Vector3d& p_anchor, double sigma_m, std::uint64_t seed) {
+  auto rng = TestStream(seed);
+  std::vector<estimator::RangeSample> samples;
+  for (int k = 0; k < 1200; ++k) {
+    const double t = 0.1 * k;
+    const Eigen::Vector3d p(-30.0 + 0.5 * t, 2.0 * std::sin(0.3 * t), 1.5 + 1.0 * std::sin(0.17 * t));
+    samples.push_back({t, 0, 7, (p - p_anchor).norm() + 0.1 + sigma_m * rng.Normal(), p});
+  }
+  return samples;
+}
+
+}  // namespace anchorbench::testing
