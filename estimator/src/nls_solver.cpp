@@ -10,7 +10,17 @@
 namespace anchorbench::estimator {
 namespace {
 
+// Levenberg-Marquardt's damping schedule (the common one, e.g. Nocedal & Wright): the damping,
+// relative to diag(J^T W J), shrinks 10x after an accepted step and grows 10x after a rejected one,
+// up to kMaxDampingIncreases times per iteration (12: from 1e-8 to 1e4, where the step is a
+// gradient step a hundred-thousandth of the Gauss-Newton one). The floors keep it meaningful in
+// double precision and keep a direction without information from dividing by zero.
 constexpr int kMaxDampingIncreases = 12;
+constexpr double kDampingDecrease = 0.1;
+constexpr double kDampingIncrease = 10.0;
+constexpr double kMinDampingAfterSuccess = 1e-12;
+constexpr double kMinDampingAfterFailure = 1e-8;
+constexpr double kMinDiagonal = 1e-12;
 
 using Vector4 = Eigen::Vector4d;
 
@@ -123,15 +133,15 @@ NlsSolver::Stage NlsSolver::Refine(std::span<const Eigen::Vector3d> p, std::span
     Vector4 delta = Vector4::Zero();
     for (int attempt = 0; attempt < kMaxDampingIncreases && !accepted; ++attempt) {
       Eigen::Matrix4d damped = eq.information;
-      damped.diagonal() += damping * eq.information.diagonal().cwiseMax(1e-12);
+      damped.diagonal() += damping * eq.information.diagonal().cwiseMax(kMinDiagonal);
       delta = damped.ldlt().solve(-eq.gradient);
       if (!delta.allFinite()) break;
       if (Cost(p, d, stage.theta + delta, stage.alpha, c, histogram) <= eq.cost) {
         accepted = true;
         stage.theta += delta;
-        damping = std::max(damping * 0.1, 1e-12);
+        damping = std::max(damping * kDampingDecrease, kMinDampingAfterSuccess);
       } else {
-        damping = std::max(damping * 10.0, 1e-8);
+        damping = std::max(damping * kDampingIncrease, kMinDampingAfterFailure);
       }
     }
     ++stage.iterations;

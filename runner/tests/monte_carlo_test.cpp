@@ -149,6 +149,23 @@ TEST(MonteCarlo, AnUnbuildablePartIsAnInputErrorBeforeAnyTrial) {
   }
 }
 
+// A part that breaks its contract and throws inside a realization: the error leaves the parallel
+// region as the exception it is (here the first task's), not as std::terminate.
+TEST(MonteCarlo, AnExceptionInsideARealizationIsCarriedOutOfTheParallelLoop) {
+  registry::Components parts = eval::MakeComponentsWithOracles();
+  struct Throwing : estimator::Solver {
+    estimator::SolveResult Solve(std::span<const Eigen::Vector3d>, std::span<const double>) const override {
+      throw std::runtime_error("solver exploded");
+    }
+  };
+  parts.solvers.Register("throwing", "breaks the contract", [](const std::string&, const registry::SolverContext&) {
+    return std::make_unique<Throwing>();
+  });
+  ExperimentConfig config = SmallTable();
+  for (RowConfig& row : config.rows) row.estimator.solver = "throwing";
+  EXPECT_THROW(RunMonteCarlo(config, parts, {2, nullptr}), std::runtime_error);
+}
+
 TEST(MonteCarlo, ThreadsComeFromTheOptionThenOmpNumThreads) {
   EXPECT_EQ(ResolveThreads(3), 3);
   ::setenv("OMP_NUM_THREADS", "5", 1);
