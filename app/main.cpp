@@ -1,6 +1,9 @@
 // anchorbench: Monte Carlo simulation and benchmarking of online UWB anchor initialization.
 // The only file that sees CLI11: it maps the command line onto the commands of commands.hpp.
+#include <charconv>
 #include <iostream>
+#include <limits>
+#include <string>
 
 #include <CLI/CLI.hpp>
 
@@ -16,14 +19,39 @@ const char* BuildRevision();  // generated at build time (cmake/GitRevision.cmak
 
 namespace {
 
+constexpr const char* kExitCodes =
+    "Exit codes: 0 done; 2 bad input or usage (one message naming the file and line, the config key or the "
+    "option; nothing written); 3 internal error.";
+
+// A whole number in [min, max], checked on the text: CLI11 would wrap "-1" into an unsigned
+// option and word its own range errors in doubles.
+CLI::Validator WholeNumber(long long min, long long max) {
+  return CLI::Validator(
+      [min, max](std::string& text) -> std::string {
+        long long value = 0;
+        const char* end = text.data() + text.size();
+        const auto [ptr, ec] = std::from_chars(text.data(), end, value);
+        if (text.empty() || ec != std::errc() || ptr != end || value < min || value > max) {
+          return "expected a whole number from " + std::to_string(min) + " to " + std::to_string(max) + ", got '" +
+                 text + "'";
+        }
+        return "";
+      },
+      "INT");
+}
+
 // The options every Monte Carlo command shares (run, sweep, pdop-study).
 void AddMonteCarloOptions(CLI::App* cmd, app::MonteCarloArgs& args) {
-  cmd->add_option("--out", args.out, "Output folder (default results/<config name>/)");
+  cmd->add_option("--out", args.out, "Output folder (default results/<config name>/), replaced as a whole");
   cmd->add_option("--threads", args.threads, "OpenMP threads (default: OMP_NUM_THREADS, else all cores)")
-      ->check(CLI::NonNegativeNumber);
-  cmd->add_option("--realizations", args.realizations, "Override the realizations per row")->check(CLI::PositiveNumber);
+      ->check(WholeNumber(0, 1 << 20));
+  cmd->add_option("--realizations", args.realizations, "Override the realizations per row")
+      ->check(WholeNumber(1, 100000000));
   cmd->add_flag("--quiet", args.quiet, "No progress output");
+  cmd->add_flag("--overwrite", args.overwrite, "Replace an output folder that holds earlier results");
 }
+
+constexpr long long kMaxSeed = std::numeric_limits<long long>::max();
 
 // Every subcommand's arguments, and the CLI11 subcommand that fills them.
 struct CommandLine {
@@ -46,8 +74,10 @@ void AddRecordingCommands(CLI::App& cli, CommandLine& c) {
   c.simulate_cmd = cli.add_subcommand("simulate", "Simulate one realization and write poses.csv, ranges.csv, anchors.csv");
   c.simulate_cmd->add_option("config", c.simulate.config, "Experiment config (YAML)")->required();
   c.simulate_cmd->add_option("--out", c.simulate.out, "Output folder (created if needed)")->required();
-  c.simulate_cmd->add_option("--seed", c.simulate.seed, "Override the config's seed");
-  c.simulate_cmd->add_option("--realization", c.simulate.realization, "Realization index (default 0)");
+  c.simulate_cmd->add_option("--seed", c.simulate.seed, "Override the config's seed")->check(WholeNumber(0, kMaxSeed));
+  c.simulate_cmd->add_option("--realization", c.simulate.realization, "Realization index (default 0)")
+      ->check(WholeNumber(0, kMaxSeed));
+  c.simulate_cmd->add_flag("--overwrite", c.simulate.overwrite, "Replace an output folder that holds files");
   c.simulate_cmd->add_option("--set", c.simulate.overrides, "Override a config value: KEY=VALUE (repeatable)");
 
   c.replay_cmd = cli.add_subcommand("replay", "Run the online initializers (estimator.triggers; by default the fixed "
@@ -59,18 +89,20 @@ void AddRecordingCommands(CLI::App& cli, CommandLine& c) {
   c.replay_cmd->add_option("--trace", c.replay.trace,
                            "Write one row per range: t,tag_id,anchor_id,range,accepted,n_accepted,pdop");
   c.replay_cmd->add_option("--out", c.replay.out, "Folder for estimates.csv");
+  c.replay_cmd->add_flag("--overwrite", c.replay.overwrite, "Replace an existing --out folder or --trace file");
 
   c.convert_cmd = cli.add_subcommand(
       "convert-hanyang", "Convert a Hanyang outdoor UWB dataset case into poses.csv, ranges.csv, anchors.csv");
   c.convert_cmd->add_option("case", c.convert.case_folder, "Case folder (A3.csv ... A12.csv, trajectory.csv)")->required();
   c.convert_cmd->add_option("--out", c.convert.out, "Output folder (created if needed)")->required();
+  c.convert_cmd->add_flag("--overwrite", c.convert.overwrite, "Replace an output folder that holds files");
 }
 
 void AddMonteCarloCommands(CLI::App& cli, CommandLine& c) {
   c.run_cmd = cli.add_subcommand("run", "Monte Carlo: every row x realization x anchor x trigger (estimator.triggers)");
   c.run_cmd->add_option("config", c.run.config, "Experiment config (YAML) with rows")->required();
   AddMonteCarloOptions(c.run_cmd, c.run);
-  c.run_cmd->add_option("--seed", c.run.seed, "Override the config's seed");
+  c.run_cmd->add_option("--seed", c.run.seed, "Override the config's seed")->check(WholeNumber(0, kMaxSeed));
   c.run_cmd->add_option("--set", c.run.overrides, "Override a config value: KEY=VALUE, KEY a dotted path (repeatable)");
 
   c.sweep_cmd = cli.add_subcommand("sweep", "Run a config over a grid of values and tabulate each point");
@@ -84,8 +116,8 @@ void AddMonteCarloCommands(CLI::App& cli, CommandLine& c) {
   c.study_cmd->add_option("config", c.study.config, "Experiment config (YAML); its base scenario is used")->required();
   AddMonteCarloOptions(c.study_cmd, c.study);
   c.study_cmd->add_option("--every", c.study.every, "Checkpoint every N accepted samples (default 10)")
-      ->check(CLI::PositiveNumber);
-  c.study_cmd->add_option("--bin-s", c.study.bin_s, "Summary time bins in seconds (default 10)")->check(CLI::PositiveNumber);
+      ->check(WholeNumber(1, 1000000));
+  c.study_cmd->add_option("--bin-s", c.study.bin_s, "Summary time bins in seconds, 0.01 to 120 (default 10)");
 }
 
 int Dispatch(const CommandLine& c, const app::AppContext& context) {
@@ -101,8 +133,16 @@ int Dispatch(const CommandLine& c, const app::AppContext& context) {
 
 }  // namespace
 
+// Usage errors exit like every other bad input: one line, code 2. Help is not an error.
+int UsageError(const CLI::App& cli, const CLI::ParseError& e) {
+  if (e.get_exit_code() == static_cast<int>(CLI::ExitCodes::Success)) return cli.exit(e);  // --help
+  std::cerr << "anchorbench: error: " << e.what() << " (see anchorbench --help)\n";
+  return 2;
+}
+
 int main(int argc, char** argv) {
   CLI::App cli{"anchorbench: online initialization of unknown UWB anchors (Delama et al., IROS 2025)"};
+  cli.footer(kExitCodes);
   cli.require_subcommand(1);
   CommandLine command_line;
   AddRecordingCommands(cli, command_line);
@@ -111,7 +151,7 @@ int main(int argc, char** argv) {
   try {
     cli.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
-    return cli.exit(e);
+    return UsageError(cli, e);
   }
   try {
     const anchorbench::registry::Components parts = anchorbench::eval::MakeComponentsWithOracles();

@@ -12,9 +12,9 @@ fi
 bin=build/app/anchorbench
 for case_dir in "$data"/*/Trajectory_*/Case_*; do
   name=$(echo "${case_dir#"$data"/}" | tr '/' '_')   # e.g. LOS_Trajectory_A_Case_1
-  "$bin" convert-hanyang "$case_dir" --out "build/hanyang/$name" >/dev/null
+  "$bin" convert-hanyang "$case_dir" --out "build/hanyang/$name" --overwrite >/dev/null
   "$bin" replay --poses "build/hanyang/$name/poses.csv" --ranges "build/hanyang/$name/ranges.csv" \
     --anchors "build/hanyang/$name/anchors.csv" --config configs/hanyang.yaml \
-    --trace "build/hanyang/$name/trace.csv" --out "results/hanyang/$name" >/dev/null 2>&1
+    --trace "build/hanyang/$name/trace.csv" --out "results/hanyang/$name" --overwrite >/dev/null 2>&1
 done
 /usr/bin/python3 plot_scripts/hanyang_summary.py

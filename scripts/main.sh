@@ -8,14 +8,14 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 bash scripts/build.sh anchorbench
 bin=build/app/anchorbench
-"$bin" run configs/table1.yaml --out results/table1
+"$bin" run configs/table1.yaml --out results/table1 --overwrite
 for sweep in sweep_pdop_threshold sweep_tau sweep_noise_outliers; do
-  "$bin" sweep "configs/$sweep.yaml" --out "results/$sweep" --quiet
+  "$bin" sweep "configs/$sweep.yaml" --out "results/$sweep" --quiet --overwrite
 done
-"$bin" pdop-study configs/pdop_study.yaml --out results/pdop_study --quiet
+"$bin" pdop-study configs/pdop_study.yaml --out results/pdop_study --quiet --overwrite
 bash scripts/halls.sh
 for sweep in stress stress_ransac; do
-  "$bin" sweep "configs/$sweep.yaml" --out "results/$sweep" --quiet
+  "$bin" sweep "configs/$sweep.yaml" --out "results/$sweep" --quiet --overwrite
 done
 bash scripts/plots.sh
 bash scripts/hanyang.sh   # the real recordings in ../shared, if present

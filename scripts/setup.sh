@@ -11,6 +11,7 @@ packages=(
   libgtest-dev libgmock-dev      # tests
   libbenchmark-dev               # benchmarks
   python3-matplotlib python3-numpy  # plot_scripts/ (run with /usr/bin/python3)
+  clang libclang-rt-14-dev libomp-14-dev  # scripts/sanitize.sh: ASan, UBSan, libFuzzer
 )
 
 missing=()

@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # The test command (README): set up, build from scratch if needed, build and run the two
-# out-of-tree examples against the installed package, then run the whole suite (ctest's summary
-# closes it).
+# out-of-tree examples against the installed package, run the whole suite (Release), then the
+# sanitizer job (scripts/sanitize.sh: ASan + UBSan build of every test, libFuzzer runs, mutated
+# inputs, the clang build's bytes against g++'s).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 bash scripts/build.sh
@@ -13,7 +14,8 @@ for example in custom_solver online_front_end; do
   cmake --build "build/examples/$example" -j"$(nproc)"
 done
 build/examples/custom_solver/custom_solver examples/custom_solver/table1_thirds.yaml
-build/app/anchorbench simulate configs/tunnel.yaml --out build/examples/tunnel_log >/dev/null
+build/app/anchorbench simulate configs/tunnel.yaml --out build/examples/tunnel_log --overwrite >/dev/null
 build/examples/online_front_end/online_front_end build/examples/tunnel_log/poses.csv build/examples/tunnel_log/ranges.csv
 
 ctest --test-dir build --output-on-failure -j"$(nproc)"
+bash scripts/sanitize.sh

@@ -21,6 +21,7 @@ struct AppContext {
 struct SimulateArgs {
   std::string config;
   std::string out;
+  bool overwrite = false;
   std::optional<std::uint64_t> seed;
   std::uint64_t realization = 0;
   std::vector<std::string> overrides;  // --set KEY=VALUE
@@ -29,6 +30,7 @@ int SimulateCommand(const SimulateArgs& args, const AppContext& app);
 
 struct ReplayArgs {
   std::string poses, ranges, anchors, config, trace, out;
+  bool overwrite = false;
 };
 int ReplayCommand(const ReplayArgs& args, const AppContext& app);
 
@@ -39,6 +41,7 @@ struct MonteCarloArgs {
   int threads = 0;  // 0: OMP_NUM_THREADS, else every core
   std::optional<int> realizations;
   bool quiet = false;
+  bool overwrite = false;  // replace a folder holding earlier results
 };
 
 struct RunArgs : MonteCarloArgs {
@@ -61,6 +64,7 @@ int PdopStudyCommand(const PdopStudyArgs& args, const AppContext& app);
 struct ConvertHanyangArgs {
   std::string case_folder;
   std::string out;
+  bool overwrite = false;
 };
 int ConvertHanyangCommand(const ConvertHanyangArgs& args);
 

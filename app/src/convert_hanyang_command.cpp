@@ -1,15 +1,20 @@
 #include <iostream>
 
 #include "anchorbench/io/hanyang.hpp"
+#include "anchorbench/io/scenario_files.hpp"
 #include "commands.hpp"
 
 namespace anchorbench::app {
 
 int ConvertHanyangCommand(const ConvertHanyangArgs& args) {
-  const io::HanyangSummary s = io::ConvertHanyangCase(args.case_folder, args.out);
-  std::cout << "convert-hanyang: " << s.poses << " poses, " << s.ranges << " ranges, " << s.anchors << " anchors -> "
-            << args.out;
-  if (s.dropped_poses > 0) std::cout << " (" << s.dropped_poses << " trajectory rows with non-increasing time dropped)";
+  const io::HanyangCase converted = io::ConvertHanyangCase(args.case_folder);
+  const io::Recording& r = converted.recording;
+  io::WriteRecordingFolder(args.out, r, args.overwrite, {args.case_folder});
+  std::cout << "convert-hanyang: " << r.poses.size() << " poses, " << r.ranges.size() << " ranges, " << r.anchors.size()
+            << " anchors -> " << args.out;
+  if (converted.dropped_poses > 0) {
+    std::cout << " (" << converted.dropped_poses << " trajectory rows with non-increasing time dropped)";
+  }
   std::cout << '\n';
   return 0;
 }

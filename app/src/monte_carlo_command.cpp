@@ -1,7 +1,6 @@
 #include "monte_carlo_command.hpp"
 
 #include "anchorbench/config/load_config.hpp"
-#include "anchorbench/io/output_folder.hpp"
 #include "anchorbench/runner/monte_carlo.hpp"
 
 namespace anchorbench::app {
@@ -9,8 +8,17 @@ namespace anchorbench::app {
 MonteCarloSetup SetUpMonteCarlo(const MonteCarloArgs& args, const std::string& config_name) {
   MonteCarloSetup setup;
   setup.threads = runner::ResolveThreads(args.threads);
-  setup.out = io::OutputFolder(args.out, config_name);
+  setup.out = io::ResultFolderPath(args.out, config_name);
   return setup;
+}
+
+std::unique_ptr<io::ResultFolder> OpenResultFolder(const MonteCarloArgs& args, const MonteCarloSetup& setup,
+                                                  std::uintmax_t expected_bytes) {
+  io::ResultFolder::Options options;
+  options.overwrite = args.overwrite;
+  options.expected_bytes = expected_bytes;
+  options.inputs = {args.config};
+  return std::make_unique<io::ResultFolder>(setup.out, options);
 }
 
 report::RunInfo RunInfoOf(const MonteCarloArgs& args, const MonteCarloSetup& setup, const AppContext& app,

@@ -3,9 +3,11 @@
 // manifest's record of the run.
 
 #include <filesystem>
+#include <memory>
 #include <string>
 #include <vector>
 
+#include "anchorbench/io/result_folder.hpp"
 #include "anchorbench/report/run_outputs.hpp"
 #include "anchorbench/runner/experiment.hpp"
 #include "commands.hpp"
@@ -17,8 +19,13 @@ struct MonteCarloSetup {
   int threads = 1;
   std::filesystem::path out;
 };
-// Resolves the thread count and creates the output folder (call it only once the input is valid).
+// Resolves the thread count and where the results go; call it only once the input is valid.
 MonteCarloSetup SetUpMonteCarlo(const MonteCarloArgs& args, const std::string& config_name);
+
+// The result folder, before any work: refused if it holds earlier results without --overwrite,
+// checked for being writable, with `expected_bytes` reserved on its disk.
+std::unique_ptr<io::ResultFolder> OpenResultFolder(const MonteCarloArgs& args, const MonteCarloSetup& setup,
+                                                  std::uintmax_t expected_bytes);
 
 // The manifest's record: the command line's changes (--realizations and any `more`), threads,
 // wall time, revision and the resolved config.

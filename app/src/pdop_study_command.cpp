@@ -2,7 +2,7 @@
 #include <sstream>
 
 #include "anchorbench/config/load_config.hpp"
-#include "anchorbench/io/atomic_file.hpp"
+#include "anchorbench/io/result_folder.hpp"
 #include "anchorbench/io/format.hpp"
 #include "anchorbench/io/input_error.hpp"
 #include "anchorbench/report/pdop_study_report.hpp"
@@ -14,26 +14,30 @@ namespace anchorbench::app {
 int PdopStudyCommand(const PdopStudyArgs& args, const AppContext& app) {
   runner::ExperimentConfig config = config::LoadConfig(args.config, {}, app.parts);
   if (args.realizations) config.realizations = *args.realizations;
-  if (args.every < 1) throw io::InputError("--every must be >= 1");
-  if (!(args.bin_s > 0.0)) throw io::InputError("--bin-s must be > 0");
+  if (args.every < 1 || args.every > 1000000) throw io::InputError("--every: must be in [1, 1000000]");
+  // The summary's bins cover Fig. 7's first 120 s: at least 0.01 s (12,000 bins), at most all of it.
+  if (!(args.bin_s >= 0.01 && args.bin_s <= 120.0)) throw io::InputError("--bin-s: must be in [0.01, 120] seconds");
+  const double anchors = static_cast<double>(config.realizations) * config.scenario.NumAnchors();
+  if (anchors > 1e6) throw io::InputError(args.config + ": realizations x anchors above 1e6 for a PDOP study");
   const MonteCarloSetup setup = SetUpMonteCarlo(args, config.name);
+  // A checkpoint line (~150 bytes) every `every` samples, a few thousand samples per anchor.
+  const std::unique_ptr<io::ResultFolder> out =
+      OpenResultFolder(args, setup, static_cast<std::uintmax_t>(anchors * 150.0 * 5000.0 / args.every) + (1 << 16));
 
   Progress progress("pdop-study " + config.name, args.quiet);
   const runner::PdopStudy study = runner::RunPdopStudy(config, app.parts, args.every, setup.threads);
   const double wall_time_s = progress.elapsed_s();
   progress.Finish(config.realizations);
 
-  io::AtomicFile trace(setup.out / "pdop_trace.csv");
-  report::WritePdopTrace(trace.stream(), study.checkpoints);
+  out->Write("pdop_trace.csv", [&](std::ostream& file) { report::WritePdopTrace(file, study.checkpoints); });
   std::ostringstream md;
   report::WritePdopStudyMarkdown(md, config, study, args.every, args.bin_s);
-  io::AtomicFile summary(setup.out / "pdop_study.md");
-  summary.stream() << md.str();
+  out->Write("pdop_study.md", md.str());
   const std::vector<std::string> command_line = {"--every " + std::to_string(args.every),
                                                  "--bin-s " + io::FormatNumber(args.bin_s)};
-  io::AtomicFile manifest(setup.out / "manifest.json");
-  manifest.stream() << report::ManifestJson(config, RunInfoOf(args, setup, app, config, wall_time_s, command_line));
-  for (io::AtomicFile* file : {&trace, &summary, &manifest}) file->Commit();
+  out->Write("manifest.json",
+             report::ManifestJson(config, RunInfoOf(args, setup, app, config, wall_time_s, command_line)));
+  out->Commit();
   if (!args.quiet) std::cout << md.str();
   return 0;
 }

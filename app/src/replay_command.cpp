@@ -4,13 +4,24 @@
 
 #include "anchorbench/config/load_config.hpp"
 #include "anchorbench/io/atomic_file.hpp"
-#include "anchorbench/io/output_folder.hpp"
 #include "anchorbench/io/recorded_data.hpp"
+#include "anchorbench/io/result_folder.hpp"
 #include "anchorbench/report/replay_report.hpp"
 #include "anchorbench/runner/replay.hpp"
 #include "commands.hpp"
 
 namespace anchorbench::app {
+namespace {
+
+std::vector<std::filesystem::path> Inputs(const ReplayArgs& args) {
+  std::vector<std::filesystem::path> inputs = {args.poses, args.ranges};
+  for (const std::string& optional : {args.anchors, args.config}) {
+    if (!optional.empty()) inputs.emplace_back(optional);
+  }
+  return inputs;
+}
+
+}  // namespace
 
 int ReplayCommand(const ReplayArgs& args, const AppContext& app) {
   runner::ExperimentConfig config;  // the defaults, unless --config names a file
@@ -21,12 +32,20 @@ int ReplayCommand(const ReplayArgs& args, const AppContext& app) {
   if (!args.anchors.empty()) truth = io::LoadAnchors(args.anchors);
   const std::map<int, eval::AnchorTruth>* known = args.anchors.empty() ? nullptr : &truth;
   runner::CheckReplayable(ranges, known, config.estimator, app.parts);
-  if (!args.out.empty()) io::CreateFolder(args.out);
 
+  // The outputs, before any work: never an input, never earlier results without --overwrite.
+  std::unique_ptr<io::ResultFolder> out;
+  if (!args.out.empty()) {
+    io::ResultFolder::Options options;
+    options.overwrite = args.overwrite;
+    options.expected_bytes = 1 << 16;
+    options.inputs = Inputs(args);
+    out = std::make_unique<io::ResultFolder>(args.out, options);
+  }
   std::unique_ptr<io::AtomicFile> trace_file;
   runner::TraceSink trace;
   if (!args.trace.empty()) {
-    trace_file = std::make_unique<io::AtomicFile>(args.trace);
+    trace_file = std::make_unique<io::AtomicFile>(args.trace, args.overwrite, Inputs(args));
     trace_file->stream() << report::kTraceHeader << '\n';
     trace = [&](const io::RangeRecord& r, const estimator::FeedResult& fed) {
       report::WriteTraceRow(trace_file->stream(), r, fed);
@@ -41,10 +60,9 @@ int ReplayCommand(const ReplayArgs& args, const AppContext& app) {
   }
   report::PrintEstimates(std::cout, result.attempts);
   if (trace_file) trace_file->Commit();
-  if (!args.out.empty()) {
-    io::AtomicFile estimates(std::filesystem::path(args.out) / "estimates.csv");
-    report::WriteEstimates(estimates.stream(), result.attempts);
-    estimates.Commit();
+  if (out) {
+    out->Write("estimates.csv", [&](std::ostream& file) { report::WriteEstimates(file, result.attempts); });
+    out->Commit();
   }
   return 0;
 }

@@ -2,21 +2,36 @@
 #include <sstream>
 
 #include "anchorbench/config/load_config.hpp"
-#include "anchorbench/io/atomic_file.hpp"
+#include "anchorbench/io/result_folder.hpp"
 #include "anchorbench/report/run_outputs.hpp"
 #include "anchorbench/report/summary.hpp"
 #include "anchorbench/runner/monte_carlo.hpp"
 #include "monte_carlo_command.hpp"
 
 namespace anchorbench::app {
+namespace {
+
+// attempts.csv is ~200 bytes a row; the rest of the folder is small.
+std::uintmax_t ExpectedBytes(const runner::ExperimentConfig& config) {
+  std::uintmax_t attempts = 0;
+  for (const runner::RowConfig& row : runner::RowsOf(config)) {
+    attempts += static_cast<std::uintmax_t>(config.realizations) * static_cast<std::uintmax_t>(row.scenario.NumAnchors()) *
+                row.estimator.triggers.size();
+  }
+  return 200 * attempts + (1 << 16);
+}
+
+}  // namespace
 
 int RunCommand(const RunArgs& args, const AppContext& app) {
   runner::ExperimentConfig config = config::LoadConfig(args.config, args.overrides, app.parts);
   if (args.seed) config.seed = *args.seed;
   if (args.realizations) config.realizations = *args.realizations;
   const std::vector<runner::RowConfig> rows = runner::RowsOf(config);
+  runner::CheckWork(config);
   runner::CheckRows(rows, app.parts);
   const MonteCarloSetup setup = SetUpMonteCarlo(args, config.name);
+  const std::unique_ptr<io::ResultFolder> out = OpenResultFolder(args, setup, ExpectedBytes(config));
 
   Progress progress("run " + config.name, args.quiet);
   const std::vector<runner::Attempt> attempts = runner::RunMonteCarlo(
@@ -29,20 +44,16 @@ int RunCommand(const RunArgs& args, const AppContext& app) {
   std::vector<std::string> command_line;
   if (args.seed) command_line.push_back("--seed " + std::to_string(*args.seed));
   for (const std::string& assignment : args.overrides) command_line.push_back("--set " + assignment);
-  // Build every file first, then commit them together: an error leaves the old results intact.
-  io::AtomicFile attempts_file(setup.out / "attempts.csv");
-  report::WriteAttempts(attempts_file.stream(), attempts, rows);
-  io::AtomicFile summary_csv(setup.out / "summary.csv");
-  report::WriteSummaryCsv(summary_csv.stream(), summaries, rows);
+  // Every file into the new folder, then the folder in place: an error leaves the old results intact.
+  out->Write("attempts.csv", [&](std::ostream& file) { report::WriteAttempts(file, attempts, rows); });
+  out->Write("summary.csv", [&](std::ostream& file) { report::WriteSummaryCsv(file, summaries, rows); });
   std::ostringstream markdown;
   report::WriteSummaryMarkdown(markdown, summaries, rows, config);
-  io::AtomicFile summary_md(setup.out / "summary.md");
-  summary_md.stream() << markdown.str();
-  io::AtomicFile timing(setup.out / "timing.csv");
-  report::WriteTimingCsv(timing.stream(), summaries, rows);
-  io::AtomicFile manifest(setup.out / "manifest.json");
-  manifest.stream() << report::ManifestJson(config, RunInfoOf(args, setup, app, config, wall_time_s, command_line));
-  for (io::AtomicFile* file : {&attempts_file, &summary_csv, &summary_md, &timing, &manifest}) file->Commit();
+  out->Write("summary.md", markdown.str());
+  out->Write("timing.csv", [&](std::ostream& file) { report::WriteTimingCsv(file, summaries, rows); });
+  out->Write("manifest.json",
+             report::ManifestJson(config, RunInfoOf(args, setup, app, config, wall_time_s, command_line)));
+  out->Commit();
   if (!args.quiet) std::cout << markdown.str();
   return 0;
 }

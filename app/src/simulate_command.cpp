@@ -10,7 +10,7 @@ int SimulateCommand(const SimulateArgs& args, const AppContext& app) {
   runner::ExperimentConfig config = config::LoadConfig(args.config, args.overrides, app.parts);
   if (args.seed) config.seed = *args.seed;
   const sim::Scenario scenario = sim::GenerateScenario(config.scenario, config.seed, args.realization);
-  io::WriteScenarioFiles(scenario, args.out);
+  io::WriteRecordingFolder(args.out, io::RecordingOf(scenario), args.overwrite, {args.config});
   int outliers = 0;
   for (const sim::SimRange& r : scenario.ranges) outliers += r.is_outlier;
   std::cout << "simulate: " << scenario.t_s.size() << " poses, " << scenario.ranges.size() << " ranges (" << outliers

@@ -2,7 +2,7 @@
 #include <sstream>
 
 #include "anchorbench/config/load_config.hpp"
-#include "anchorbench/io/atomic_file.hpp"
+#include "anchorbench/io/result_folder.hpp"
 #include "anchorbench/io/input_error.hpp"
 #include "anchorbench/report/summary.hpp"
 #include "anchorbench/report/sweep_report.hpp"
@@ -20,6 +20,7 @@ std::vector<runner::ExperimentConfig> PointConfigs(const SweepArgs& args, const 
   for (const runner::SweepPoint& point : grid) {
     runner::ExperimentConfig config = config::LoadConfig(args.config, point.overrides, app.parts);
     if (args.realizations) config.realizations = *args.realizations;
+    runner::CheckWork(config);
     runner::CheckRows(runner::RowsOf(config), app.parts);
     configs.push_back(std::move(config));
   }
@@ -39,6 +40,12 @@ int SweepCommand(const SweepArgs& args, const AppContext& app) {
     total_tasks += static_cast<int>(runner::RowsOf(config).size()) * config.realizations;
   }
   const MonteCarloSetup setup = SetUpMonteCarlo(args, base.name);
+  // Per point, row and trigger a line of ~200 bytes in each of three files.
+  std::uintmax_t lines = 0;
+  for (const runner::ExperimentConfig& config : configs) {
+    for (const runner::RowConfig& row : runner::RowsOf(config)) lines += row.estimator.triggers.size();
+  }
+  const std::unique_ptr<io::ResultFolder> out = OpenResultFolder(args, setup, 600 * lines + (1 << 16));
 
   Progress progress("sweep " + base.name, args.quiet);
   std::vector<report::SweepPointResult> results;
@@ -55,21 +62,17 @@ int SweepCommand(const SweepArgs& args, const AppContext& app) {
   const double wall_time_s = progress.elapsed_s();
   progress.Finish(total_tasks);
 
-  io::AtomicFile csv(setup.out / "sweep.csv");
-  report::WriteSweepCsv(csv.stream(), axes, results);
-  io::AtomicFile timing(setup.out / "timing.csv");
-  report::WriteSweepTiming(timing.stream(), axes, results);
+  out->Write("sweep.csv", [&](std::ostream& file) { report::WriteSweepCsv(file, axes, results); });
+  out->Write("timing.csv", [&](std::ostream& file) { report::WriteSweepTiming(file, axes, results); });
   std::ostringstream md;
   report::WriteSweepMarkdown(md, base.name, configs.front().realizations, configs.front().seed, axes, results);
-  io::AtomicFile markdown(setup.out / "sweep.md");
-  markdown.stream() << md.str();
+  out->Write("sweep.md", md.str());
   std::vector<std::string> command_line;
   for (const std::string& axis : args.axes) command_line.push_back("--set " + axis);
   report::RunInfo info = RunInfoOf(args, setup, app, base, wall_time_s, command_line);
   info.sweep_axes = runner::DescribeAxes(axes);
-  io::AtomicFile manifest(setup.out / "manifest.json");
-  manifest.stream() << report::ManifestJson(configs.front(), info);
-  for (io::AtomicFile* file : {&csv, &timing, &markdown, &manifest}) file->Commit();
+  out->Write("manifest.json", report::ManifestJson(configs.front(), info));
+  out->Commit();
   if (!args.quiet) std::cout << md.str();
   return 0;
 }

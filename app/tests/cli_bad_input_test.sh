@@ -82,7 +82,7 @@ case "$(head -1 "$dir/run/summary.csv")" in  # exactly these leading columns; mo
   row,method,avg_m,med_m,init,gt1m,ratio_pct,avg_lo,avg_hi,ratio_lo,ratio_hi*) ;;
   *) echo "FAIL: summary header"; failures=$((failures + 1)) ;;
 esac
-summary_line=$("$bin" run "$dir/small.yaml" --out "$dir/run" 2>&1 >/dev/null)
+summary_line=$("$bin" run "$dir/small.yaml" --out "$dir/run" --overwrite 2>&1 >/dev/null)
 grep -q "realizations in" <<<"$summary_line" || { echo "FAIL: no summary line when stderr is not a terminal: $summary_line"; failures=$((failures + 1)); }
 
 # sweep: every grid point is validated before any trial; results do not depend on threads.

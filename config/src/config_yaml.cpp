@@ -2,6 +2,11 @@
 
 #include <charconv>
 #include <filesystem>
+#include <fstream>
+#include <map>
+#include <sstream>
+
+#include <yaml-cpp/depthguard.h>
 
 #include "anchorbench/io/input_error.hpp"
 
@@ -12,15 +17,65 @@ namespace {
 
 constexpr int kMaxBaseDepth = 8;  // a chain of `base:` files longer than this is taken to be a cycle
 
-YAML::Node LoadFile(const std::string& path) {
-  try {
-    YAML::Node root = YAML::LoadFile(path);
-    return root.IsNull() ? YAML::Node(YAML::NodeType::Map) : root;
-  } catch (const YAML::BadFile&) {
-    throw InputError(path + ": cannot open the config file");
-  } catch (const YAML::ParserException& e) {
-    throw InputError(path + ":" + std::to_string(e.mark.line + 1) + ": YAML syntax error: " + e.msg);
+constexpr std::uintmax_t kMaxConfigBytes = 1 << 20;  // configs are a few kB; a larger file is not one
+
+std::string Line(const YAML::Mark& mark) { return std::to_string(mark.line + 1); }
+
+// Every mapping's keys are names, each once (yaml-cpp keeps both of a repeated key and reads the
+// first; a list or a mapping as a key would end as an internal error later).
+void CheckKeys(const YAML::Node& node, const std::string& source) {
+  if (node.IsSequence()) {
+    for (const auto& item : node) CheckKeys(item, source);
+    return;
   }
+  if (!node.IsMap()) return;
+  std::map<std::string, int> seen;
+  for (const auto& entry : node) {
+    if (!entry.first.IsScalar()) {
+      throw InputError(source + ":" + Line(entry.first.Mark()) + ": a key must be a name, got " +
+                       (entry.first.IsSequence() ? "a list" : entry.first.IsMap() ? "a mapping" : "nothing"));
+    }
+    const auto [first, inserted] = seen.emplace(entry.first.Scalar(), entry.first.Mark().line + 1);
+    if (!inserted) {
+      throw InputError(source + ":" + Line(entry.first.Mark()) + ": key '" + entry.first.Scalar() +
+                       "' appears twice (lines " + std::to_string(first->second) + " and " + Line(entry.first.Mark()) + ")");
+    }
+    CheckKeys(entry.second, source);
+  }
+}
+
+// A config's text as a mapping of keys (an empty text is an empty mapping).
+YAML::Node ParseText(const std::string& text, const std::string& source) {
+  YAML::Node root;
+  try {
+    root = YAML::Load(text);
+  } catch (const YAML::DeepRecursion& e) {
+    throw InputError(source + ":" + Line(e.mark) + ": nested deeper than the YAML reader allows (" +
+                     std::to_string(e.depth()) + " levels)");
+  } catch (const YAML::ParserException& e) {
+    throw InputError(source + ":" + Line(e.mark) + ": YAML syntax error: " + e.msg);
+  } catch (const YAML::Exception& e) {
+    throw InputError(source + ": YAML error: " + e.msg);
+  }
+  if (root.IsNull()) return YAML::Node(YAML::NodeType::Map);
+  if (!root.IsMap()) {
+    throw InputError(source + ": expected a mapping of config keys (key: value lines), got " +
+                     (root.IsSequence() ? "a list" : "'" + root.Scalar().substr(0, 40) + "'"));
+  }
+  CheckKeys(root, source);
+  return root;
+}
+
+std::string ReadConfigFile(const std::string& path) {
+  std::error_code error;
+  if (!std::filesystem::exists(path, error)) throw InputError(path + ": cannot open the config file");
+  if (!std::filesystem::is_regular_file(path, error)) throw InputError(path + ": is not a config file (a folder?)");
+  if (std::filesystem::file_size(path, error) > kMaxConfigBytes) throw InputError(path + ": more than 1 MiB: not a config");
+  std::ifstream in(path, std::ios::binary);
+  std::ostringstream text;
+  text << in.rdbuf();
+  if (!in) throw InputError(path + ": cannot read the config file");
+  return text.str();
 }
 
 // Lays `over` onto `base`: mappings merge recursively, everything else replaces.
@@ -34,15 +89,16 @@ YAML::Node Merge(const YAML::Node& base, const YAML::Node& over) {
   return merged;
 }
 
-YAML::Node LoadWithBase(const std::string& path, int depth) {
-  YAML::Node root = LoadFile(path);
-  if (!root.IsMap() || !root["base"]) return root;
-  if (depth >= kMaxBaseDepth) throw InputError(path + ": key 'base': chain of base files too long (a cycle?)");
+// The text of `source` laid over its `base:` file, if it names one (relative to `source`'s folder).
+YAML::Node WithBase(const std::string& text, const std::string& source, int depth) {
+  YAML::Node root = ParseText(text, source);
+  if (!root["base"]) return root;
+  if (depth >= kMaxBaseDepth) throw InputError(source + ": key 'base': chain of base files too long (a cycle?)");
   const YAML::Node base_key = root["base"];
-  if (!base_key.IsScalar()) throw InputError(path + ": key 'base': expected a file name");
-  const std::filesystem::path base_path = std::filesystem::path(path).parent_path() / base_key.Scalar();
+  if (!base_key.IsScalar() || base_key.Scalar().empty()) throw InputError(source + ": key 'base': expected a file name");
+  const std::string base_path = (std::filesystem::path(source).parent_path() / base_key.Scalar()).string();
   root.remove("base");
-  return Merge(LoadWithBase(base_path.string(), depth + 1), root);
+  return Merge(WithBase(ReadConfigFile(base_path), base_path, depth + 1), root);
 }
 
 std::vector<std::string> SplitKey(const std::string& key) {
@@ -106,6 +162,7 @@ void ApplyOverride(YAML::Node& root, const std::string& assignment) {
   } catch (const YAML::Exception& e) {
     throw InputError("--set '" + assignment + "': " + e.msg);
   }
+  CheckKeys(value, "--set '" + assignment + "'");
   Set(root, parts, value, assignment);
   if (parts.front() == "rows" || !root["rows"].IsSequence()) return;
   for (std::size_t i = 0; i < root["rows"].size(); ++i) {
@@ -116,7 +173,12 @@ void ApplyOverride(YAML::Node& root, const std::string& assignment) {
 }  // namespace
 
 YAML::Node LoadConfigYaml(const std::string& path, const std::vector<std::string>& overrides) {
-  YAML::Node root = LoadWithBase(path, 0);
+  return LoadConfigYamlText(ReadConfigFile(path), path, overrides);
+}
+
+YAML::Node LoadConfigYamlText(const std::string& text, const std::string& source,
+                              const std::vector<std::string>& overrides) {
+  YAML::Node root = WithBase(text, source, 0);
   for (const std::string& assignment : overrides) ApplyOverride(root, assignment);
   return root;
 }

@@ -53,9 +53,10 @@ std::string YamlToJson(const YAML::Node& node, int indent) {
 
 }  // namespace
 
-runner::ExperimentConfig LoadConfig(const std::string& path, const std::vector<std::string>& overrides,
-                                    const registry::Components& components) {
-  YAML::Node root = LoadConfigYaml(path, overrides);
+namespace {
+
+runner::ExperimentConfig FromYaml(const YAML::Node& root, const std::string& path,
+                                  const registry::Components& components) {
   runner::ExperimentConfig config;
   config.name = std::filesystem::path(path).stem().string();
   YamlSection top(root, "", path);
@@ -67,6 +68,19 @@ runner::ExperimentConfig LoadConfig(const std::string& path, const std::vector<s
     if (!known) top.Fail("only_rows", "no row named '" + name + "'");
   }
   return config;
+}
+
+}  // namespace
+
+runner::ExperimentConfig LoadConfig(const std::string& path, const std::vector<std::string>& overrides,
+                                    const registry::Components& components) {
+  return FromYaml(LoadConfigYaml(path, overrides), path, components);
+}
+
+runner::ExperimentConfig LoadConfigText(const std::string& text, const std::string& source,
+                                        const std::vector<std::string>& overrides,
+                                        const registry::Components& components) {
+  return FromYaml(LoadConfigYamlText(text, source, overrides), source, components);
 }
 
 registry::EstimatorConfig LoadEstimatorConfig(const std::string& path, const registry::Components& components) {

@@ -116,13 +116,27 @@ bool NloptSolver::IsStochastic(int algorithm) {
   }
 }
 
+namespace {
+
+// The algorithm's number, or -1. (NLopt's own nlopt_algorithm_from_string returns -1 as an
+// nlopt_algorithm, a value outside the enumeration: undefined behaviour to even load.)
+int AlgorithmNumber(const std::string& name) {
+  for (int a = 0; a < NLOPT_NUM_ALGORITHMS; ++a) {
+    const char* known = nlopt_algorithm_to_string(static_cast<nlopt_algorithm>(a));
+    if (known && name == known) return a;
+  }
+  return -1;
+}
+
+}  // namespace
+
 bool NloptSolver::Accepts(const std::string& algorithm, std::string* why) {
-  const nlopt_algorithm a = nlopt_algorithm_from_string(algorithm.c_str());
-  if (static_cast<int>(a) < 0 || a >= NLOPT_NUM_ALGORITHMS) {
+  const int a = AlgorithmNumber(algorithm);
+  if (a < 0) {
     if (why) *why = "'" + algorithm + "' is not an NLopt algorithm (e.g. LN_BOBYQA, LN_SBPLX, LD_LBFGS)";
     return false;
   }
-  if (IsStochastic(static_cast<int>(a))) {
+  if (IsStochastic(a)) {
     if (why) {
       *why = "'" + algorithm + "' draws from NLopt's process-wide random generator, so its results would not repeat; "
              "choose a deterministic algorithm";
@@ -135,11 +149,11 @@ bool NloptSolver::Accepts(const std::string& algorithm, std::string* why) {
 std::unique_ptr<NloptSolver> NloptSolver::Create(const std::string& algorithm, const AnchorSolverOptions& options,
                                                  std::shared_ptr<const LogPartitionTable> table, std::string* why) {
   if (!Accepts(algorithm, why)) return nullptr;
-  const nlopt_algorithm a = nlopt_algorithm_from_string(algorithm.c_str());
+  const int a = AlgorithmNumber(algorithm);
   if (!table || table->truncation() != options.nls.truncation || table->alpha_min() != options.nls.alpha_min) {
     table = std::make_shared<const LogPartitionTable>(options.nls.truncation, options.nls.alpha_min);
   }
-  return std::unique_ptr<NloptSolver>(new NloptSolver(static_cast<int>(a), options, std::move(table)));
+  return std::unique_ptr<NloptSolver>(new NloptSolver(a, options, std::move(table)));
 }
 
 NloptSolver::NloptSolver(int algorithm, const AnchorSolverOptions& options, std::shared_ptr<const LogPartitionTable> table)

@@ -11,7 +11,7 @@ TEST(DoubleDifferenceLs, RecoversAnchorAndBiasExactlyOnNoiseFreeData) {
   for (LsPivot pivot : {LsPivot::kShortestRange, LsPivot::kMinimumVariance}) {
     for (int trial = 0; trial < 20; ++trial) {
       auto rng = testing::TestStream(100 + trial);
-      const Eigen::Vector3d p_anchor(rng.Uniform(-50, 50), rng.Uniform(-50, 50), rng.Uniform(0, 5));
+      const Eigen::Vector3d p_anchor = testing::UniformIn(rng, Eigen::Vector3d(-50, -50, 0), Eigen::Vector3d(50, 50, 5));
       const double bias = rng.Uniform(-0.5, 0.5);
       const auto data = testing::BoxData(rng, 40, p_anchor, p_anchor + Eigen::Vector3d(6, -3, 0), 4.0, bias, 0.0);
       LsOptions options;

@@ -22,10 +22,9 @@ TEST(NlsSolver, ConvergesFromPerturbedStartOnNoiseFreeData) {
     const NlsSolver solver(Options(kernel));
     for (int trial = 0; trial < 20; ++trial) {
       auto rng = testing::TestStream(200 + trial);
-      const Eigen::Vector3d p_anchor(rng.Uniform(-20, 20), rng.Uniform(-20, 20), rng.Uniform(0, 5));
+      const Eigen::Vector3d p_anchor = testing::UniformIn(rng, Eigen::Vector3d(-20, -20, 0), Eigen::Vector3d(20, 20, 5));
       const auto data = testing::BoxData(rng, 200, p_anchor, p_anchor + Eigen::Vector3d(5, 2, -1), 5.0, 0.2, 0.0);
-      const Eigen::Vector3d start = p_anchor + Eigen::Vector3d(rng.Uniform(-1.5, 1.5), rng.Uniform(-1.5, 1.5),
-                                                               rng.Uniform(-1.5, 1.5));
+      const Eigen::Vector3d start = p_anchor + testing::UniformIn(rng, Eigen::Vector3d::Constant(-1.5), Eigen::Vector3d::Constant(1.5));
       const SolveResult result = solver.Solve(data.p_world_tag, data.range_m, start, 0.0);
       ASSERT_TRUE(Succeeded(result.status)) << ToString(result.status);
       EXPECT_LT((result.p_world_anchor - p_anchor).norm(), 1e-6) << "trial " << trial;

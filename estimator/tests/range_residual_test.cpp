@@ -12,8 +12,10 @@ namespace {
 TEST(RangeResidual, JacobianMatchesCentralDifferences) {
   auto rng = testing::TestStream(41);
   for (int trial = 0; trial < 500; ++trial) {
-    const Eigen::Vector4d theta(rng.Uniform(-20, 20), rng.Uniform(-20, 20), rng.Uniform(0, 6), rng.Uniform(-1, 1));
-    const Eigen::Vector3d p_tag(rng.Uniform(-20, 20), rng.Uniform(-20, 20), rng.Uniform(0, 3));
+    const double bias_m = rng.Uniform(-1, 1);
+    const Eigen::Vector3d p_anchor = testing::UniformIn(rng, Eigen::Vector3d(-20, -20, 0), Eigen::Vector3d(20, 20, 6));
+    const Eigen::Vector4d theta(p_anchor.x(), p_anchor.y(), p_anchor.z(), bias_m);
+    const Eigen::Vector3d p_tag = testing::UniformIn(rng, Eigen::Vector3d(-20, -20, 0), Eigen::Vector3d(20, 20, 3));
     if ((theta.head<3>() - p_tag).norm() < 0.5) continue;  // the direction is ill-defined at the tag
     const double range_m = rng.Uniform(0.5, 40.0);
     Eigen::Vector4d jacobian;

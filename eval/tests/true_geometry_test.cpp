@@ -43,14 +43,14 @@ TEST(ClosestPointPdop, Theorem31BoundHoldsOnMostGeometriesMeetingThePrecondition
   double worst_ratio = 1.0;
   for (int trial = 0; trial < 3000; ++trial) {
     auto rng = testing::TestStream(1000 + trial);
-    const Eigen::Vector3d p_anchor(rng.Uniform(-5, 5), rng.Uniform(-5, 5), rng.Uniform(0, 6));
+    const Eigen::Vector3d p_anchor = testing::UniformIn(rng, Eigen::Vector3d(-5, -5, 0), Eigen::Vector3d(5, 5, 6));
     const int n = 5 + static_cast<int>(rng.Uniform() * 60);
-    const Eigen::Vector3d center(rng.Uniform(-10, 10), rng.Uniform(-10, 10), rng.Uniform(0, 3));
+    const Eigen::Vector3d center = testing::UniformIn(rng, Eigen::Vector3d(-10, -10, 0), Eigen::Vector3d(10, 10, 3));
     const double spread = rng.Uniform(0.5, 6.0);
     std::vector<Eigen::Vector3d> p;
     std::vector<double> d;
     for (int k = 0; k < n; ++k) {
-      p.push_back(center + spread * Eigen::Vector3d(rng.Uniform(-1, 1), rng.Uniform(-1, 1), rng.Uniform(-1, 1)));
+      p.push_back(center + spread * testing::UniformIn(rng, -Eigen::Vector3d::Ones(), Eigen::Vector3d::Ones()));
       d.push_back((p.back() - p_anchor).norm());
     }
     std::size_t j = 0;

@@ -2,38 +2,53 @@
 
 #include <unistd.h>
 
+#include <cstdlib>
+
 #include "anchorbench/io/input_error.hpp"
+#include "anchorbench/io/result_folder.hpp"
 
 namespace anchorbench::io {
+namespace fs = std::filesystem;
+namespace {
 
-AtomicFile::AtomicFile(std::filesystem::path target)
-    : target_(std::move(target)),
-      temporary_(target_.string() + ".tmp." + std::to_string(::getpid())),
-      out_(temporary_, std::ios::binary | std::ios::trunc) {
-  if (!out_) throw InputError(target_.string() + ": cannot write (does the folder exist and is it writable?)");
+// <target>.tmp.<pid>; checked for the target before the temporary is opened.
+fs::path Temporary(const fs::path& target, bool overwrite, const std::vector<fs::path>& inputs) {
+  RefuseToReplaceInputs(target, inputs);
+  std::error_code error;
+  if (fs::exists(target, error) && !overwrite) {
+    throw InputError(target.string() + ": exists; add --overwrite to replace it");
+  }
+  // The temporaries of killed runs: <target>.tmp.<pid> of processes that are gone.
+  const std::string prefix = target.filename().string() + ".tmp.";
+  const fs::path folder = target.has_parent_path() ? target.parent_path() : fs::path(".");
+  for (const auto& entry : fs::directory_iterator(folder, error)) {
+    const std::string name = entry.path().filename().string();
+    if (name.rfind(prefix, 0) != 0) continue;
+    char* end = nullptr;
+    const long pid = std::strtol(name.c_str() + prefix.size(), &end, 10);
+    if (*end == '\0' && ProcessIsGone(pid)) fs::remove(entry.path(), error);
+  }
+  return target.string() + ".tmp." + std::to_string(::getpid());
 }
+
+}  // namespace
+
+AtomicFile::AtomicFile(fs::path target, bool overwrite, const std::vector<fs::path>& inputs)
+    : target_(std::move(target)), file_(Temporary(target_, overwrite, inputs)) {}
 
 AtomicFile::~AtomicFile() {
   if (committed_) return;
-  out_.close();
   std::error_code ignored;
-  std::filesystem::remove(temporary_, ignored);
+  fs::remove(file_.path(), ignored);
 }
 
 void AtomicFile::Commit() {
-  out_.flush();
-  const bool written = static_cast<bool>(out_);
-  out_.close();
+  file_.Close();
   std::error_code error;
-  if (written) std::filesystem::rename(temporary_, target_, error);
-  if (!written || error) throw InputError(target_.string() + ": writing failed" + (error ? ": " + error.message() : ""));
+  fs::rename(file_.path(), target_, error);
+  if (error) throw InputError(target_.string() + ": cannot put the new file in place: " + error.message());
+  SyncFolder(target_.has_parent_path() ? target_.parent_path() : fs::path("."));
   committed_ = true;
-}
-
-void WriteFileAtomically(const std::filesystem::path& target, const std::string& text) {
-  AtomicFile file(target);
-  file.stream() << text;
-  file.Commit();
 }
 
 }  // namespace anchorbench::io

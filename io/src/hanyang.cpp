@@ -9,7 +9,6 @@
 
 #include "anchorbench/io/csv_reader.hpp"
 #include "anchorbench/io/input_error.hpp"
-#include "anchorbench/io/scenario_files.hpp"
 
 namespace anchorbench::io {
 namespace {
@@ -83,24 +82,20 @@ std::vector<PoseRecord> ReadTrajectory(const std::filesystem::path& path, int* d
 
 }  // namespace
 
-HanyangSummary ConvertHanyangCase(const std::filesystem::path& case_folder, const std::filesystem::path& out) {
-  HanyangSummary summary;
-  std::map<int, eval::AnchorTruth> anchors;
-  const std::vector<StampedRange> stamped = ReadAnchorFiles(AnchorFiles(case_folder), anchors);
-  std::vector<PoseRecord> poses = ReadTrajectory(case_folder / "trajectory.csv", &summary.dropped_poses);
-  if (poses.empty() || stamped.empty()) throw InputError(case_folder.string() + ": no poses or no ranges");
+HanyangCase ConvertHanyangCase(const std::filesystem::path& case_folder) {
+  HanyangCase converted;
+  Recording& recording = converted.recording;
+  const std::vector<StampedRange> stamped = ReadAnchorFiles(AnchorFiles(case_folder), recording.anchors);
+  recording.poses = ReadTrajectory(case_folder / "trajectory.csv", &converted.dropped_poses);
+  if (recording.poses.empty() || stamped.empty()) throw InputError(case_folder.string() + ": no poses or no ranges");
 
   // Seconds since the case's earliest stamp.
-  const double t0_ns = std::min(poses.front().t_s, stamped.front().stamp_ns);
-  for (PoseRecord& pose : poses) pose.t_s = (pose.t_s - t0_ns) * kNanosecond;
-  std::vector<RangeRecord> ranges;
-  for (const StampedRange& r : stamped) ranges.push_back({(r.stamp_ns - t0_ns) * kNanosecond, 0, r.anchor_id, r.range_m, 0});
-
-  WriteRecordingFiles(out, poses, ranges, anchors);
-  summary.poses = static_cast<int>(poses.size());
-  summary.ranges = static_cast<int>(ranges.size());
-  summary.anchors = static_cast<int>(anchors.size());
-  return summary;
+  const double t0_ns = std::min(recording.poses.front().t_s, stamped.front().stamp_ns);
+  for (PoseRecord& pose : recording.poses) pose.t_s = (pose.t_s - t0_ns) * kNanosecond;
+  for (const StampedRange& r : stamped) {
+    recording.ranges.push_back({(r.stamp_ns - t0_ns) * kNanosecond, 0, r.anchor_id, r.range_m, 0});
+  }
+  return converted;
 }
 
 }  // namespace anchorbench::io

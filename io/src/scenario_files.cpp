@@ -3,9 +3,7 @@
 #include <algorithm>
 #include <vector>
 
-#include "anchorbench/io/atomic_file.hpp"
 #include "anchorbench/io/format.hpp"
-#include "anchorbench/io/output_folder.hpp"
 
 namespace anchorbench::io {
 
@@ -37,33 +35,33 @@ void WriteAnchors(std::ostream& out, const std::map<int, eval::AnchorTruth>& anc
   }
 }
 
-void WriteScenarioFiles(const sim::Scenario& scenario, const std::filesystem::path& folder) {
-  std::vector<PoseRecord> poses;
+Recording RecordingOf(const sim::Scenario& scenario) {
+  Recording recording;
   for (std::size_t k = 0; k < scenario.t_s.size(); ++k) {
     for (std::size_t tag = 0; tag < scenario.p_world_tag_reported.size(); ++tag) {
-      poses.push_back({scenario.t_s[k], static_cast<int>(tag), scenario.p_world_tag_reported[tag][k]});
+      recording.poses.push_back({scenario.t_s[k], static_cast<int>(tag), scenario.p_world_tag_reported[tag][k]});
     }
   }
-  std::vector<RangeRecord> ranges;
-  for (const sim::SimRange& r : scenario.ranges) ranges.push_back({r.t_s, r.tag_id, r.anchor_id, r.range_m, 0});
-  std::map<int, eval::AnchorTruth> anchors;
-  for (const sim::SimAnchor& a : scenario.anchors) anchors[a.id] = {a.p_world_anchor, a.bias_m};
-
-  WriteRecordingFiles(folder, poses, ranges, anchors);
+  for (const sim::SimRange& r : scenario.ranges) recording.ranges.push_back({r.t_s, r.tag_id, r.anchor_id, r.range_m, 0});
+  for (const sim::SimAnchor& a : scenario.anchors) recording.anchors[a.id] = {a.p_world_anchor, a.bias_m};
+  return recording;
 }
 
-void WriteRecordingFiles(const std::filesystem::path& folder, std::span<const PoseRecord> poses,
-                         std::span<const RangeRecord> ranges, const std::map<int, eval::AnchorTruth>& anchors) {
-  CreateFolder(folder);
-  AtomicFile poses_file(folder / "poses.csv");
-  WritePoses(poses_file.stream(), poses);
-  AtomicFile ranges_file(folder / "ranges.csv");
-  WriteRanges(ranges_file.stream(), ranges);
-  AtomicFile anchors_file(folder / "anchors.csv");
-  WriteAnchors(anchors_file.stream(), anchors);
-  poses_file.Commit();
-  ranges_file.Commit();
-  anchors_file.Commit();
+void WriteRecording(ResultFolder& folder, const Recording& recording) {
+  folder.Write("poses.csv", [&](std::ostream& out) { WritePoses(out, recording.poses); });
+  folder.Write("ranges.csv", [&](std::ostream& out) { WriteRanges(out, recording.ranges); });
+  folder.Write("anchors.csv", [&](std::ostream& out) { WriteAnchors(out, recording.anchors); });
+}
+
+void WriteRecordingFolder(const std::filesystem::path& folder, const Recording& recording, bool overwrite,
+                          const std::vector<std::filesystem::path>& inputs) {
+  ResultFolder::Options options;
+  options.overwrite = overwrite;
+  options.expected_bytes = 80 * (recording.poses.size() + recording.ranges.size()) + (1 << 16);  // ~60 B a row
+  options.inputs = inputs;
+  ResultFolder out(folder, options);
+  WriteRecording(out, recording);
+  out.Commit();
 }
 
 }  // namespace anchorbench::io

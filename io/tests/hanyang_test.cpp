@@ -6,6 +6,8 @@
 
 #include "anchorbench/io/input_error.hpp"
 #include "anchorbench/io/recorded_data.hpp"
+#include "anchorbench/io/result_folder.hpp"
+#include "anchorbench/io/scenario_files.hpp"
 #include "anchorbench/testing/temp_dir.hpp"
 
 namespace anchorbench::io {
@@ -23,11 +25,14 @@ TEST(Hanyang, ConvertsACaseIntoTheProjectFormats) {
   // The trajectory starts 0.5 s before the first range; a repeated timestamp is dropped.
   dir.Write("case/trajectory.csv",
             "timestamp,x,y,z,heading_degrees\n1.5e9,0,0,0,0\n2.5e9,1,0,0.25,0\n2.5e9,9,9,9,0\n3.5e9,2,0,0.5,0\n");
-  const HanyangSummary summary = ConvertHanyangCase(dir.path() / "case", dir.path() / "out");
-  EXPECT_EQ(summary.poses, 3);
-  EXPECT_EQ(summary.ranges, 3);
-  EXPECT_EQ(summary.anchors, 2);
-  EXPECT_EQ(summary.dropped_poses, 1);
+  const HanyangCase converted = ConvertHanyangCase(dir.path() / "case");
+  EXPECT_EQ(converted.recording.poses.size(), 3u);
+  EXPECT_EQ(converted.recording.ranges.size(), 3u);
+  EXPECT_EQ(converted.recording.anchors.size(), 2u);
+  EXPECT_EQ(converted.dropped_poses, 1);
+  ResultFolder out(dir.path() / "out", {});
+  WriteRecording(out, converted.recording);
+  out.Commit();
 
   const std::vector<RangeRecord> ranges = LoadRanges((dir.path() / "out" / "ranges.csv").string());
   ASSERT_EQ(ranges.size(), 3u);
@@ -48,9 +53,9 @@ TEST(Hanyang, ConvertsACaseIntoTheProjectFormats) {
 
 TEST(Hanyang, MissingFilesAreInputErrors) {
   testing::TempDir dir("hanyang_bad");
-  EXPECT_THROW(ConvertHanyangCase(dir.path(), dir.path() / "out"), InputError);  // no anchor files
+  EXPECT_THROW(ConvertHanyangCase(dir.path()), InputError);  // no anchor files
   dir.Write("A3.csv", std::string(kAnchorHeader) + "1,1,3,0,0,0,5,-79,-80\n");
-  EXPECT_THROW(ConvertHanyangCase(dir.path(), dir.path() / "out"), InputError);  // no trajectory.csv
+  EXPECT_THROW(ConvertHanyangCase(dir.path()), InputError);  // no trajectory.csv
 }
 
 }  // namespace

@@ -48,7 +48,7 @@ TEST_P(SolverConformance, NoiseFreeWellConditionedDataGivesTheAnchorTo1e6) {
   const auto solver = Make(GetParam());
   for (int trial = 0; trial < 5; ++trial) {
     auto rng = anchorbench::testing::TestStream(500 + trial);
-    const Eigen::Vector3d p_anchor(rng.Uniform(-10, 10), rng.Uniform(-10, 10), rng.Uniform(0, 5));
+    const Eigen::Vector3d p_anchor = anchorbench::testing::UniformIn(rng, Eigen::Vector3d(-10, -10, 0), Eigen::Vector3d(10, 10, 5));
     const auto data = anchorbench::testing::BoxData(rng, 150, p_anchor, p_anchor + Eigen::Vector3d(4, 3, -1), 5.0, 0.25, 0.0);
     const SolveResult result = solver->Solve(data.p_world_tag, data.range_m);
     ASSERT_TRUE(Succeeded(result.status)) << ToString(result.status);

@@ -16,6 +16,9 @@ using io::FormatOptional;
 constexpr const char* kEstimateColumns[] = {"anchor_id", "method", "initialized", "t_init", "n_used", "pdop_est",
                                             "pdop_true", "x", "y", "z", "bias", "err_m"};
 
+// Three decimals for a terminal, or the shortest text where that would be a wall of digits.
+std::string ForTerminal(double value) { return std::abs(value) < 1e9 ? FormatFixed(value, 3) : FormatNumber(value); }
+
 // The columns of estimates.csv for one attempt, as text (empty where not applicable).
 std::vector<std::string> EstimateFields(const runner::Attempt& a) {
   const bool has_estimate = a.initialized && a.solve;
@@ -57,12 +60,12 @@ void PrintEstimates(std::ostream& out, const std::vector<runner::Attempt>& attem
     const std::optional<double> numbers[] = {a.t_init_s, a.pdop_estimate, pdop_true};
     const int columns[] = {3, 5, 6};
     for (int k = 0; k < 3; ++k)
-      if (numbers[k] && std::isfinite(*numbers[k])) fields[columns[k]] = FormatFixed(*numbers[k], 3);
+      if (numbers[k] && std::isfinite(*numbers[k])) fields[columns[k]] = ForTerminal(*numbers[k]);
     if (a.initialized && a.solve) {
-      for (int k = 0; k < 3; ++k) fields[7 + k] = FormatFixed(a.solve->p_world_anchor[k], 3);
-      fields[10] = FormatFixed(a.solve->bias_m, 3);
+      for (int k = 0; k < 3; ++k) fields[7 + k] = ForTerminal(a.solve->p_world_anchor[k]);
+      fields[10] = ForTerminal(a.solve->bias_m);
     }
-    if (a.evaluation && a.evaluation->error_m) fields[11] = FormatFixed(*a.evaluation->error_m, 3);
+    if (a.evaluation && a.evaluation->error_m) fields[11] = ForTerminal(*a.evaluation->error_m);
     for (std::size_t i = 0; i < fields.size(); ++i) out << std::setw(kWidth[i]) << (fields[i].empty() ? "-" : fields[i]);
     out << '\n';
   }

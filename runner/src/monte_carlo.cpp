@@ -4,6 +4,7 @@
 
 #include <chrono>
 #include <cstdlib>
+#include <string>
 #include <exception>
 #include <map>
 #include <stdexcept>
@@ -62,12 +63,34 @@ std::vector<Attempt> RunTrigger(const RowConfig& row, const std::string& trigger
 }  // namespace
 
 int ResolveThreads(int requested) {
+  const int cores = omp_get_num_procs();
+  const int most = kThreadsPerCore * cores;
+  const std::string limit = "at most " + std::to_string(most) + " (" + std::to_string(kThreadsPerCore) + " x the " +
+                            std::to_string(cores) + " cores here)";
+  if (requested > most) throw io::InputError("--threads " + std::to_string(requested) + ": " + limit);
   if (requested > 0) return requested;
   if (const char* variable = std::getenv("OMP_NUM_THREADS")) {
-    const int from_environment = std::atoi(variable);
-    if (from_environment > 0) return from_environment;
+    char* end = nullptr;
+    const long from_environment = std::strtol(variable, &end, 10);  // "4" or the first level of "4,2"
+    if (end == variable || (*end != '\0' && *end != ',') || from_environment < 1 || from_environment > most) {
+      throw io::InputError("OMP_NUM_THREADS=" + std::string(variable) + ": expected a thread count, " + limit);
+    }
+    return static_cast<int>(from_environment);
   }
-  return omp_get_num_procs();
+  return cores;
+}
+
+void CheckWork(const ExperimentConfig& config) {
+  double attempts = 0.0;
+  for (const RowConfig& row : RowsOf(config)) {
+    attempts += static_cast<double>(config.realizations) * row.scenario.NumAnchors() *
+                static_cast<double>(row.estimator.triggers.size());
+  }
+  if (attempts > kMaxAttemptsPerRun) {
+    throw io::InputError(config.name + ": " + std::to_string(static_cast<long long>(attempts)) +
+                         " attempts (rows x realizations x anchors x triggers) in one run; at most 1e7: use fewer "
+                         "realizations or split the rows");
+  }
 }
 
 void CheckRows(const std::vector<RowConfig>& rows, const registry::Components& components) {
@@ -116,6 +139,7 @@ std::vector<Attempt> RunRealization(const RowConfig& row, int row_index, std::ui
 std::vector<Attempt> RunMonteCarlo(const ExperimentConfig& config, const registry::Components& components,
                                    const MonteCarloOptions& options) {
   const std::vector<RowConfig> rows = RowsOf(config);
+  CheckWork(config);
   CheckRows(rows, components);
   const int realizations = config.realizations;
   const int tasks = static_cast<int>(rows.size()) * realizations;

@@ -9,6 +9,7 @@
 #include "anchorbench/io/hanyang.hpp"
 #include "anchorbench/io/input_error.hpp"
 #include "anchorbench/io/recorded_data.hpp"
+#include "anchorbench/io/result_folder.hpp"
 #include "anchorbench/io/scenario_files.hpp"
 #include "anchorbench/runner/experiment.hpp"
 #include "anchorbench/testing/temp_dir.hpp"
@@ -44,14 +45,19 @@ TEST(Replay, SimulatedWellConditionedRunInitializesEveryAnchorWithinItsBound) {
   const sim::ScenarioOptions options = WellConditionedHall();
   const sim::Scenario scenario = sim::GenerateScenario(options, 4, 0);
   testing::TempDir dir("replay");
-  io::WriteScenarioFiles(scenario, dir.path());  // through the files, as a user would
+  {
+    io::ResultFolder folder(dir.path() / "log", {});
+    io::WriteRecording(folder, io::RecordingOf(scenario));  // through the files, as a user would
+    folder.Commit();
+  }
+  const std::filesystem::path log = dir.path() / "log";
 
-  const auto truth = io::LoadAnchors((dir.path() / "anchors.csv").string());
+  const auto truth = io::LoadAnchors((log / "anchors.csv").string());
   registry::EstimatorConfig estimator;
   estimator.filter.consistency.tau_m = 0.3;  // ~2 sigma of a difference of two ranges
   estimator.solver_options.nls.kernel_scale_m = options.ranging.sigma_range_m;
-  const ReplayResult result = Replay(io::LoadPoses((dir.path() / "poses.csv").string()),
-                                     io::LoadRanges((dir.path() / "ranges.csv").string()), &truth, estimator, Parts(), 1);
+  const ReplayResult result = Replay(io::LoadPoses((log / "poses.csv").string()),
+                                     io::LoadRanges((log / "ranges.csv").string()), &truth, estimator, Parts(), 1);
 
   EXPECT_EQ(result.ranges_skipped, 0);
   ASSERT_EQ(result.attempts.size(), 2 * scenario.anchors.size());
@@ -113,15 +119,12 @@ TEST(Replay, RealHanyangLosCase) {
   const std::filesystem::path data = std::filesystem::path(ANCHORBENCH_SHARED_DIR) / "data" / "hanyang-uwb";
   const std::filesystem::path case_folder = data / "LOS" / "Trajectory_A" / "Case_1";
   if (!std::filesystem::exists(case_folder)) GTEST_SKIP() << case_folder << " not found";
-  testing::TempDir dir("hanyang_real");
-  const io::HanyangSummary summary = io::ConvertHanyangCase(case_folder, dir.path());
-  EXPECT_EQ(summary.anchors, 4);
-  EXPECT_GT(summary.ranges, 8000);
+  const io::Recording recording = io::ConvertHanyangCase(case_folder).recording;
+  EXPECT_EQ(recording.anchors.size(), 4u);
+  EXPECT_GT(recording.ranges.size(), 8000u);
   registry::EstimatorConfig config;
   config.filter.consistency.tau_m = 0.2;
-  const auto truth = io::LoadAnchors((dir.path() / "anchors.csv").string());
-  const ReplayResult result = Replay(io::LoadPoses((dir.path() / "poses.csv").string()),
-                                     io::LoadRanges((dir.path() / "ranges.csv").string()), &truth, config, Parts(), 1);
+  const ReplayResult result = Replay(recording.poses, recording.ranges, &recording.anchors, config, Parts(), 1);
   ASSERT_EQ(result.attempts.size(), 8u);
   for (const Attempt& a : result.attempts) {
     if (a.method == kFixedWindowTrigger) {

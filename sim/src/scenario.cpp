@@ -97,7 +97,12 @@ void PlaceTags(const ScenarioOptions& options, std::uint64_t seed, std::uint64_t
   scenario.p_world_tag_true.assign(tags, {});
   scenario.p_world_tag_reported.assign(tags, {});
   for (std::size_t k = 0; k < scenario.t_s.size(); ++k) {
-    const Eigen::Vector3d noise(position_rng.Normal(), position_rng.Normal(), position_rng.Normal());
+    // Drawn z, then y, then x, each in its own statement: the order of function arguments is
+    // unspecified in C++ (GCC, which produced the committed results, evaluated them right to left).
+    const double noise_z = position_rng.Normal();
+    const double noise_y = position_rng.Normal();
+    const double noise_x = position_rng.Normal();
+    const Eigen::Vector3d noise(noise_x, noise_y, noise_z);
     const Eigen::Matrix3d R_world_body =
         Eigen::AngleAxisd(scenario.yaw_rad[k], Eigen::Vector3d::UnitZ()).toRotationMatrix();
     for (std::size_t tag = 0; tag < tags; ++tag) {
@@ -164,7 +169,25 @@ bool ScenarioOptions::IsValid(std::string* why) const {
     return false;
   }
   const bool environment_ok = environment == EnvironmentKind::kTunnel ? tunnel.IsValid(why) : hall.IsValid(why);
-  return environment_ok && trajectory.IsValid(why) && ranging.IsValid(why);
+  if (!environment_ok || !trajectory.IsValid(why) || !ranging.IsValid(why)) return false;
+  const double tag_epochs = MaxEpochs() * static_cast<double>(tag_offsets_m.size());
+  if (!(tag_epochs <= kMaxTagEpochs) || !(tag_epochs * NumAnchors() <= kMaxRangeSlots)) {
+    if (why) {
+      *why = "one realization would hold up to " + std::to_string(static_cast<long long>(std::min(tag_epochs, 1e18))) +
+             " tag positions and " + std::to_string(static_cast<long long>(std::min(tag_epochs * NumAnchors(), 1e18))) +
+             " range slots (epochs x tags x anchors); the limits are 1e7 and 2e7: shorten the run (length, speed, "
+             "duration, rate) or use fewer tags or anchors";
+    }
+    return false;
+  }
+  return true;
+}
+
+double ScenarioOptions::MaxEpochs() const {
+  const double duration_s = environment == EnvironmentKind::kTunnel
+                                ? tunnel.length_m / (trajectory.speed_mps * (1.0 - trajectory.speed_variation))
+                                : trajectory.hall_duration_s;
+  return duration_s * trajectory.rate_hz + 1.0;
 }
 
 Scenario GenerateScenario(const ScenarioOptions& options, std::uint64_t seed, std::uint64_t realization) {

@@ -14,6 +14,11 @@ namespace anchorbench::config {
 //   override of a key outside `rows` also applies to every row that sets the same key itself, so
 //   the overridden value holds everywhere.
 // Throws InputError naming the file (and line, for YAML syntax errors).
+// Keys must be names, each at most once per mapping (both lines are named otherwise); a file must
+// be a regular file of at most 1 MiB holding a mapping; nesting is bounded by yaml-cpp's guard.
 YAML::Node LoadConfigYaml(const std::string& path, const std::vector<std::string>& overrides);
+// The same from text; `source` names it in messages and anchors a relative `base:`.
+YAML::Node LoadConfigYamlText(const std::string& text, const std::string& source,
+                              const std::vector<std::string>& overrides);
 
 }  // namespace anchorbench::config

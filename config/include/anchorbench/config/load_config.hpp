@@ -16,6 +16,11 @@ namespace anchorbench::config {
 runner::ExperimentConfig LoadConfig(const std::string& path, const std::vector<std::string>& overrides,
                                     const registry::Components& components);
 
+// The same from a config's text (a fuzzer's entry point); `source` names it and anchors `base:`.
+runner::ExperimentConfig LoadConfigText(const std::string& text, const std::string& source,
+                                        const std::vector<std::string>& overrides,
+                                        const registry::Components& components);
+
 // The `estimator` section of a file only (replay --config).
 registry::EstimatorConfig LoadEstimatorConfig(const std::string& path, const registry::Components& components);
 

@@ -1,32 +1,32 @@
 #pragma once
 
 #include <filesystem>
-#include <fstream>
-#include <string>
+#include <ostream>
+#include <vector>
+
+#include "anchorbench/io/durable_file.hpp"
 
 namespace anchorbench::io {
 
-// Writes a file all or nothing: the text goes to a temporary file beside the target, which
-// Commit() renames over it. Destroyed without Commit() (an error, an interrupt), it removes the
-// temporary and leaves any previous file untouched, so no reader ever sees half a table.
+// One file written all or nothing (a trace beside a replay): the text goes to a temporary file
+// beside the target, flushed to the disk, which Commit() renames over it. Destroyed without
+// Commit() (an error, an interrupt), it removes the temporary and leaves any previous file
+// untouched. The constructor refuses an existing target unless `overwrite`, and one of `inputs`
+// always, and removes the temporaries of killed runs.
 class AtomicFile {
  public:
-  explicit AtomicFile(std::filesystem::path target);
+  AtomicFile(std::filesystem::path target, bool overwrite, const std::vector<std::filesystem::path>& inputs = {});
   ~AtomicFile();
   AtomicFile(const AtomicFile&) = delete;
   AtomicFile& operator=(const AtomicFile&) = delete;
 
-  std::ofstream& stream() { return out_; }
-  void Commit();  // throws InputError if the write or the rename fails
+  std::ostream& stream() { return file_.stream(); }
+  void Commit();  // throws InputError (with the system's reason) if writing or the rename fails
 
  private:
   std::filesystem::path target_;
-  std::filesystem::path temporary_;
-  std::ofstream out_;
+  DurableFile file_;
   bool committed_ = false;
 };
-
-// Convenience: the whole text at once.
-void WriteFileAtomically(const std::filesystem::path& target, const std::string& text);
 
 }  // namespace anchorbench::io

@@ -32,6 +32,13 @@ struct RangeRecord {
   int line = 0;  // in ranges.csv, for messages
 };
 
+// A recording in the project's formats, whole: what simulate and the converters produce.
+struct Recording {
+  std::vector<PoseRecord> poses;
+  std::vector<RangeRecord> ranges;
+  std::map<int, eval::AnchorTruth> anchors;
+};
+
 // Poses in file order; time must increase strictly per tag.
 std::vector<PoseRecord> ReadPoses(std::istream& in, const std::string& source);
 // Ranges in non-decreasing time; negative ranges are an error.

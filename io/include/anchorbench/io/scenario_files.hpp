@@ -1,12 +1,12 @@
 #pragma once
 
-#include <filesystem>
 #include <map>
 #include <ostream>
 #include <span>
 
 #include "anchorbench/eval/attempt_evaluation.hpp"
 #include "anchorbench/io/recorded_data.hpp"
+#include "anchorbench/io/result_folder.hpp"
 #include "anchorbench/sim/scenario.hpp"
 
 namespace anchorbench::io {
@@ -18,13 +18,14 @@ void WriteRanges(std::ostream& out, std::span<const RangeRecord> ranges);
 // The bias column appears when at least one anchor has a bias.
 void WriteAnchors(std::ostream& out, const std::map<int, eval::AnchorTruth>& anchors);
 
-// poses.csv, ranges.csv and anchors.csv into `folder` (created if needed), each file atomically.
-void WriteRecordingFiles(const std::filesystem::path& folder, std::span<const PoseRecord> poses,
-                         std::span<const RangeRecord> ranges, const std::map<int, eval::AnchorTruth>& anchors);
+// poses.csv, ranges.csv and anchors.csv into the folder.
+void WriteRecording(ResultFolder& folder, const Recording& recording);
+// The same as a result folder of its own, whole or absent (ResultFolder: `overwrite`, `inputs`).
+void WriteRecordingFolder(const std::filesystem::path& folder, const Recording& recording, bool overwrite,
+                          const std::vector<std::filesystem::path>& inputs);
 
-// Writes one realization as poses.csv (the *reported* tag positions, i.e. with sigma_position_m
-// noise: what a robot's navigation would log), ranges.csv and anchors.csv (truth, with bias) into
-// `folder`, each file atomically. The folder is created if needed.
-void WriteScenarioFiles(const sim::Scenario& scenario, const std::filesystem::path& folder);
+// One realization as a recording: the *reported* tag positions (with sigma_position_m noise: what
+// a robot's navigation would log), the ranges, and the truth (with bias).
+Recording RecordingOf(const sim::Scenario& scenario);
 
 }  // namespace anchorbench::io

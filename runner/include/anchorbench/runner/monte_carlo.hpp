@@ -11,8 +11,17 @@
 
 namespace anchorbench::runner {
 
-// The thread count for a request: `requested` if > 0, else OMP_NUM_THREADS if set, else every core.
+// The thread count for a request: `requested` if > 0, else OMP_NUM_THREADS if set, else every
+// core. At most kThreadsPerCore x the cores (more only adds overhead, and thousands of threads
+// exhaust memory); beyond, or an OMP_NUM_THREADS that is not a count, is an io::InputError.
+constexpr int kThreadsPerCore = 8;
 int ResolveThreads(int requested);
+
+// The attempts a run may hold in memory until it writes them (~0.5 KB each): 1e7, ~5 GB.
+constexpr double kMaxAttemptsPerRun = 1e7;
+// Refuses (io::InputError) a config whose rows x realizations x anchors x triggers exceed it,
+// before any work.
+void CheckWork(const ExperimentConfig& config);
 
 struct MonteCarloOptions {
   int threads = 1;

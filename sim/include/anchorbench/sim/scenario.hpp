@@ -22,6 +22,12 @@ struct ScenarioOptions {
   // Random sub-streams are keyed (tag << 16 | anchor id) in 24 bits (RandomStream): with at most
   // kMaxTags tags and kMaxAnchors anchors (environment.hpp) the keys stay distinct.
   static constexpr int kMaxTags = 16;
+  // The work one realization may imply, checked before any is done: tag positions (epochs x
+  // tags, ~100 bytes each) and range slots (epochs x tags x anchors: every range the run could
+  // produce, ~100 bytes each in the scenario and the runner's samples). 1e7 and 2e7 keep one
+  // realization within ~1 and ~2 GB; Table I uses 2e3 epochs and 6e4 slots.
+  static constexpr double kMaxTagEpochs = 1e7;
+  static constexpr double kMaxRangeSlots = 2e7;
 
   EnvironmentKind environment = EnvironmentKind::kTunnel;
   // Tags at rigid offsets in the body frame (x forward along the direction of travel, y left,
@@ -33,6 +39,10 @@ struct ScenarioOptions {
   RangeModelOptions ranging;
 
   bool IsValid(std::string* why) const;
+  // The most epochs a realization can have: the tunnel at its slowest speed, or the hall's
+  // duration, times the rate. A double: it may be astronomically large before validation.
+  double MaxEpochs() const;
+  int NumAnchors() const { return environment == EnvironmentKind::kTunnel ? tunnel.num_anchors : hall.num_anchors; }
 };
 
 struct SimAnchor {

@@ -23,14 +23,29 @@ inline sim::RandomStream TestStream(std::uint64_t realization) {
   return sim::RandomStream(12345, realization, sim::kFirstFreeStreamId);
 }
 
+// A vector of three draws, z first, then y, then x, each sequenced: draws written as the three
+// arguments of one constructor would come in an order the compiler chooses (the tests' data were
+// first made by GCC, which evaluates arguments right to left).
+template <typename Draw>
+Eigen::Vector3d Draw3(Draw draw) {
+  const double z = draw(2);
+  const double y = draw(1);
+  const double x = draw(0);
+  return Eigen::Vector3d(x, y, z);
+}
+
+// Uniform in the box [low, high] per axis.
+inline Eigen::Vector3d UniformIn(sim::RandomStream& rng, const Eigen::Vector3d& low, const Eigen::Vector3d& high) {
+  return Draw3([&](int axis) { return rng.Uniform(low[axis], high[axis]); });
+}
+
 // n tag positions uniformly in a box of half-size `spread_m` around `center`, ranges by Eq. (1)
 // with bias and Gaussian noise.
 inline AnchorData BoxData(sim::RandomStream& rng, int n, const Eigen::Vector3d& p_anchor,
                           const Eigen::Vector3d& center, double spread_m, double bias_m, double sigma_m) {
   AnchorData data{p_anchor, bias_m, {}, {}};
   for (int k = 0; k < n; ++k) {
-    const Eigen::Vector3d p = center + spread_m * Eigen::Vector3d(rng.Uniform(-1, 1), rng.Uniform(-1, 1),
-                                                                   rng.Uniform(-1, 1));
+    const Eigen::Vector3d p = center + spread_m * UniformIn(rng, -Eigen::Vector3d::Ones(), Eigen::Vector3d::Ones());
     data.p_world_tag.push_back(p);
     data.range_m.push_back((p - p_anchor).norm() + bias_m + sigma_m * rng.Normal());
   }

@@ -1,0 +1,24 @@
+// libFuzzer harness for the CSV readers: the first byte picks poses.csv, ranges.csv or
+// anchors.csv, the rest is the file. A reader must return records or throw one io::InputError;
+// anything else (a crash, a leak, another exception, undefined behaviour) is a finding.
+#include <cstddef>
+#include <cstdint>
+#include <sstream>
+#include <string>
+
+#include "anchorbench/io/input_error.hpp"
+#include "anchorbench/io/recorded_data.hpp"
+
+extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
+  if (size == 0) return 0;
+  std::istringstream in(std::string(reinterpret_cast<const char*>(data) + 1, size - 1));
+  try {
+    switch (data[0] % 3) {
+      case 0: anchorbench::io::ReadPoses(in, "poses.csv"); break;
+      case 1: anchorbench::io::ReadRanges(in, "ranges.csv"); break;
+      default: anchorbench::io::ReadAnchors(in, "anchors.csv"); break;
+    }
+  } catch (const anchorbench::io::InputError&) {
+  }
+  return 0;
+}

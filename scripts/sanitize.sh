@@ -1,0 +1,47 @@
+#!/usr/bin/env bash
+# The sanitizer job of the test command (README): builds everything but the benchmarks with clang,
+# AddressSanitizer and UndefinedBehaviorSanitizer (float-cast-overflow included) into
+# build-asan/, runs every unit test and the command-line tests there, then runs each libFuzzer
+# harness for FUZZ_SECONDS (default 30) from the committed seed corpus. Any sanitizer report, leak,
+# crash or exception other than the project's InputError fails it.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+bash scripts/setup.sh
+fuzz_seconds=${FUZZ_SECONDS:-30}
+CC=clang CXX=clang++ cmake -S . -B build-asan -DCMAKE_BUILD_TYPE=RelWithDebInfo -DANCHORBENCH_SANITIZE=ON \
+  -DANCHORBENCH_FUZZ=ON -DANCHORBENCH_BUILD_BENCHMARKS=OFF >/dev/null
+cmake --build build-asan -j"$(nproc)"
+
+export ASAN_OPTIONS=detect_leaks=1:abort_on_error=1:strict_string_checks=1
+export UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1
+# Every test but the fault test (kill -9 and tmpfs: about the file system, not memory; it runs
+# in the Release suite).
+ctest --test-dir build-asan --output-on-failure -j"$(nproc)" -E "^cli\.faults$"
+
+for harness in csv config; do
+  corpus=$(mktemp -d)  # new inputs go here, not into the committed corpus
+  log=$(mktemp)
+  if ! "build-asan/fuzz/fuzz_$harness" -max_total_time="$fuzz_seconds" -max_len=4096 -rss_limit_mb=2048 -timeout=10 \
+    -artifact_prefix=build-asan/ "$corpus" "fuzz/corpus/$harness" >"$log" 2>&1; then
+    tail -40 "$log"
+    echo "fuzz_$harness: FAILED (the input that broke it is in build-asan/)" >&2
+    exit 1
+  fi
+  runs=$(grep -oE "Done [0-9]+ runs in [0-9]+ second" "$log" | grep -oE "[0-9]+" | head -1)
+  echo "fuzz_$harness: $runs executions in ${fuzz_seconds} s ($((runs / fuzz_seconds)) exec/s), no crash, no leak"
+  rm -rf "$corpus" "$log"
+done
+
+# Mutated configs, CSV files and command lines against the sanitizer build: exit 0 or one line and
+# exit 2, never a crash.
+/usr/bin/python3 scripts/mutate_inputs.py build-asan/app/anchorbench "${MUTATION_CASES:-300}" 1
+
+# The same bytes from another compiler: clang (with sanitizers) against the Release build (g++).
+if [ -x build/app/anchorbench ]; then
+  folder=$(mktemp -d)
+  build-asan/app/anchorbench run configs/table1.yaml --realizations 3 --out "$folder/clang" --quiet
+  build/app/anchorbench run configs/table1.yaml --realizations 3 --out "$folder/gcc" --quiet
+  cmp "$folder/clang/attempts.csv" "$folder/gcc/attempts.csv"
+  echo "Table I (3 realizations): clang and g++ builds write the same attempts.csv"
+  rm -rf "$folder"
+fi
