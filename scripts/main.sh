@@ -3,7 +3,7 @@
 # in results/: first the paper's Table I (results/table1/, within a minute of a fresh checkout on
 # 2 cores), then the threshold sweeps, the PDOP study, the halls, the stress tests (every solver x
 # filter x trigger: the slowest part, ~5 minutes), all figures and the replays of the real Hanyang
-# recordings.
+# recordings, and last the benchmarks (results/benchmarks/: timings, which differ from run to run).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 bash scripts/build.sh anchorbench
@@ -19,3 +19,5 @@ for sweep in stress stress_ransac; do
 done
 bash scripts/plots.sh
 bash scripts/hanyang.sh   # the real recordings in ../shared, if present
+bash scripts/benchmarks.sh
+/usr/bin/python3 scripts/docs_tables.py   # the docs' tables of these results

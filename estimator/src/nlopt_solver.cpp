@@ -8,7 +8,7 @@
 
 #include "anchorbench/estimator/ls_solver.hpp"
 #include "anchorbench/estimator/nls_solver.hpp"
-#include "anchorbench/estimator/range_residual.hpp"
+#include "residual_arrays.hpp"
 
 namespace anchorbench::estimator {
 namespace {
@@ -28,18 +28,15 @@ constexpr double kRelativeStepForGradient = 1e-6;  // central differences for gr
 
 using Theta = std::vector<double>;  // (x, y, z, gamma), as NLopt takes it
 
-// The robust cost of Eq. (12) at a fixed kernel shape alpha, over theta = x[0..3].
+// The robust cost of Eq. (12) at a fixed kernel shape alpha, over theta = x[0..3], evaluated on
+// all residuals at once (the arrays are reused from call to call).
 struct Problem {
-  std::span<const Eigen::Vector3d> p;
-  std::span<const double> d;
+  const internal::SampleArrays& samples;
   double c;
   double alpha;
 
   double Objective(const double* x) const {
-    const Eigen::Vector3d anchor(x[0], x[1], x[2]);
-    double sum_rho = 0.0;
-    for (std::size_t k = 0; k < d.size(); ++k) sum_rho += Rho(RangeResidual(anchor, x[3], p[k], d[k]) / c, alpha);
-    return sum_rho;
+    return internal::Pass(samples, Eigen::Vector4d(x[0], x[1], x[2], x[3]), c, {alpha, true, false, nullptr}).cost;
   }
 };
 
@@ -62,16 +59,13 @@ double Evaluate(unsigned n, const double* x, double* gradient, void* data) {
 
 // The alpha step: the shape that best explains the residuals at theta (as lm_adaptive).
 double SelectAlpha(AlphaSelector& selector, const Problem& problem, const Theta& x, std::optional<double> previous) {
-  selector.Clear();
-  const Eigen::Vector3d anchor(x[0], x[1], x[2]);
-  for (std::size_t k = 0; k < problem.d.size(); ++k) {
-    selector.Add(RangeResidual(anchor, x[3], problem.p[k], problem.d[k]) / problem.c);
-  }
+  internal::Pass(problem.samples, Eigen::Vector4d(x[0], x[1], x[2], x[3]), problem.c, {2.0, false, false, &selector});
   return selector.Select(previous);
 }
 
 // The theta step: the NLopt algorithm on the cost at a fixed alpha, inside the box, from x.
-void MinimizeTheta(int algorithm, const Problem& problem, const Theta& lower, const Theta& upper, Theta& x) {
+void MinimizeTheta(int algorithm, Problem& problem, const Theta& lower, const Theta& upper, Theta& x) {
+  // NLopt takes a non-const pointer to the problem; the objective only reads it.
   try {
     nlopt::opt optimizer(static_cast<nlopt::algorithm>(algorithm), 4);
     nlopt::opt local(nlopt::LN_BOBYQA, 4);  // for the algorithms that need a local one (MLSL, AUGLAG)
@@ -79,7 +73,7 @@ void MinimizeTheta(int algorithm, const Problem& problem, const Theta& lower, co
     optimizer.set_local_optimizer(local);
     optimizer.set_lower_bounds(lower);
     optimizer.set_upper_bounds(upper);
-    optimizer.set_min_objective(Evaluate, const_cast<Problem*>(&problem));
+    optimizer.set_min_objective(Evaluate, &problem);
     optimizer.set_initial_step(std::vector<double>(kFirstStep.begin(), kFirstStep.end()));
     optimizer.set_xtol_rel(kRelativeXTolerance);
     optimizer.set_ftol_rel(kRelativeFTolerance);
@@ -169,7 +163,8 @@ SolveResult NloptSolver::Solve(std::span<const Eigen::Vector3d> p_world_tag, std
     lower[i] = x[i] - half[i];
     upper[i] = x[i] + half[i];
   }
-  Problem problem{p_world_tag, range_m, options_.nls.kernel_scale_m, 2.0};
+  const internal::SampleArrays samples(p_world_tag, range_m);
+  Problem problem{samples, options_.nls.kernel_scale_m, 2.0};
   AlphaSelector selector(table_);
   SolveStatus status = SolveStatus::kMaxIterations;
   int alternation = 0;

@@ -1,11 +1,13 @@
 #include "anchorbench/estimator/nls_solver.hpp"
 
 #include <cmath>
+#include <limits>
+#include <utility>
 #include <optional>
 
-#include "anchorbench/estimator/range_residual.hpp"
 #include "anchorbench/estimator/solver.hpp"
 #include "numerics.hpp"
+#include "residual_arrays.hpp"
 
 namespace anchorbench::estimator {
 namespace {
@@ -24,39 +26,29 @@ constexpr double kMinDiagonal = 1e-12;
 
 using Vector4 = Eigen::Vector4d;
 
-struct NormalEquations {
-  Eigen::Matrix4d information = Eigen::Matrix4d::Zero();  // sum w J J^T
-  Vector4 gradient = Vector4::Zero();                     // sum w J r
-  double cost = 0.0;                                      // sum rho(r / c)
-  double weighted_squares = 0.0;                          // sum w r^2
-};
-
-NormalEquations BuildNormalEquations(std::span<const Eigen::Vector3d> p, std::span<const double> d,
-                                     const Vector4& theta, double alpha, double c) {
-  NormalEquations eq;
-  Vector4 jacobian;
-  for (std::size_t k = 0; k < d.size(); ++k) {
-    const double r = RangeResidual(theta, p[k], d[k], &jacobian);
-    const KernelValue kernel = EvaluateKernel(r / c, alpha);
-    eq.information.noalias() += kernel.weight * jacobian * jacobian.transpose();
-    eq.gradient += (kernel.weight * r) * jacobian;
-    eq.cost += kernel.rho;
-    eq.weighted_squares += kernel.weight * r * r;
+// The summary of a refined estimate from its normal equations (see SummarizeSolution).
+SolveResult Summary(const Vector4& theta, double alpha, const internal::PassResult& eq, std::size_t n,
+                    SolveStatus status, int iterations) {
+  SolveResult result;
+  if (!theta.allFinite() || !eq.information.allFinite() || !std::isfinite(eq.cost)) {
+    result.status = SolveStatus::kNumericalFailure;
+    return result;
   }
-  return eq;
-}
-
-// Robust cost at theta; also fills the alpha selector with the residuals, if one is given.
-double Cost(std::span<const Eigen::Vector3d> p, std::span<const double> d, const Vector4& theta,
-            double alpha, double c, AlphaSelector* selector) {
-  if (selector) selector->Clear();
-  double cost = 0.0;
-  for (std::size_t k = 0; k < d.size(); ++k) {
-    const double x = RangeResidual(theta.head<3>(), theta(3), p[k], d[k]) / c;
-    cost += Rho(x, alpha);
-    if (selector) selector->Add(x);
+  result.p_world_anchor = theta.head<3>();
+  result.bias_m = theta(3);
+  result.alpha = alpha;
+  result.iterations = iterations;
+  result.final_cost = eq.cost;
+  result.status = status;
+  Eigen::Matrix4d information_inverse;
+  if (!internal::InvertNormalMatrix(eq.information, &information_inverse)) {
+    result.status = SolveStatus::kDegenerateGeometry;
+    return result;
   }
-  return cost;
+  // For alpha = 2 this is the usual sigma^2 (J^T J)^-1.
+  const double s2 = eq.weighted_squares / static_cast<double>(n - 4);
+  result.covariance = s2 * information_inverse;
+  return result;
 }
 
 }  // namespace
@@ -106,24 +98,35 @@ NlsSolver::NlsSolver(const NlsOptions& options, std::shared_ptr<const LogPartiti
   }
 }
 
-NlsSolver::Stage NlsSolver::Refine(std::span<const Eigen::Vector3d> p, std::span<const double> d,
-                                   const Eigen::Vector4d& theta_initial, std::optional<double> fixed_alpha,
-                                   double step_tolerance_m) const {
+NlsSolver::Stage NlsSolver::Refine(const internal::SampleArrays& samples, const Eigen::Vector4d& theta_initial,
+                                   std::optional<double> fixed_alpha, double step_tolerance_m) const {
+  using internal::Pass;
   const bool adaptive = !fixed_alpha.has_value();
   const double c = options_.kernel_scale_m;
-  std::optional<AlphaSelector> selector;
-  if (adaptive) selector.emplace(table_);
-  AlphaSelector* histogram = adaptive ? &*selector : nullptr;
+  // The alternation keeps the histogram of the accepted residuals; candidates fill their own.
+  std::optional<AlphaSelector> selector, candidate_histogram;
+  if (adaptive) {
+    selector.emplace(table_);
+    candidate_histogram.emplace(table_);
+  }
 
   Stage stage{theta_initial, fixed_alpha.value_or(2.0), 0, SolveStatus::kMaxIterations};
   double damping = options_.initial_damping;
-  Cost(p, d, stage.theta, stage.alpha, c, histogram);
+  // One pass per LM iteration in the steady state: a candidate step's pass sums its cost, its
+  // normal equations and (adaptive) its residual histogram, so an accepted step's pass serves the
+  // next iteration. The adaptive alternation re-sums the equations only when the alpha step moves
+  // alpha by alpha_tolerance or more (ours: a smaller move is below what convergence resolves, and
+  // keeping the shape spares a second pass per iteration).
+  internal::PassResult eq = Pass(samples, stage.theta, c, {stage.alpha, true, true, adaptive ? &*selector : nullptr});
   while (stage.iterations < options_.max_iterations) {
     const double previous_alpha = stage.alpha;
-    if (adaptive) {  // alpha step of the alternation
-      stage.alpha = selector->Select(stage.iterations == 0 ? std::nullopt : std::optional<double>(stage.alpha));
+    if (adaptive) {  // Eq. (12): the alpha step of the alternation
+      const double alpha = selector->Select(stage.iterations == 0 ? std::nullopt : std::optional<double>(stage.alpha));
+      if (stage.iterations == 0 || std::abs(alpha - stage.alpha) >= options_.alpha_tolerance) {
+        stage.alpha = alpha;
+        eq = Pass(samples, stage.theta, c, {stage.alpha, true, true, nullptr});
+      }
     }
-    const NormalEquations eq = BuildNormalEquations(p, d, stage.theta, stage.alpha, c);
     if (!std::isfinite(eq.cost) || !eq.information.allFinite()) {
       stage.status = SolveStatus::kNumericalFailure;
       return stage;
@@ -136,9 +139,13 @@ NlsSolver::Stage NlsSolver::Refine(std::span<const Eigen::Vector3d> p, std::span
       damped.diagonal() += damping * eq.information.diagonal().cwiseMax(kMinDiagonal);
       delta = damped.ldlt().solve(-eq.gradient);
       if (!delta.allFinite()) break;
-      if (Cost(p, d, stage.theta + delta, stage.alpha, c, histogram) <= eq.cost) {
+      internal::PassResult candidate = Pass(samples, stage.theta + delta, c,
+                                            {stage.alpha, true, true, adaptive ? &*candidate_histogram : nullptr});
+      if (candidate.cost <= eq.cost) {
         accepted = true;
         stage.theta += delta;
+        eq = candidate;
+        if (adaptive) std::swap(*selector, *candidate_histogram);
         damping = std::max(damping * kDampingDecrease, kMinDampingAfterSuccess);
       } else {
         damping = std::max(damping * kDampingIncrease, kMinDampingAfterFailure);
@@ -155,6 +162,9 @@ NlsSolver::Stage NlsSolver::Refine(std::span<const Eigen::Vector3d> p, std::span
       break;
     }
   }
+  stage.information = eq.information;  // the summary's: at the final theta and alpha
+  stage.cost = eq.cost;
+  stage.weighted_squares = eq.weighted_squares;
   return stage;
 }
 
@@ -169,17 +179,18 @@ SolveResult NlsSolver::Solve(std::span<const Eigen::Vector3d> p_world_tag, std::
   Vector4 theta;
   theta << p_world_anchor_initial, bias_initial_m;
   Stage stage{theta, 2.0, 0, SolveStatus::kConverged};
+  const internal::SampleArrays samples(p_world_tag, range_m);
   if (options_.kernel == KernelMode::kL2) {
-    stage = Refine(p_world_tag, range_m, theta, 2.0, options_.step_tolerance_m);
+    stage = Refine(samples, theta, 2.0, options_.step_tolerance_m);
   } else {
     if (options_.l2_warm_start) {  // only into the basin: 10x the step tolerance
-      stage = Refine(p_world_tag, range_m, theta, 2.0, 10.0 * options_.step_tolerance_m);
+      stage = Refine(samples, theta, 2.0, 10.0 * options_.step_tolerance_m);
     }
     if (stage.status != SolveStatus::kNumericalFailure) {
       const int used = stage.iterations;
       const std::optional<double> alpha =
           options_.kernel == KernelMode::kFixed ? std::optional<double>(options_.fixed_alpha) : std::nullopt;
-      stage = Refine(p_world_tag, range_m, stage.theta, alpha, options_.step_tolerance_m);
+      stage = Refine(samples, stage.theta, alpha, options_.step_tolerance_m);
       stage.iterations += used;
     }
   }
@@ -187,34 +198,19 @@ SolveResult NlsSolver::Solve(std::span<const Eigen::Vector3d> p_world_tag, std::
     result.status = stage.status;
     return result;
   }
-  return SummarizeSolution(p_world_tag, range_m, stage.theta, stage.alpha, options_.kernel_scale_m, stage.status,
-                           stage.iterations);
+  internal::PassResult equations;
+  equations.information = stage.information;
+  equations.cost = stage.cost;
+  equations.weighted_squares = stage.weighted_squares;
+  return Summary(stage.theta, stage.alpha, equations, n, stage.status, stage.iterations);
 }
 
 SolveResult SummarizeSolution(std::span<const Eigen::Vector3d> p_world_tag, std::span<const double> range_m,
                               const Eigen::Vector4d& theta, double alpha, double kernel_scale_m, SolveStatus status,
                               int iterations) {
-  SolveResult result;
-  const NormalEquations eq = BuildNormalEquations(p_world_tag, range_m, theta, alpha, kernel_scale_m);
-  if (!theta.allFinite() || !eq.information.allFinite() || !std::isfinite(eq.cost)) {
-    result.status = SolveStatus::kNumericalFailure;
-    return result;
-  }
-  result.p_world_anchor = theta.head<3>();
-  result.bias_m = theta(3);
-  result.alpha = alpha;
-  result.iterations = iterations;
-  result.final_cost = eq.cost;
-  result.status = status;
-  Eigen::Matrix4d information_inverse;
-  if (!internal::InvertNormalMatrix(eq.information, &information_inverse)) {
-    result.status = SolveStatus::kDegenerateGeometry;
-    return result;
-  }
-  // For alpha = 2 this is the usual sigma^2 (J^T J)^-1.
-  const double s2 = eq.weighted_squares / static_cast<double>(range_m.size() - 4);
-  result.covariance = s2 * information_inverse;
-  return result;
+  const internal::PassResult equations =
+      internal::Pass(internal::SampleArrays(p_world_tag, range_m), theta, kernel_scale_m, {alpha, true, true, nullptr});
+  return Summary(theta, alpha, equations, range_m.size(), status, iterations);
 }
 
 }  // namespace anchorbench::estimator

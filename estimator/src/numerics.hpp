@@ -11,10 +11,6 @@ namespace anchorbench::estimator::internal {
 // with none) would turn round-off into metres. Used by every solver's normal equations.
 constexpr double kMinPivotRatio = 1e-12;
 
-// PDOP (Eq. (2)) is +infinity when det(I) <= this times trace(I)^3: the same idea for the 3x3
-// information matrices of the PDOPs, which are inverted in closed form, not factorized.
-constexpr double kMinRelativeDeterminant = 1e-13;
-
 // Whether the factorization of a normal matrix is usable (see kMinPivotRatio).
 template <typename Matrix>
 bool IsWellConditioned(const Eigen::LDLT<Matrix>& ldlt) {

@@ -7,7 +7,7 @@
 #include <random>
 #include <vector>
 
-#include "anchorbench/estimator/range_residual.hpp"
+#include "residual_arrays.hpp"
 
 namespace anchorbench::estimator {
 
@@ -50,8 +50,23 @@ SolveResult RansacSolver::Solve(std::span<const Eigen::Vector3d> p, std::span<co
   std::iota(index.begin(), index.end(), std::size_t{0});
   std::vector<Eigen::Vector3d> subset_p(s), inlier_p;
   std::vector<double> subset_d(s), inlier_d;
-  auto is_inlier = [&](std::size_t k, const SolveResult& fit) {
-    return std::abs(RangeResidual(fit.p_world_anchor, fit.bias_m, p[k], d[k])) < options_.inlier_threshold_m;
+  const internal::SampleArrays samples(p, d);
+  internal::ChunkResiduals residuals;
+  // Consensus of a fit: whether each sample's residual is within the threshold, a chunk at a time.
+  std::vector<char> inlier(n);
+  auto inliers_of = [&](const SolveResult& fit) {
+    const Eigen::Vector4d theta(fit.p_world_anchor.x(), fit.p_world_anchor.y(), fit.p_world_anchor.z(), fit.bias_m);
+    std::size_t count = 0;
+    for (Eigen::Index start = 0; start < samples.size(); start += kChunk) {
+      const Eigen::Index size = std::min<Eigen::Index>(kChunk, samples.size() - start);
+      residuals.At(samples, start, size, theta, false);
+      for (Eigen::Index k = 0; k < size; ++k) {
+        const bool within = std::abs(residuals.r[k]) < options_.inlier_threshold_m;
+        inlier[static_cast<std::size_t>(start + k)] = within;
+        count += within;
+      }
+    }
+    return count;
   };
   std::size_t best_inliers = 0;
   SolveResult best;
@@ -66,8 +81,7 @@ SolveResult RansacSolver::Solve(std::span<const Eigen::Vector3d> p, std::span<co
     }
     const SolveResult candidate = inner_->Solve(subset_p, subset_d);
     if (!Succeeded(candidate.status)) continue;
-    std::size_t inliers = 0;
-    for (std::size_t k = 0; k < n; ++k) inliers += is_inlier(k, candidate);
+    const std::size_t inliers = inliers_of(candidate);
     if (inliers > best_inliers) {
       best_inliers = inliers;
       best = candidate;
@@ -77,8 +91,9 @@ SolveResult RansacSolver::Solve(std::span<const Eigen::Vector3d> p, std::span<co
     best.status = best_inliers == 0 ? SolveStatus::kNoConvergence : SolveStatus::kTooFewSamples;
     return best;
   }
+  inliers_of(best);
   for (std::size_t k = 0; k < n; ++k) {
-    if (is_inlier(k, best)) {
+    if (inlier[k]) {
       inlier_p.push_back(p[k]);
       inlier_d.push_back(d[k]);
     }

@@ -188,12 +188,25 @@ void WriteTimingCsv(std::ostream& out, const std::vector<MethodSummary>& summari
   for (const MethodSummary& s : summaries) out << TimingCsvFields(s, rows) << '\n';
 }
 
+#ifdef __clang__
+constexpr const char* kCompiler = "clang " __clang_version__;
+#else
+constexpr const char* kCompiler = "g++ " __VERSION__;
+#endif
+// Results are bit-identical across machines only within one of these (CMake's ANCHORBENCH_NATIVE).
+#ifdef ANCHORBENCH_NATIVE_BUILD
+constexpr const char* kInstructionSet = "native (-march=native: bytes differ from default builds)";
+#else
+constexpr const char* kInstructionSet = "default";
+#endif
+
 std::string ManifestJson(const runner::ExperimentConfig& config, const RunInfo& info) {
   std::ostringstream json;
   json << "{\n  \"config_file\": " << JsonString(info.config_path) << ",\n  \"seed\": " << config.seed
        << ",\n  \"realizations\": " << config.realizations << ",\n  \"threads\": " << info.threads
        << ",\n  \"git_revision\": " << JsonString(info.revision) << ",\n  \"compiler\": "
-       << JsonString(std::string("g++ ") + __VERSION__) << ",\n  \"wall_time_s\": " << FormatFixed(info.wall_time_s, 3)
+       << JsonString(kCompiler) << ",\n  \"instruction_set\": " << JsonString(kInstructionSet)
+       << ",\n  \"wall_time_s\": " << FormatFixed(info.wall_time_s, 3)
        << ",\n  \"command_line\": " << JsonList(info.command_line);
   if (!info.sweep_axes.empty()) json << ",\n  \"sweep_axes\": " << JsonList(info.sweep_axes);
   json << ",\n  \"resolved_config\": " << info.resolved_config_json << "\n}\n";

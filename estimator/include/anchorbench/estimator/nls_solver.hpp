@@ -10,6 +10,9 @@
 #include "anchorbench/estimator/solve_result.hpp"
 
 namespace anchorbench::estimator {
+namespace internal {
+struct SampleArrays;
+}  // namespace internal
 
 enum class KernelMode {
   kL2,        // alpha fixed at 2: plain least squares, Eq. (11)
@@ -70,10 +73,15 @@ class NlsSolver {
     double alpha;
     int iterations;
     SolveStatus status;
+    // The normal equations at (theta, alpha), from the stage's last pass: the summary needs no
+    // pass of its own.
+    Eigen::Matrix4d information = Eigen::Matrix4d::Zero();
+    double cost = 0.0;
+    double weighted_squares = 0.0;
   };
   // LM from theta with the kernel shape fixed at *fixed_alpha, or adaptive when it is empty.
-  Stage Refine(std::span<const Eigen::Vector3d> p, std::span<const double> d, const Eigen::Vector4d& theta,
-               std::optional<double> fixed_alpha, double step_tolerance_m) const;
+  Stage Refine(const internal::SampleArrays& samples, const Eigen::Vector4d& theta, std::optional<double> fixed_alpha,
+               double step_tolerance_m) const;
 
   NlsOptions options_;
   std::shared_ptr<const LogPartitionTable> table_;  // only for KernelMode::kAdaptive

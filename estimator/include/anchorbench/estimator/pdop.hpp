@@ -1,13 +1,39 @@
 #pragma once
 
+#include <cmath>
+#include <limits>
 #include <span>
 
 #include <Eigen/Core>
 
 namespace anchorbench::estimator {
 
-// sqrt(tr(I^-1)) for a 3x3 information matrix; +infinity when it is numerically singular.
-double PdopFromInformation(const Eigen::Matrix3d& information);
+// PDOP is +infinity when det(I) <= this times trace(I)^3: a direction with almost no information
+// (e.g. collinear tag positions leave one with none) would turn round-off into metres. The idea
+// of the solvers' kMinPivotRatio, for 3x3 matrices inverted in closed form, not factorized.
+inline constexpr double kMinRelativeDeterminant = 1e-13;
+
+// sqrt(tr(I^-1)) (Eq. (2)) for a symmetric 3x3 information matrix given by its upper triangle;
+// +infinity when it is numerically singular. Inline: the streaming PDOP calls it per sample.
+inline double PdopFromUpperTriangle(double m00, double m01, double m02, double m11, double m12,
+                                    double m22) {
+  constexpr double kInf = std::numeric_limits<double>::infinity();
+  // tr(I^-1) = (sum of the principal 2x2 minors) / det(I) for a symmetric 3x3 matrix.
+  const double minor_00 = m11 * m22 - m12 * m12;
+  const double minor_11 = m00 * m22 - m02 * m02;
+  const double minor_22 = m00 * m11 - m01 * m01;
+  const double det = m00 * minor_00 - m01 * (m01 * m22 - m12 * m02) + m02 * (m01 * m12 - m11 * m02);
+  const double trace = m00 + m11 + m22;
+  if (!(trace > 0.0) || !(det > kMinRelativeDeterminant * trace * trace * trace)) return kInf;
+  const double trace_of_inverse = (minor_00 + minor_11 + minor_22) / det;
+  if (!(trace_of_inverse > 0.0) || !(trace_of_inverse < kInf)) return kInf;
+  return std::sqrt(trace_of_inverse);
+}
+
+// The same for a full matrix; only its upper triangle is read.
+inline double PdopFromInformation(const Eigen::Matrix3d& m) {
+  return PdopFromUpperTriangle(m(0, 0), m(0, 1), m(0, 2), m(1, 1), m(1, 2), m(2, 2));
+}
 
 // Eq. (2)-(3): PDOP with rows (p_k - p_A)^T / d_k for a given anchor position and ranges.
 // With an estimated p_A this is the "LS PDOP" / "NLS PDOP" of Sec. IV-B.

@@ -7,9 +7,7 @@
 #include <span>
 #include <vector>
 
-namespace nlopt {
-class opt;
-}
+#include <Eigen/Core>
 
 namespace anchorbench::estimator {
 
@@ -28,6 +26,29 @@ struct KernelValue {
   double weight;
 };
 KernelValue EvaluateKernel(double x, double alpha);
+
+// Up to kChunk values in storage of their own (Eigen's fixed maximum size: no heap), small enough
+// that a chunk's arrays stay in the L1 cache: the unit of the vectorized passes over samples.
+constexpr int kChunk = 256;
+using Chunk = Eigen::Array<double, Eigen::Dynamic, 1, Eigen::ColMajor, kChunk, 1>;
+
+// The kernel on up to kChunk residuals at once, vectorized: Eigen's SIMD log and exp instead of
+// two libm calls per residual. Agrees with the scalar form to 1e-13 relative plus 1e-15 absolute
+// (base^(alpha/2) - 1 cancels in both; a test checks over alpha in [-10, 2] and residuals from
+// 1e-8 to 1e4).
+class KernelArrays {
+ public:
+  void Evaluate(const Chunk& x, double alpha);
+  const Chunk& rho() const { return rho_; }
+  const Chunk& weight() const { return weight_; }
+
+ private:
+  Chunk u_;         // x^2/|alpha-2|
+  Chunk base_;      // u + 1
+  Chunk log_base_;  // log1p(x^2/|alpha-2|)
+  Chunk rho_;
+  Chunk weight_;
+};
 
 // log Z~(alpha) with Z~(alpha) = integral of exp(-rho(x, alpha)) over |x| <= truncation: the
 // normalizer of the truncated density exp(-rho(r/c, alpha)) / (c Z~(alpha)) of Chebrolu et al.
@@ -67,38 +88,44 @@ class LogPartitionTables {
 // Chooses the kernel shape alpha in [alpha_min, 2] by minimizing the negative log-likelihood of
 // the residuals under the truncated density (Eq. (12); Chebrolu et al. 2021):
 //   NLL(alpha) = N log Z~(alpha) + sum_i rho(r_i / c, alpha)      (+ N log c, constant in alpha)
-// The residuals are summarized in kBins bins evenly spaced in log(1 + |x|) up to kMaxAbsX (larger
-// values share the last bin); each bin keeps its count and the mean of x^2, so one NLL evaluation
-// costs kBins kernel evaluations instead of N. The truncation only normalizes the density;
-// residuals beyond it still count with their rho.
+// The residuals are summarized in kBins bins of |x|: [0, 2^-6), then four per octave up to 2^10
+// (the exponent and the two leading mantissa bits of |x|: no log needed), and beyond. Each bin
+// keeps its count and the mean of x^2, so one NLL evaluation costs one kernel evaluation per
+// occupied bin instead of N. The truncation only normalizes the density; residuals beyond it
+// still count with their rho.
 class AlphaSelector {
  public:
-  static constexpr int kBins = 48;
-  static constexpr double kMaxAbsX = 1e3;
-  static constexpr double kAlphaTolerance = 1e-2;  // NLopt's x tolerance on alpha
+  static constexpr int kBins = 66;                 // [0, 2^-6), 64 quarter octaves, [2^10, inf)
+  static_assert(kBins <= kChunk, "the occupied bins are one chunk");
+  static constexpr double kAlphaTolerance = 1e-2;  // the search's tolerance on alpha
 
   explicit AlphaSelector(std::shared_ptr<const LogPartitionTable> table);
-  ~AlphaSelector();
-  AlphaSelector(const AlphaSelector&) = delete;
-  AlphaSelector& operator=(const AlphaSelector&) = delete;
 
   void Clear();
-  void Add(double x);  // one normalized residual r / c
-  // argmin NLL over [alpha_min, 2]: a coarse grid plus NLopt refinement, or, given the previous
-  // iteration's alpha, NLopt refinement from there. Not const: it sets the optimizer's bounds.
+  void Add(double x);            // one normalized residual r / c
+  void AddAll(const Chunk& x);   // many at once
+  // argmin NLL over [alpha_min, 2]: a coarse grid, then Brent's method around the best grid point;
+  // or, given the previous iteration's alpha, Brent's method around it. Not const: it evaluates
+  // the NLL (below).
   double Select(std::optional<double> previous_alpha = std::nullopt);
-  double Nll(double alpha) const;  // from the histogram: what Select minimizes
+  // From the histogram: what Select minimizes. Not const: it summarizes the bins on first use
+  // after a change (their root-mean-square residuals) and evaluates the kernel on them at once.
+  double Nll(double alpha);
   // NLL evaluated exactly on residuals, for tests.
   static double ExactNll(std::span<const double> x, double alpha, const LogPartitionTable& table);
+  static int BinOf(double x);  // the bin of a normalized residual
 
  private:
+  void Summarize();  // occupied_count_ and occupied_x_rms_ from the bins
+
   std::shared_ptr<const LogPartitionTable> table_;
-  // Built once per selector and reused by every Select (one per LM iteration); NLopt itself still
-  // allocates its workspace inside each optimize call.
-  std::unique_ptr<nlopt::opt> optimizer_;
   std::array<double, kBins> bin_count_{};
   std::array<double, kBins> bin_sum_x_squared_{};
   double total_count_ = 0.0;
+  bool summarized_ = false;
+  Chunk occupied_count_;  // the bins that hold residuals: their counts...
+  Chunk occupied_x_rms_;  // ...and the root mean square of their residuals
+  KernelArrays kernel_;
 };
 
 }  // namespace anchorbench::estimator

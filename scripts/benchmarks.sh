@@ -1,0 +1,47 @@
+#!/usr/bin/env bash
+# Runs the Google Benchmark programs and Table I on 1 and 2 threads, and writes results/benchmarks/
+# (or --out DIR): solvers.csv/.md (every registered solver and a plain Eigen dense LS on the same
+# samples, as ratios), micro.csv (the per-sample costs), table1_threads.csv (speed-up) and
+# machine.md (where it ran). Timings, not bytes: they differ from run to run, the ratios much less.
+#   bash scripts/benchmarks.sh [--out DIR] [--quick] [--build DIR]
+# --quick: a smoke run (numbers meaningless); --build DIR: use the programs built there, build nothing.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+out=results/benchmarks
+min_time=0.2
+repetitions=3
+realizations=
+build=
+while [ $# -gt 0 ]; do
+  case $1 in
+    --out) out=$2; shift 2 ;;
+    --quick) min_time=0.001; repetitions=1; realizations="--realizations 2"; shift ;;
+    --build) build=$2; shift 2 ;;
+    *) echo "benchmarks.sh: unknown option $1 (--out DIR, --quick, --build DIR)" >&2; exit 2 ;;
+  esac
+done
+benches="bench_compare bench_solver bench_pdop bench_filters bench_triggers bench_front_end"
+if [ -z "$build" ]; then
+  build=build
+  bash scripts/build.sh anchorbench $benches
+fi
+mkdir -p "$(dirname "$out")"
+staging=$(mktemp -d "$(dirname "$out")/.$(basename "$out").partial-XXXXXX")
+trap 'rm -rf "$staging"' EXIT
+
+for bench in $benches; do
+  program=$(find "$build" -name "$bench" -type f -perm -u+x | head -n 1)
+  "$program" --benchmark_min_time="$min_time" --benchmark_repetitions="$repetitions" \
+    --benchmark_report_aggregates_only=true --benchmark_format=json >"$staging/$bench.json"
+done
+for threads in 1 2; do
+  # shellcheck disable=SC2086  # $realizations is empty or two words
+  "$build/app/anchorbench" run configs/table1.yaml --threads "$threads" --quiet $realizations \
+    --out "$staging/table1_threads_$threads"
+done
+/usr/bin/python3 scripts/benchmark_tables.py "$staging"
+rm -rf "$staging"/*.json "$staging"/table1_threads_*
+rm -rf "$out"
+mv "$staging" "$out"
+trap - EXIT
+echo "benchmarks written to $out/"
