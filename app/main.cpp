@@ -82,14 +82,31 @@ void AddRecordingCommands(CLI::App& cli, CommandLine& c) {
 
   c.replay_cmd = cli.add_subcommand("replay", "Run the online initializers (estimator.triggers; by default the fixed "
                                               "window and the PDOP-gated one) on recorded data");
-  c.replay_cmd->add_option("--poses", c.replay.poses, "poses.csv: t,tag_id,x,y,z")->required();
-  c.replay_cmd->add_option("--ranges", c.replay.ranges, "ranges.csv: t,tag_id,anchor_id,range")->required();
+  c.replay_cmd->add_option("--poses", c.replay.poses, "poses.csv: t,tag_id,x,y,z (column aliases: docs/real_data.md)")
+      ->required();
+  c.replay_cmd->add_option("--ranges", c.replay.ranges,
+                           "ranges.csv: t,tag_id,anchor_id,range; several files (e.g. one per anchor) are merged by time")
+      ->required();
   c.replay_cmd->add_option("--anchors", c.replay.anchors, "anchors.csv: anchor_id,x,y,z[,bias] (truth, for errors)");
   c.replay_cmd->add_option("--config", c.replay.config, "Config whose 'estimator' section is used (default: defaults)");
   c.replay_cmd->add_option("--trace", c.replay.trace,
                            "Write one row per range: t,tag_id,anchor_id,range,accepted,n_accepted,pdop");
   c.replay_cmd->add_option("--out", c.replay.out, "Folder for estimates.csv");
   c.replay_cmd->add_flag("--overwrite", c.replay.overwrite, "Replace an existing --out folder or --trace file");
+  c.replay_cmd->add_option("--max-range-m", c.replay.policy.max_range_m,
+                           "Drop ranges above this as implausible (default 1000)")
+      ->check(CLI::Range(1e-3, 1e7));
+  c.replay_cmd->add_option("--repeated-poses", c.replay.repeated_poses,
+                           "Two poses of a tag at one time, different positions: error (default), first, average")
+      ->check(CLI::IsMember({"error", "first", "average"}));
+  c.replay_cmd->add_option("--out-of-order", c.replay.out_of_order,
+                           "A row older than one before it: error (default), drop, sort (within --sort-window-s)")
+      ->check(CLI::IsMember({"error", "drop", "sort"}));
+  c.replay_cmd->add_option("--sort-window-s", c.replay.policy.sort_window_s,
+                           "With --out-of-order sort: how late a row may come (default 1 s)")
+      ->check(CLI::Range(0.0, 3600.0));
+  c.replay_cmd->add_flag("--strict", c.replay.policy.strict, "Every row that would be dropped is an error instead");
+  c.replay_cmd->add_flag("--quiet", c.replay.quiet, "No progress line and no drop summary on stderr");
 
   c.convert_cmd = cli.add_subcommand(
       "convert-hanyang", "Convert a Hanyang outdoor UWB dataset case into poses.csv, ranges.csv, anchors.csv");

@@ -1,8 +1,9 @@
 #!/usr/bin/env bash
 # Runs the Google Benchmark programs and Table I on 1 and 2 threads, and writes results/benchmarks/
 # (or --out DIR): solvers.csv/.md (every registered solver and a plain Eigen dense LS on the same
-# samples, as ratios), micro.csv (the per-sample costs), table1_threads.csv (speed-up) and
-# machine.md (where it ran). Timings, not bytes: they differ from run to run, the ratios much less.
+# samples, as ratios), micro.csv (the per-sample costs), table1_threads.csv (speed-up),
+# replay.csv (replay throughput and peak memory on logs of 1e6 and 1e7 ranges) and machine.md
+# (where it ran). Timings, not bytes: they differ from run to run, the ratios much less.
 #   bash scripts/benchmarks.sh [--out DIR] [--quick] [--build DIR]
 # --quick: a smoke run (numbers meaningless); --build DIR: use the programs built there, build nothing.
 set -euo pipefail
@@ -11,11 +12,12 @@ out=results/benchmarks
 min_time=0.2
 repetitions=3
 realizations=
+replay_sizes="1e6 1e7"
 build=
 while [ $# -gt 0 ]; do
   case $1 in
     --out) out=$2; shift 2 ;;
-    --quick) min_time=0.001; repetitions=1; realizations="--realizations 2"; shift ;;
+    --quick) min_time=0.001; repetitions=1; realizations="--realizations 2"; replay_sizes="1e4 1e5"; shift ;;
     --build) build=$2; shift 2 ;;
     *) echo "benchmarks.sh: unknown option $1 (--out DIR, --quick, --build DIR)" >&2; exit 2 ;;
   esac
@@ -39,6 +41,8 @@ for threads in 1 2; do
   "$build/app/anchorbench" run configs/table1.yaml --threads "$threads" --quiet $realizations \
     --out "$staging/table1_threads_$threads"
 done
+# shellcheck disable=SC2086  # $replay_sizes is a list
+/usr/bin/python3 scripts/replay_throughput.py "$build/app/anchorbench" "$staging" $replay_sizes
 /usr/bin/python3 scripts/benchmark_tables.py "$staging"
 rm -rf "$staging"/*.json "$staging"/table1_threads_*
 rm -rf "$out"

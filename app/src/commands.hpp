@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "anchorbench/io/log_policy.hpp"
 #include "anchorbench/registry/components.hpp"
 
 namespace anchorbench::app {
@@ -29,8 +30,12 @@ struct SimulateArgs {
 int SimulateCommand(const SimulateArgs& args, const AppContext& app);
 
 struct ReplayArgs {
-  std::string poses, ranges, anchors, config, trace, out;
+  std::string poses, anchors, config, trace, out;
+  std::vector<std::string> ranges;  // one or more files, merged by time
+  io::LogPolicy policy;              // its enums set from the two names below
+  std::string repeated_poses = "error", out_of_order = "error";
   bool overwrite = false;
+  bool quiet = false;
 };
 int ReplayCommand(const ReplayArgs& args, const AppContext& app);
 

@@ -9,13 +9,16 @@ namespace anchorbench::app {
 // summary line at the end; nothing when quiet.
 class Progress {
  public:
-  Progress(std::string label, bool quiet);
-  void Update(int done, int total);
-  void Finish(int total);  // the closing line (both modes)
+  // `unit` names what is counted ("realizations"; "MB" for bytes read, shown in megabytes).
+  Progress(std::string label, bool quiet, std::string unit = "realizations");
+  void Update(long long done, long long total);
+  void Finish(long long total);  // the closing line (both modes)
   double elapsed_s() const;
 
  private:
   std::string label_;
+  std::string unit_;
+  double scale_;  // counted units per shown unit
   bool quiet_;
   bool terminal_;
   std::chrono::steady_clock::time_point start_;

@@ -4,21 +4,42 @@
 
 #include "anchorbench/config/load_config.hpp"
 #include "anchorbench/io/atomic_file.hpp"
+#include "anchorbench/io/log_reader.hpp"
 #include "anchorbench/io/recorded_data.hpp"
 #include "anchorbench/io/result_folder.hpp"
 #include "anchorbench/report/replay_report.hpp"
+#include "anchorbench/report/replay_summary.hpp"
 #include "anchorbench/runner/replay.hpp"
 #include "commands.hpp"
+#include "progress.hpp"
 
 namespace anchorbench::app {
 namespace {
 
 std::vector<std::filesystem::path> Inputs(const ReplayArgs& args) {
-  std::vector<std::filesystem::path> inputs = {args.poses, args.ranges};
+  std::vector<std::filesystem::path> inputs = {args.poses};
+  for (const std::string& ranges : args.ranges) inputs.emplace_back(ranges);
   for (const std::string& optional : {args.anchors, args.config}) {
     if (!optional.empty()) inputs.emplace_back(optional);
   }
   return inputs;
+}
+
+io::LogPolicy PolicyOf(const ReplayArgs& args) {
+  io::LogPolicy policy = args.policy;
+  policy.repeated_poses = io::RepeatedPosesFromName(args.repeated_poses);
+  policy.out_of_order = io::OutOfOrderFromName(args.out_of_order);
+  return policy;
+}
+
+// The first pass: every file read to the end under the policy, so that a malformed file or a
+// refused row ends the command before any output exists.
+io::LogSurvey Survey(const io::LogFiles& files, const io::LogPolicy& policy, bool quiet) {
+  Progress progress("replay: checking", quiet, "MB");
+  io::LogSurvey survey =
+      io::SurveyLog(files, policy, [&](std::uint64_t done, std::uint64_t total) { progress.Update(done, total); });
+  if (!quiet && progress.elapsed_s() > 1.0) progress.Finish(static_cast<long long>(survey.bytes));
+  return survey;
 }
 
 }  // namespace
@@ -26,12 +47,13 @@ std::vector<std::filesystem::path> Inputs(const ReplayArgs& args) {
 int ReplayCommand(const ReplayArgs& args, const AppContext& app) {
   runner::ExperimentConfig config;  // the defaults, unless --config names a file
   if (!args.config.empty()) config = config::LoadConfig(args.config, {}, app.parts);
-  const std::vector<io::PoseRecord> poses = io::LoadPoses(args.poses);
-  const std::vector<io::RangeRecord> ranges = io::LoadRanges(args.ranges);
+  const io::LogPolicy policy = PolicyOf(args);
+  const io::LogFiles files{args.poses, args.ranges};
+  const io::LogSurvey survey = Survey(files, policy, args.quiet);
   std::map<int, eval::AnchorTruth> truth;
   if (!args.anchors.empty()) truth = io::LoadAnchors(args.anchors);
   const std::map<int, eval::AnchorTruth>* known = args.anchors.empty() ? nullptr : &truth;
-  runner::CheckReplayable(ranges, known, config.estimator, app.parts);
+  runner::CheckReplayable(survey.anchor_ids, known, config.estimator, app.parts);
 
   // The outputs, before any work: never an input, never earlier results without --overwrite.
   std::unique_ptr<io::ResultFolder> out;
@@ -51,17 +73,29 @@ int ReplayCommand(const ReplayArgs& args, const AppContext& app) {
       report::WriteTraceRow(trace_file->stream(), r, fed);
     };
   }
+
+  // The second pass, streamed: one row at a time from the files into the front end.
+  report::ReplaySummary summary{files, policy, survey.pose_rows, survey.range_rows, {}, {}};
+  io::RecordedLog log(files, policy, survey.default_tag_id, summary.drops);
+  Progress progress("replay", args.quiet, "MB");
+  std::int64_t rows = 0;
+  const runner::LogSource source = [&](io::RecordedLog::Kind& kind, io::PoseRecord& pose, io::RangeRecord& range) {
+    if ((++rows & 0xffff) == 0) progress.Update(static_cast<long long>(log.bytes_read()), static_cast<long long>(survey.bytes));
+    return log.Next(kind, pose, range);
+  };
   const runner::ReplayResult result =
-      runner::Replay(poses, ranges, known, config.estimator, app.parts, config.seed, trace);
-  if (result.ranges_skipped > 0) {
-    std::cerr << args.ranges << ": " << result.ranges_skipped
-              << " ranges outside their tag's pose time span were skipped, never extrapolated (first at line "
-              << result.first_skipped_line << ")\n";
-  }
+      runner::Replay(source, files.ranges, known, config.estimator, app.parts, config.seed, trace);
+  if (progress.elapsed_s() > 1.0) progress.Finish(static_cast<long long>(survey.bytes));
+  summary.drops.Add(result.drops);
+  summary.samples_by_anchor = result.samples_by_anchor;
+
+  if (!args.quiet) report::PrintReplaySummary(std::cerr, summary);
   report::PrintEstimates(std::cout, result.attempts);
   if (trace_file) trace_file->Commit();
   if (out) {
     out->Write("estimates.csv", [&](std::ostream& file) { report::WriteEstimates(file, result.attempts); });
+    out->Write("replay_summary.json", [&](std::ostream& file) { report::WriteReplaySummaryJson(file, summary); });
+    out->Write("replay_summary.md", [&](std::ostream& file) { report::WriteReplaySummaryMarkdown(file, summary); });
     out->Commit();
   }
   return 0;

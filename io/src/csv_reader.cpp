@@ -15,8 +15,8 @@ std::string_view Trim(std::string_view s) {
   return s;
 }
 
-std::vector<std::string_view> Split(std::string_view line) {
-  std::vector<std::string_view> fields;
+void Split(std::string_view line, std::vector<std::string_view>& fields) {
+  fields.clear();
   std::size_t start = 0;
   while (true) {
     const std::size_t comma = line.find(',', start);
@@ -24,7 +24,11 @@ std::vector<std::string_view> Split(std::string_view line) {
     if (comma == std::string_view::npos) break;
     start = comma + 1;
   }
-  return fields;
+}
+
+std::string_view Unquoted(std::string_view name) {
+  if (name.size() >= 2 && name.front() == '"' && name.back() == '"') return Trim(name.substr(1, name.size() - 2));
+  return name;
 }
 
 }  // namespace
@@ -39,7 +43,11 @@ CsvReader::CsvReader(std::istream& in, std::string source) : in_(in), source_(st
   std::string header_line;
   if (!std::getline(in_, header_line)) throw InputError(source_ + ":1: empty file, expected a header line");
   line_ = 1;
-  for (std::string_view name : Split(header_line)) header_.emplace_back(name);
+  bytes_read_ = header_line.size() + 1;
+  if (header_line.size() >= 3 && header_line.compare(0, 3, "\xEF\xBB\xBF") == 0) header_line.erase(0, 3);  // UTF-8 BOM
+  Split(header_line, fields_);
+  for (std::string_view name : fields_) header_.emplace_back(Unquoted(name));
+  fields_.clear();
 }
 
 int CsvReader::OptionalColumn(std::initializer_list<std::string_view> names) const {
@@ -58,16 +66,19 @@ int CsvReader::Column(std::initializer_list<std::string_view> names) const {
   throw InputError(source_ + ":1: missing column " + listed);
 }
 
-void CsvReader::Fail(const std::string& message) const {
-  throw InputError(source_ + ":" + std::to_string(line_) + ": " + message);
+void CsvReader::Fail(const std::string& message) const { FailAt(line_, message); }
+
+void CsvReader::FailAt(int line, const std::string& message) const {
+  throw InputError(source_ + ":" + std::to_string(line) + ": " + message);
 }
 
 bool CsvReader::Next() {
   while (std::getline(in_, text_)) {
     ++line_;
+    bytes_read_ += text_.size() + 1;
     const std::string_view trimmed = Trim(text_);
     if (trimmed.empty() || trimmed.front() == '#') continue;
-    fields_ = Split(text_);
+    Split(text_, fields_);
     if (fields_.size() != header_.size()) {
       Fail("expected " + std::to_string(header_.size()) + " fields as in the header, found " +
            std::to_string(fields_.size()));
@@ -103,6 +114,10 @@ double CsvReader::Number(int column) const {
   return value;
 }
 
+double CsvReader::NumberOrNonFinite(int column) const { return Parse<double>(column, "a number"); }
+
 int CsvReader::Integer(int column) const { return Parse<int>(column, "an integer"); }
+
+long long CsvReader::Integer64(int column) const { return Parse<long long>(column, "an integer"); }
 
 }  // namespace anchorbench::io

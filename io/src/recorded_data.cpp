@@ -3,46 +3,36 @@
 #include "anchorbench/io/csv_reader.hpp"
 #include "anchorbench/io/format.hpp"
 #include "anchorbench/io/input_error.hpp"
+#include "anchorbench/io/log_reader.hpp"
 
 namespace anchorbench::io {
 
-std::vector<PoseRecord> ReadPoses(std::istream& in, const std::string& source) {
-  CsvReader csv(in, source);
-  const int t = csv.Column({"t"});
-  const int tag = csv.Column({"tag_id", "ID_Tag"});
-  const int x = csv.Column({"x"}), y = csv.Column({"y"}), z = csv.Column({"z"});
+namespace {
+
+LogPolicy Effective(LogPolicy policy, const LogDrops* drops) {
+  if (drops == nullptr) policy.strict = true;
+  return policy;
+}
+
+}  // namespace
+
+std::vector<PoseRecord> ReadPoses(std::istream& in, const std::string& source, const LogPolicy& policy,
+                                  LogDrops* drops) {
+  LogDrops unused;
+  PoseStream stream(in, source, Effective(policy, drops), drops ? *drops : unused);
   std::vector<PoseRecord> poses;
-  std::map<int, double> last_t_s;
-  while (csv.Next()) {
-    const double t_s = csv.Number(t);
-    const int tag_id = csv.Integer(tag);
-    const auto last = last_t_s.find(tag_id);
-    if (last != last_t_s.end() && t_s <= last->second) {
-      csv.Fail("time goes backwards or repeats for tag " + std::to_string(tag_id) + " (t=" + FormatNumber(t_s) +
-               " after t=" + FormatNumber(last->second) + ")");
-    }
-    last_t_s[tag_id] = t_s;
-    poses.push_back({t_s, tag_id, Eigen::Vector3d(csv.Number(x), csv.Number(y), csv.Number(z))});
-  }
+  for (PoseRecord pose; stream.Next(pose);) poses.push_back(pose);
   if (poses.empty()) throw InputError(source + ": no poses");
   return poses;
 }
 
-std::vector<RangeRecord> ReadRanges(std::istream& in, const std::string& source) {
-  CsvReader csv(in, source);
-  const int t = csv.Column({"t"});
-  const int tag = csv.Column({"tag_id", "ID_Tag"});
-  const int anchor = csv.Column({"anchor_id", "ID_Anchor"});
-  const int range = csv.Column({"range"});
+std::vector<RangeRecord> ReadRanges(std::istream& in, const std::string& source, const LogPolicy& policy,
+                                    LogDrops* drops) {
+  LogDrops unused;
+  RangeStream stream(in, source, 0, Effective(policy, drops), drops ? *drops : unused,
+                     AnchorIdFromFileName(source), std::nullopt);
   std::vector<RangeRecord> ranges;
-  while (csv.Next()) {
-    RangeRecord r{csv.Number(t), csv.Integer(tag), csv.Integer(anchor), csv.Number(range), csv.line()};
-    if (r.range_m < 0.0) csv.Fail("column 'range': negative range " + FormatNumber(r.range_m));
-    if (!ranges.empty() && r.t_s < ranges.back().t_s) {
-      csv.Fail("time goes backwards (t=" + FormatNumber(r.t_s) + " after t=" + FormatNumber(ranges.back().t_s) + ")");
-    }
-    ranges.push_back(r);
-  }
+  for (RangeRecord range; stream.Next(range);) ranges.push_back(range);
   return ranges;
 }
 
@@ -61,14 +51,14 @@ std::map<int, eval::AnchorTruth> ReadAnchors(std::istream& in, const std::string
   return anchors;
 }
 
-std::vector<PoseRecord> LoadPoses(const std::string& path) {
+std::vector<PoseRecord> LoadPoses(const std::string& path, const LogPolicy& policy, LogDrops* drops) {
   std::ifstream in = OpenForReading(path);
-  return ReadPoses(in, path);
+  return ReadPoses(in, path, policy, drops);
 }
 
-std::vector<RangeRecord> LoadRanges(const std::string& path) {
+std::vector<RangeRecord> LoadRanges(const std::string& path, const LogPolicy& policy, LogDrops* drops) {
   std::ifstream in = OpenForReading(path);
-  return ReadRanges(in, path);
+  return ReadRanges(in, path, policy, drops);
 }
 
 std::map<int, eval::AnchorTruth> LoadAnchors(const std::string& path) {

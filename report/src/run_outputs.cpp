@@ -12,21 +12,13 @@ namespace {
 using io::FormatFixed;
 using io::FormatNumber;
 using io::FormatOptional;
+using io::JsonString;
 using runner::Attempt;
 using runner::RowConfig;
 
 // The cells of a solve or an evaluation, empty where there is none.
 std::optional<double> Of(const std::optional<Eigen::Vector3d>& v, int axis) {
   return v ? std::optional<double>((*v)[axis]) : std::nullopt;
-}
-
-std::string JsonString(const std::string& text) {
-  std::string out = "\"";
-  for (char c : text) {
-    if (c == '"' || c == '\\') out += '\\';
-    out += c;
-  }
-  return out + "\"";
 }
 
 std::string JsonList(const std::vector<std::string>& items) {

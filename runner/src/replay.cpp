@@ -1,6 +1,7 @@
 #include "anchorbench/runner/replay.hpp"
 
 #include <algorithm>
+#include <deque>
 #include <stdexcept>
 
 #include "anchorbench/io/input_error.hpp"
@@ -22,42 +23,47 @@ estimator::FrontEnd::ChainFactory ChainsFor(const std::map<int, eval::AnchorTrut
   };
 }
 
-// Poses and ranges into the front end in time order, poses first at equal times.
-void FeedInTimeOrder(std::vector<io::PoseRecord> poses, const std::vector<io::RangeRecord>& ranges,
-                     estimator::FrontEnd& front_end) {
-  std::stable_sort(poses.begin(), poses.end(),
-                   [](const io::PoseRecord& a, const io::PoseRecord& b) { return a.t_s < b.t_s; });
-  std::size_t i = 0, j = 0;
-  while (i < poses.size() || j < ranges.size()) {
-    if (j == ranges.size() || (i < poses.size() && poses[i].t_s <= ranges[j].t_s)) {
-      front_end.AddPose(poses[i].t_s, poses[i].tag_id, poses[i].p_world_tag);
-      ++i;
-    } else {
-      front_end.AddRange(ranges[j].t_s, ranges[j].tag_id, ranges[j].anchor_id, ranges[j].range_m);
-      ++j;
-    }
-  }
+io::Drop DropReasonOf(estimator::DroppedRange::Reason reason) {
+  return reason == estimator::DroppedRange::Reason::kOutsidePoses ? io::Drop::kOutsidePoses : io::Drop::kNoPoseInTime;
 }
 
 }  // namespace
 
-ReplayResult Replay(const std::vector<io::PoseRecord>& poses, const std::vector<io::RangeRecord>& ranges,
+ReplayResult Replay(const LogSource& log, const std::vector<std::string>& range_sources,
                     const std::map<int, eval::AnchorTruth>* truth, const registry::EstimatorConfig& config,
                     const registry::Components& components, std::uint64_t seed, const TraceSink& trace) {
   ReplayResult result;
   estimator::FrontEnd front_end(ChainsFor(truth, config, components, seed));
-  // Ranges leave the front end's queue in the order they went in, used or dropped: the n-th to
-  // leave is ranges[n].
-  std::size_t left = 0;
-  front_end.SetSampleObserver([&](const estimator::RangeSample&, const estimator::FeedResult& fed) {
-    if (trace) trace(ranges[left], fed);
-    ++left;
+  // Ranges leave the front end's queue in the order they went in, used or dropped: the oldest
+  // range in flight is the one leaving. The queue is bounded (FrontEndOptions), so is this.
+  std::deque<io::RangeRecord> in_flight;
+  const std::string unnamed = "ranges";
+  auto source_of = [&](const io::RangeRecord& r) -> const std::string& {
+    return r.file >= 0 && static_cast<std::size_t>(r.file) < range_sources.size()
+               ? range_sources[static_cast<std::size_t>(r.file)]
+               : unnamed;
+  };
+  front_end.SetSampleObserver([&](const estimator::RangeSample& sample, const estimator::FeedResult& fed) {
+    ++result.samples_by_anchor[sample.anchor_id];
+    if (trace) trace(in_flight.front(), fed);
+    in_flight.pop_front();
   });
-  front_end.SetDropObserver([&](const estimator::DroppedRange&) {
-    if (result.ranges_skipped++ == 0) result.first_skipped_line = ranges[left].line;
-    ++left;
+  front_end.SetDropObserver([&](const estimator::DroppedRange& dropped) {
+    const io::RangeRecord& r = in_flight.front();
+    result.drops.Count(DropReasonOf(dropped.reason), r.anchor_id, source_of(r), r.line);
+    in_flight.pop_front();
   });
-  FeedInTimeOrder(poses, ranges, front_end);
+  io::RecordedLog::Kind kind;
+  io::PoseRecord pose;
+  io::RangeRecord range;
+  while (log(kind, pose, range)) {
+    if (kind == io::RecordedLog::Kind::kPose) {
+      front_end.AddPose(pose.t_s, pose.tag_id, pose.p_world_tag);
+    } else {
+      in_flight.push_back(range);
+      front_end.AddRange(range.t_s, range.tag_id, range.anchor_id, range.range_m);
+    }
+  }
   front_end.Finish(front_end.t_last_sample_s());
 
   std::map<std::pair<int, std::size_t>, estimator::InitEvent> events;
@@ -74,10 +80,31 @@ ReplayResult Replay(const std::vector<io::PoseRecord>& poses, const std::vector<
   return result;
 }
 
-void CheckReplayable(const std::vector<io::RangeRecord>& ranges, const std::map<int, eval::AnchorTruth>* truth,
+ReplayResult Replay(const std::vector<io::PoseRecord>& poses, const std::vector<io::RangeRecord>& ranges,
+                    const std::map<int, eval::AnchorTruth>* truth, const registry::EstimatorConfig& config,
+                    const registry::Components& components, std::uint64_t seed, const TraceSink& trace) {
+  std::vector<io::PoseRecord> by_time = poses;
+  std::stable_sort(by_time.begin(), by_time.end(),
+                   [](const io::PoseRecord& a, const io::PoseRecord& b) { return a.t_s < b.t_s; });
+  std::size_t i = 0, j = 0;
+  const LogSource merged = [&](io::RecordedLog::Kind& kind, io::PoseRecord& pose, io::RangeRecord& range) {
+    if (i == by_time.size() && j == ranges.size()) return false;
+    if (j == ranges.size() || (i < by_time.size() && by_time[i].t_s <= ranges[j].t_s)) {
+      kind = io::RecordedLog::Kind::kPose;
+      pose = by_time[i++];
+    } else {
+      kind = io::RecordedLog::Kind::kRange;
+      range = ranges[j++];
+    }
+    return true;
+  };
+  return Replay(merged, {}, truth, config, components, seed, trace);
+}
+
+void CheckReplayable(const std::set<int>& anchor_ids, const std::map<int, eval::AnchorTruth>* truth,
                      const registry::EstimatorConfig& config, const registry::Components& components) {
   estimator::FrontEnd front_end(ChainsFor(truth, config, components, 0));
-  for (const io::RangeRecord& range : ranges) front_end.AddAnchor(range.anchor_id);
+  for (int anchor_id : anchor_ids) front_end.AddAnchor(anchor_id);
 }
 
 }  // namespace anchorbench::runner

@@ -59,7 +59,7 @@ TEST(Replay, SimulatedWellConditionedRunInitializesEveryAnchorWithinItsBound) {
   const ReplayResult result = Replay(io::LoadPoses((log / "poses.csv").string()),
                                      io::LoadRanges((log / "ranges.csv").string()), &truth, estimator, Parts(), 1);
 
-  EXPECT_EQ(result.ranges_skipped, 0);
+  EXPECT_EQ(result.drops.total(), 0);
   ASSERT_EQ(result.attempts.size(), 2 * scenario.anchors.size());
   for (const Attempt& a : result.attempts) {
     ASSERT_TRUE(a.initialized) << "anchor " << a.anchor_id << " " << a.method;
@@ -92,8 +92,11 @@ TEST(Replay, RangesOutsideThePoseSpanAreSkippedAndCounted) {
   for (int k = 0; k < 130; ++k) ranges.push_back({0.1 * k, 0, 1, 10.0, k + 2});
   const registry::EstimatorConfig defaults;  // named: GCC 12 warns falsely on a `{}` temporary
   const ReplayResult result = Replay(Parabola(1.0, 10), ranges, nullptr, defaults, Parts(), 1);
-  EXPECT_EQ(result.ranges_skipped, 10 + 19);  // t < 1 s (10 ranges) and t > 11 s (19 ranges)
-  EXPECT_EQ(result.first_skipped_line, 2);
+  const io::DropTally& outside = result.drops.ranges_by_anchor().at(1).at(io::Drop::kOutsidePoses);
+  EXPECT_EQ(outside.count, 10 + 19);  // t < 1 s (10 ranges) and t > 11 s (19 ranges)
+  EXPECT_EQ(outside.first, "ranges:2");
+  EXPECT_EQ(result.drops.total(), 29);
+  EXPECT_EQ(result.samples_by_anchor.at(1), 130 - 29);
   EXPECT_EQ(result.counters.samples, 130 - 29);
 }
 
@@ -111,7 +114,7 @@ TEST(Replay, PoseFilesInAnyTagOrderGiveTheSameResult) {
   const ReplayResult b = Replay(by_tag, ranges, nullptr, defaults, Parts(), 1);
   ASSERT_EQ(a.attempts.size(), b.attempts.size());
   for (std::size_t i = 0; i < a.attempts.size(); ++i) EXPECT_EQ(a.attempts[i].t_init_s, b.attempts[i].t_init_s);
-  EXPECT_EQ(b.ranges_skipped, 0);
+  EXPECT_EQ(b.drops.total(), 0);
 }
 
 // The real recordings beside the checkout (../shared); skipped when they are absent.

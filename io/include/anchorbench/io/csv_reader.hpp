@@ -1,5 +1,6 @@
 #pragma once
 
+#include <cstdint>
 #include <fstream>
 #include <initializer_list>
 #include <istream>
@@ -11,8 +12,9 @@ namespace anchorbench::io {
 
 // A strict reader for the project's CSV files: a header line, then one record per line. Every
 // error is an InputError "SOURCE:LINE: ..." naming the column. Numbers must parse completely and
-// be finite; empty lines are skipped; a '#' in the first column marks a comment line. It reads
-// any stream (a file, a string buffer for a fuzzer), one line at a time.
+// be finite; empty lines are skipped; a '#' in the first column marks a comment line; header names
+// may be quoted. It reads any stream (a file, a string buffer for a fuzzer), one line at a time,
+// reusing its buffers (no allocation per line once warm).
 class CsvReader {
  public:
   // `source` names the stream in messages (the file's path).
@@ -24,11 +26,18 @@ class CsvReader {
 
   bool Next();  // false at end of input
   double Number(int column) const;
+  // A number that may be "nan" or "inf": a measurement the caller judges, not a malformed file.
+  double NumberOrNonFinite(int column) const;
   int Integer(int column) const;
+  long long Integer64(int column) const;
   bool Empty(int column) const;
+  std::string_view Text(int column) const { return Field(column); }
+  const std::string& header(int column) const { return header_[static_cast<std::size_t>(column)]; }
   int line() const { return line_; }
+  std::uint64_t bytes_read() const { return bytes_read_; }
   const std::string& source() const { return source_; }
   [[noreturn]] void Fail(const std::string& message) const;  // "SOURCE:LINE: message"
+  [[noreturn]] void FailAt(int line, const std::string& message) const;
 
  private:
   std::string_view Field(int column) const;
@@ -41,6 +50,7 @@ class CsvReader {
   std::string text_;
   std::vector<std::string_view> fields_;
   int line_ = 0;
+  std::uint64_t bytes_read_ = 0;
 };
 
 // The file, open for reading, or an InputError "PATH: cannot open the file".

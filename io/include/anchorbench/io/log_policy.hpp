@@ -1,0 +1,73 @@
+#pragma once
+
+#include <cstdint>
+#include <map>
+#include <string>
+#include <string_view>
+
+namespace anchorbench::io {
+
+// What a recorded log may contain besides clean rows, and what is done with it (docs/real_data.md).
+// A malformed file (an unparseable number, a missing column, a wrong field count) is always an
+// error; these are the measurements a real radio and a real recorder produce now and then.
+struct LogPolicy {
+  // Ranges above this are dropped as implausible (a UWB link reaches a few hundred metres).
+  double max_range_m = 1000.0;
+  // Two pose rows of one tag at one time with different positions.
+  enum class RepeatedPoses { kError, kFirst, kAverage };
+  RepeatedPoses repeated_poses = RepeatedPoses::kError;
+  // A row older than one read before it (within one file).
+  enum class OutOfOrder { kError, kDrop, kSort };
+  OutOfOrder out_of_order = OutOfOrder::kError;
+  // With kSort: how late a row may come, in seconds of the file's own time; later is an error.
+  double sort_window_s = 1.0;
+  // Every drop is an error (file:line, exit 2), as before these rules existed.
+  bool strict = false;
+};
+
+// Parse the command line's names ("error", "first", "average"; "error", "drop", "sort"); an
+// unknown name is std::invalid_argument.
+LogPolicy::RepeatedPoses RepeatedPosesFromName(std::string_view name);
+LogPolicy::OutOfOrder OutOfOrderFromName(std::string_view name);
+const char* NameOf(LogPolicy::RepeatedPoses policy);
+const char* NameOf(LogPolicy::OutOfOrder policy);
+
+// Why a row never reached the estimator.
+enum class Drop {
+  kRangeNotPositive,   // range <= 0
+  kRangeNotFinite,     // nan or inf
+  kRangeBeyondMax,     // above LogPolicy::max_range_m
+  kDuplicateRange,     // the same t, tag, anchor and range as a row before it
+  kLateRange,          // older than a row before it (out_of_order: drop)
+  kOutsidePoses,       // before the tag's first pose or after its last (never extrapolated)
+  kNoPoseInTime,       // its tag's next pose never came within the front end's wait
+  kPoseNotFinite,      // a position coordinate is nan or inf
+  kRepeatedPose,       // the same t, tag and position as a row before it
+  kConflictingPose,    // the same t and tag, another position: not the first (repeated_poses: first)
+  kAveragedPose,       // merged into the average of its time (repeated_poses: average)
+  kLatePose,           // older than a row before it (out_of_order: drop)
+};
+const char* NameOf(Drop reason);  // snake_case, as in replay_summary.json
+bool IsPoseDrop(Drop reason);
+
+// Rows dropped, by anchor (ranges) or tag (poses) and reason, with the first such row's place.
+struct DropTally {
+  std::int64_t count = 0;
+  std::string first;  // "FILE:LINE" of the first row so dropped
+};
+class LogDrops {
+ public:
+  void Count(Drop reason, int id, const std::string& source, int line);
+  void Add(const LogDrops& other);  // counts summed; the earlier tally's first row kept
+  const std::map<int, std::map<Drop, DropTally>>& ranges_by_anchor() const { return ranges_; }
+  const std::map<int, std::map<Drop, DropTally>>& poses_by_tag() const { return poses_; }
+  std::int64_t total() const { return total_; }
+  std::int64_t Total(Drop reason) const;
+
+ private:
+  std::map<int, std::map<Drop, DropTally>> ranges_;
+  std::map<int, std::map<Drop, DropTally>> poses_;
+  std::int64_t total_ = 0;
+};
+
+}  // namespace anchorbench::io
