@@ -45,6 +45,7 @@ done
 /usr/bin/python3 scripts/replay_throughput.py "$build/app/anchorbench" "$staging" $replay_sizes
 /usr/bin/python3 scripts/benchmark_tables.py "$staging"
 rm -rf "$staging"/*.json "$staging"/table1_threads_*
+chmod 755 "$staging"  # mktemp -d makes it private
 rm -rf "$out"
 mv "$staging" "$out"
 trap - EXIT

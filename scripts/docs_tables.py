@@ -123,6 +123,41 @@ def replay_throughput():
             " buffers up to their cap, not the log.")
 
 
+def anees_text(r):
+    """"ANEES (Nx), P%": N the over-confidence factor where the ANEES is above its credible bound."""
+    if not r or not r["anees_pos"]:
+        return "-"
+    anees, hi = float(r["anees_pos"]), float(r["anees_hi"])
+    verdict = "" if anees <= hi else f" ({anees / 3:.3g}x)"
+    return f"{anees:.3g}{verdict}, {float(r['nees_gt95_pct']):.0f}%"
+
+
+def credibility_table1():
+    by_cell = {(r["row"], r["method"]): r for r in read("table1/summary.csv")}
+    rows = []
+    for row_id in sorted({row for row, _ in by_cell}):
+        rows.append([row_id] + [anees_text(by_cell.get((row_id, m))) + f" (of {by_cell[(row_id, m)]['init']})"
+                                for m in ("pdop_closest_point", "fixed_window")])
+    return table(["Table I row", "pdop_closest_point", "fixed_window"], rows)
+
+
+def credibility_table():
+    """ANEES of the position (credible: 3, inside the bounds) and the share of NEES above the
+    chi-square 95% quantile (credible: 5%), per solver and trigger, stress rows 1 and 4."""
+    cells, _ = stress_cells()
+    triggers = ["pdop_closest_point", "fixed_window", "pdop_true"]
+    text = anees_text
+
+    rows = []
+    for solver, filt in [(s, "consistency") for s in ("ls_single", "ls_double", "lm_l2", "lm_huber", "lm_cauchy",
+                                                      "lm_adaptive", "nlopt:LN_BOBYQA")] + [("lm_l2", "ransac")]:
+        row = [f"{solver}, {filt}"]
+        for row_id in ("1", "4"):
+            row += [text(cells.get((solver, filt, row_id, t))) for t in triggers]
+        rows.append(row)
+    return table(["solver, filter"] + [f"row {r}: {t}" for r in ("1", "4") for t in triggers], rows)
+
+
 def performance_bullets():
     solvers = {(r["solver"], int(r["samples"])): r for r in read("benchmarks/solvers.csv")}
 
@@ -158,7 +193,8 @@ def performance_bullets():
 
 
 GENERATORS = {f.__name__: f for f in (stress_triggers, stress_solvers, stress_costs, table1_against_paper,
-                                      replay_throughput, performance_bullets)}
+                                      replay_throughput, performance_bullets, credibility_table,
+                                      credibility_table1)}
 MARKER = re.compile(r"(<!-- generated: (\w+) \(scripts/docs_tables.py\) -->\n)(.*?)(<!-- end generated -->)", re.S)
 
 

@@ -2,9 +2,19 @@
 
 #include <cmath>
 
+#include <Eigen/Cholesky>
+
 #include "anchorbench/eval/true_geometry.hpp"
 
 namespace anchorbench::eval {
+
+std::optional<double> Nees(const Eigen::VectorXd& error, const Eigen::MatrixXd& covariance) {
+  if (!covariance.allFinite()) return std::nullopt;
+  const Eigen::LLT<Eigen::MatrixXd> cholesky(covariance);
+  if (cholesky.info() != Eigen::Success) return std::nullopt;  // not positive definite
+  const double nees = error.dot(cholesky.solve(error));
+  return std::isfinite(nees) ? std::optional(nees) : std::nullopt;
+}
 
 AttemptEvaluation Evaluate(std::span<const Eigen::Vector3d> p_world_tag_used, const estimator::SolveResult* estimate,
                            const AnchorTruth& truth) {
@@ -17,7 +27,13 @@ AttemptEvaluation Evaluate(std::span<const Eigen::Vector3d> p_world_tag_used, co
   if (estimate) {
     evaluation.error_xyz_m = estimate->p_world_anchor - truth.p_world_anchor;
     evaluation.error_m = (estimate->p_world_anchor - truth.p_world_anchor).norm();
-    if (truth.bias_m) evaluation.bias_error_m = estimate->bias_m - *truth.bias_m;
+    evaluation.nees_position = Nees(*evaluation.error_xyz_m, estimate->covariance.topLeftCorner<3, 3>());
+    if (truth.bias_m) {
+      evaluation.bias_error_m = estimate->bias_m - *truth.bias_m;
+      Eigen::Vector4d error;
+      error << *evaluation.error_xyz_m, *evaluation.bias_error_m;
+      evaluation.nees = Nees(error, estimate->covariance);
+    }
   }
   return evaluation;
 }

@@ -116,7 +116,7 @@ void WriteAgainstThePaper(std::ostream& out, const std::vector<MethodSummary>& s
 
 void WriteAttempts(std::ostream& out, const std::vector<Attempt>& attempts, const std::vector<RowConfig>& rows) {
   out << "row,realization,anchor_id,method,initialized,t_init,n_used,pdop_est,pdop_true,crlb_m,err_m,err_x,err_y,"
-         "err_z,bias_err,alpha,status,bias_aware_dop\n";
+         "err_z,bias_err,alpha,status,bias_aware_dop,nees_pos,nees\n";
   const eval::AttemptEvaluation none;
   for (const Attempt& a : attempts) {
     const eval::AttemptEvaluation& e = a.evaluation ? *a.evaluation : none;
@@ -127,7 +127,8 @@ void WriteAttempts(std::ostream& out, const std::vector<Attempt>& attempts, cons
         << FormatOptional(e.error_m) << ',' << FormatOptional(Of(e.error_xyz_m, 0)) << ','
         << FormatOptional(Of(e.error_xyz_m, 1)) << ',' << FormatOptional(Of(e.error_xyz_m, 2)) << ','
         << FormatOptional(e.bias_error_m) << ',' << FormatOptional(a.solve ? std::optional(a.solve->alpha) : std::nullopt)
-        << ',' << a.status << ',' << FormatOptional(e.bias_aware_dop) << '\n';
+        << ',' << a.status << ',' << FormatOptional(e.bias_aware_dop) << ',' << FormatOptional(e.nees_position) << ','
+        << FormatOptional(e.nees) << '\n';
   }
 }
 
@@ -137,6 +138,9 @@ std::string SummaryCsvFields(const MethodSummary& s, const std::vector<RowConfig
       << FormatOptional(s.med_m) << ',' << s.init << ',' << s.gt1m << ',' << FormatOptional(s.ratio_pct) << ','
       << FormatOptional(s.avg_lo) << ',' << FormatOptional(s.avg_hi) << ',' << FormatOptional(s.ratio_lo) << ','
       << FormatOptional(s.ratio_hi);
+  const eval::Credibility& c = s.position_credibility;
+  out << ',' << FormatOptional(c.anees) << ',' << FormatOptional(c.bound_lo) << ',' << FormatOptional(c.bound_hi) << ','
+      << FormatOptional(c.above_95_pct);
   return out.str();
 }
 

@@ -22,7 +22,7 @@ struct RealizationSums {
 MethodSummary SummarizeOne(const std::vector<const Attempt*>& attempts, const std::vector<RealizationSums>& sums,
                            int bootstrap_resamples, sim::RandomStream rng) {
   MethodSummary s;
-  std::vector<double> errors, times;
+  std::vector<double> errors, times, nees;
   for (const Attempt* a : attempts) {
     ++s.attempts;
     s.compute_s += a->compute_s;
@@ -31,8 +31,10 @@ MethodSummary SummarizeOne(const std::vector<const Attempt*>& attempts, const st
     errors.push_back(*a->evaluation->error_m);
     times.push_back(*a->t_init_s);
     s.gt1m += *a->evaluation->error_m > 1.0;
+    if (a->evaluation->nees_position) nees.push_back(*a->evaluation->nees_position);
   }
   if (s.init == 0) return s;
+  s.position_credibility = eval::CredibilityOf(nees, 3);
   double total = 0.0, total_time = 0.0;
   for (double e : errors) total += e;
   for (double t : times) total_time += t;

@@ -24,7 +24,16 @@ struct AttemptEvaluation {
   std::optional<Eigen::Vector3d> error_xyz_m;  // estimate - truth
   std::optional<double> error_m;               // its norm
   std::optional<double> bias_error_m;          // estimated - true bias, where the true bias is known
+  // Normalized estimation error squared, e^T P^-1 e, of the solve's own covariance P: of the
+  // position (3 dof), and of (p_A, gamma) where the true bias is known (4 dof). A credible
+  // covariance gives a chi-square variable of that many degrees of freedom. Absent where P is
+  // not positive definite (e.g. a solver that reports none).
+  std::optional<double> nees_position;
+  std::optional<double> nees;
 };
+
+// e^T P^-1 e, or nothing if P is not positive definite.
+std::optional<double> Nees(const Eigen::VectorXd& error, const Eigen::MatrixXd& covariance);
 
 // `estimate` is the initialized solve (nullptr if the attempt did not initialize).
 AttemptEvaluation Evaluate(std::span<const Eigen::Vector3d> p_world_tag_used, const estimator::SolveResult* estimate,

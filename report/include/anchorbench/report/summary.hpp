@@ -5,6 +5,7 @@
 #include <string>
 #include <vector>
 
+#include "anchorbench/eval/credibility.hpp"
 #include "anchorbench/runner/attempt.hpp"
 #include "anchorbench/runner/experiment.hpp"
 
@@ -25,6 +26,8 @@ struct MethodSummary {
   // the anchors of one realization share a trajectory, so they are not independent), drawn from
   // the stream (seed, 0, kBootstrapStream, summary index).
   std::optional<double> avg_lo, avg_hi, ratio_lo, ratio_hi;
+  // The credibility of the initialized attempts' position covariances (3-dof NEES; docs/method.md).
+  eval::Credibility position_credibility;
   double compute_s = 0.0;  // summed Attempt::compute_s (timing files only)
 };
 
