@@ -158,6 +158,42 @@ def credibility_table():
     return table(["solver, filter"] + [f"row {r}: {t}" for r in ("1", "4") for t in triggers], rows)
 
 
+def bias_aware_table():
+    by_cell = {(r["row"], r["method"]): r for r in read("bias_aware/summary.csv")}
+    methods = ["pdop_closest_point", "dop4_closest_point", "dop4_confidence", "pdop_true", "dop4_true",
+               "fixed_window"]
+    rows = []
+    for method in methods:
+        row = [method]
+        for row_id in ("1", "2", "3", "4"):
+            r = by_cell[(row_id, method)]
+            avg = f"{float(r['avg_m']):.2f} m" if r["avg_m"] else "-"
+            row.append(f"{avg}, {float(r['ratio_pct'] or 0):.1f}%, {r['init']}")
+        rows.append(row)
+    return table(["trigger"] + [f"row {i}: Avg, >1 m, Init (of 600)" for i in "1234"], rows)
+
+
+def bias_aware_sweep():
+    rows = []
+    for r in read("sweep_bias_aware/sweep.csv"):
+        ba, ct, method = r["estimator.trigger.bias_aware_threshold"], r["estimator.trigger.confidence_threshold"], r["method"]
+        threshold = {"pdop_closest_point": "PDOP < 1", "dop4_closest_point": f"< {ba}", "dop4_confidence": f"< {ct}"}[method]
+        # Each trigger's cells repeat over the other's axis: keep one copy.
+        if (method == "dop4_closest_point" and ct != "0.8") or (method == "dop4_confidence" and ba != "0.8") or \
+                (method == "pdop_closest_point" and (ba, ct) != ("0.8", "0.8")):
+            continue
+        rows.append((method, threshold, r["row"], r))
+    out = []
+    order = ["pdop_closest_point", "dop4_closest_point", "dop4_confidence"]
+    for method, threshold in sorted(dict.fromkeys((m, t) for m, t, _, _ in rows),
+                                    key=lambda mt: (order.index(mt[0]), mt[1])):
+        cells = {row_id: r for m, t, row_id, r in rows if (m, t) == (method, threshold)}
+        out.append([method, threshold] + [f"{float(cells[i]['avg_m']):.2f} m, {float(cells[i]['ratio_pct']):.1f}%, "
+                                          f"{cells[i]['init']}" if cells[i]["avg_m"] else f"-, {cells[i]['init']}"
+                                          for i in ("1", "4")])
+    return table(["trigger", "threshold", "row 1: Avg, >1 m, Init (of 300)", "row 4: Avg, >1 m, Init (of 300)"], out)
+
+
 def performance_bullets():
     solvers = {(r["solver"], int(r["samples"])): r for r in read("benchmarks/solvers.csv")}
 
@@ -194,7 +230,7 @@ def performance_bullets():
 
 GENERATORS = {f.__name__: f for f in (stress_triggers, stress_solvers, stress_costs, table1_against_paper,
                                       replay_throughput, performance_bullets, credibility_table,
-                                      credibility_table1)}
+                                      credibility_table1, bias_aware_table, bias_aware_sweep)}
 MARKER = re.compile(r"(<!-- generated: (\w+) \(scripts/docs_tables.py\) -->\n)(.*?)(<!-- end generated -->)", re.S)
 
 

@@ -14,7 +14,8 @@ for sweep in sweep_pdop_threshold sweep_tau sweep_noise_outliers; do
 done
 "$bin" pdop-study configs/pdop_study.yaml --out results/pdop_study --quiet --overwrite
 bash scripts/halls.sh
-for sweep in stress stress_ransac; do
+"$bin" run configs/bias_aware.yaml --out results/bias_aware --quiet --overwrite
+for sweep in sweep_bias_aware stress stress_ransac; do
   "$bin" sweep "configs/$sweep.yaml" --out "results/$sweep" --quiet --overwrite
 done
 bash scripts/plots.sh

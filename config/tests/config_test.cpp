@@ -66,6 +66,10 @@ TEST(Config, ComponentNamesAreCheckedAgainstTheRegistries) {
   EXPECT_NE(error.find("key 'estimator.filter.enabled': unknown key"), std::string::npos) << error;
   error = ErrorFor("estimator:\n  trigger: {evaluate_every: 0}\n");
   EXPECT_NE(error.find("key 'estimator.trigger.evaluate_every'"), std::string::npos) << error;
+  error = ErrorFor("estimator:\n  trigger: {bias_aware_threshold: 0}\n");
+  EXPECT_NE(error.find("key 'estimator.trigger.bias_aware_threshold'"), std::string::npos) << error;
+  error = ErrorFor("estimator:\n  trigger: {confidence_sigmas: 11}\n");
+  EXPECT_NE(error.find("key 'estimator.trigger.confidence_sigmas'"), std::string::npos) << error;
 }
 
 TEST(Config, WrongTypeNamesItsPath) {

@@ -10,4 +10,9 @@ Eigen::Matrix3d ClosestPointPdop::Information() const {
   return information;
 }
 
+double ClosestPointPdop::BiasAwareValue() const {
+  if (count_ < 4) return std::numeric_limits<double>::infinity();
+  return BiasAwareDopFromSums(Information(), t1_, static_cast<double>(count_));
+}
+
 }  // namespace anchorbench::estimator

@@ -1,6 +1,10 @@
 #include "anchorbench/estimator/triggers.hpp"
 
+#include <algorithm>
 #include <cmath>
+#include <limits>
+
+#include <Eigen/Eigenvalues>
 
 #include "anchorbench/estimator/pdop.hpp"
 
@@ -15,6 +19,9 @@ bool TriggerOptions::IsValid(std::string* why) const {
   if (sample_count < 1) return fail("sample_count must be >= 1");
   if (!(timeout_s >= 0.0) || !std::isfinite(timeout_s)) return fail("timeout_s must be >= 0");
   if (evaluate_every < 1) return fail("evaluate_every must be >= 1");
+  if (!(bias_aware_threshold > 0.0)) return fail("bias_aware_threshold must be > 0");
+  if (!(confidence_threshold > 0.0)) return fail("confidence_threshold must be > 0");
+  if (!(confidence_sigmas >= 0.0) || !(confidence_sigmas <= 10.0)) return fail("confidence_sigmas must be in [0, 10]");
   return true;
 }
 
@@ -24,6 +31,33 @@ bool EstimatePdopTrigger::Fire(const TriggerInput& in) {
   evaluated_at_ = n;
   const SolveResult estimate = solver_->Solve(in.p_world_tag, in.range_m);
   return Succeeded(estimate.status) && GeometryPdop(in.p_world_tag, in.range_m, estimate.p_world_anchor) < threshold_;
+}
+
+bool ClosestPointBiasAwareTrigger::Fire(const TriggerInput& in) {
+  dop_.Add(in.sample_p_world_tag, in.sample_range_m);
+  return in.eligible && dop_.BiasAwareValue() < threshold_;
+}
+
+double WorstBiasAwareDop(std::span<const Eigen::Vector3d> p_world_tag, const SolveResult& estimate, double sigmas) {
+  const Eigen::Matrix3d covariance = estimate.covariance.topLeftCorner<3, 3>();
+  if (!covariance.allFinite()) return std::numeric_limits<double>::infinity();
+  const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> axes(covariance);
+  double worst = BiasAwareDopAt(p_world_tag, estimate.p_world_anchor);
+  for (int i = 0; i < 3; ++i) {
+    const Eigen::Vector3d half_axis = sigmas * std::sqrt(std::max(axes.eigenvalues()(i), 0.0)) * axes.eigenvectors().col(i);
+    for (const double side : {-1.0, 1.0}) {
+      worst = std::max(worst, BiasAwareDopAt(p_world_tag, estimate.p_world_anchor + side * half_axis));
+    }
+  }
+  return worst;
+}
+
+bool ConfidenceRegionDopTrigger::Fire(const TriggerInput& in) {
+  const std::size_t n = in.n_accepted;
+  if (!in.eligible || (evaluated_at_ != 0 && n < evaluated_at_ + every_)) return false;
+  evaluated_at_ = n;
+  const SolveResult estimate = solver_->Solve(in.p_world_tag, in.range_m);
+  return Succeeded(estimate.status) && WorstBiasAwareDop(in.p_world_tag, estimate, sigmas_) < threshold_;
 }
 
 }  // namespace anchorbench::estimator

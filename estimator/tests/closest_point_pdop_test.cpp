@@ -63,6 +63,43 @@ TEST(ClosestPointPdop, StreamingMatchesDirectEq4OverRandomSequences) {
   EXPECT_GT(closest_point_changes, 50 * 20);  // the closest point did change along the way
 }
 
+// The bias column: [G~ | 1] built directly about the final closest point, all N rows (the row of
+// p_C is zero in G~ but one in the bias column).
+double DirectClosestPointBiasAwareDop(const std::vector<Eigen::Vector3d>& p, const std::vector<double>& d) {
+  std::size_t j = 0;
+  for (std::size_t k = 1; k < d.size(); ++k)
+    if (d[k] < d[j]) j = k;
+  Eigen::Matrix4d information = Eigen::Matrix4d::Zero();
+  for (std::size_t k = 0; k < d.size(); ++k) {
+    Eigen::Vector4d row;
+    row << (p[k] - p[j]) / d[k], 1.0;
+    information += row * row.transpose();
+  }
+  return std::sqrt(information.inverse().topLeftCorner<3, 3>().trace());
+}
+
+TEST(ClosestPointPdop, StreamingBiasAwareDopMatchesTheDirect4ColumnMatrix) {
+  for (int sequence = 0; sequence < 20; ++sequence) {
+    auto rng = testing::TestStream(100 + sequence);
+    const Eigen::Vector3d p_anchor(5e3, 10.0, 4.0);
+    ClosestPointPdop streaming;
+    std::vector<Eigen::Vector3d> p;
+    std::vector<double> d;
+    for (int k = 0; k < 200; ++k) {
+      const double u = rng.Uniform(-1, 1), v = rng.Uniform(-1, 1);  // sequenced draws
+      const Eigen::Vector3d tag = p_anchor + Eigen::Vector3d(-20.0 + 0.2 * k, 4.0 * u, -3.0 + v);
+      const double range = (tag - p_anchor).norm();
+      streaming.Add(tag, range);
+      p.push_back(tag);
+      d.push_back(range);
+      if (k < 10) continue;
+      const double direct = DirectClosestPointBiasAwareDop(p, d);
+      EXPECT_NEAR(streaming.BiasAwareValue(), direct, 1e-7 * direct) << "sequence " << sequence << " sample " << k;
+      EXPECT_GE(streaming.BiasAwareValue(), streaming.Value() * (1 - 1e-12));  // a column more: never better
+    }
+  }
+}
+
 TEST(ClosestPointPdop, InfiniteNotNanWhenUndefined) {
   ClosestPointPdop pdop;
   EXPECT_TRUE(std::isinf(pdop.Value()));
@@ -71,6 +108,8 @@ TEST(ClosestPointPdop, InfiniteNotNanWhenUndefined) {
   ClosestPointPdop collinear;
   for (int k = 0; k < 100; ++k) collinear.Add(Eigen::Vector3d(0.1 * k, 2.0, 1.0), 10.0 + 0.01 * k);
   EXPECT_TRUE(std::isinf(collinear.Value()));  // rank 1: a straight line
+  EXPECT_TRUE(std::isinf(collinear.BiasAwareValue()));
+  EXPECT_TRUE(std::isinf(pdop.BiasAwareValue()));
 }
 
 }  // namespace

@@ -1,7 +1,6 @@
 #include "anchorbench/eval/true_geometry.hpp"
 
 #include <cmath>
-#include <limits>
 
 #include "anchorbench/estimator/pdop.hpp"
 
@@ -21,13 +20,7 @@ void TrueGeometry::Add(const Eigen::Vector3d& p_world_tag) {
 
 double TrueGeometry::Pdop() const { return PdopFromInformation(sum_outer_); }
 
-double TrueGeometry::BiasAwareDop() const {
-  // It is >= the 3-column PDOP; where that one is already singular, so is this one (the relative
-  // rank test would otherwise judge the two matrices against different scales).
-  if (count_ < 2.0 || std::isinf(Pdop())) return std::numeric_limits<double>::infinity();
-  // sum (u - u_mean)(u - u_mean)^T = sum u u^T - (sum u)(sum u)^T / n
-  return PdopFromInformation(sum_outer_ - sum_unit_ * sum_unit_.transpose() / count_);
-}
+double TrueGeometry::BiasAwareDop() const { return estimator::BiasAwareDopFromSums(sum_outer_, sum_unit_, count_); }
 
 namespace {
 
@@ -44,7 +37,7 @@ double TruePdop(std::span<const Eigen::Vector3d> p_world_tag, const Eigen::Vecto
 }
 
 double BiasAwareDop(std::span<const Eigen::Vector3d> p_world_tag, const Eigen::Vector3d& p_world_anchor) {
-  return Accumulate(p_world_tag, p_world_anchor).BiasAwareDop();
+  return estimator::BiasAwareDopAt(p_world_tag, p_world_anchor);
 }
 
 }  // namespace anchorbench::eval

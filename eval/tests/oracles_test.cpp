@@ -38,6 +38,27 @@ TEST(Oracles, TruePdopFiresWhereTheTruePdopFirstDropsBelowTheThreshold) {
   EXPECT_EQ(fired, expected);
 }
 
+// dop4_true: the same with the bias-aware DOP, which is never below the PDOP.
+TEST(Oracles, TrueBiasAwareDopFiresWhereItFirstDropsBelowItsThreshold) {
+  const auto samples = testing::PassBy(kAnchor, 0.05, 2);
+  const registry::Components components = MakeComponentsWithOracles();
+  registry::EstimatorConfig config = Unfiltered();
+  config.trigger.bias_aware_threshold = 1.2;
+  estimator::AnchorInitializer initializer = registry::MakeInitializer(components, 7, config, "dop4_true", 0, kAnchor);
+  int fired = -1;
+  for (std::size_t i = 0; i < samples.size() && fired < 0; ++i) {
+    if (initializer.Feed(samples[i]).event) fired = static_cast<int>(i);
+  }
+  int expected = -1;
+  std::vector<Eigen::Vector3d> p;
+  for (std::size_t i = 0; i < samples.size() && expected < 0; ++i) {
+    p.push_back(samples[i].p_world_tag);
+    if (p.size() >= 20 && BiasAwareDop(p, kAnchor) < 1.2) expected = static_cast<int>(i);
+  }
+  ASSERT_GE(expected, 0);
+  EXPECT_EQ(fired, expected);
+}
+
 TEST(Oracles, WithoutTheTruthTheOracleIsRefusedWithTheReason) {
   const registry::Components components = MakeComponentsWithOracles();
   try {

@@ -110,6 +110,20 @@ void RegisterBuiltinTriggers(TriggerRegistry& registry) {
                       return std::make_unique<estimator::EstimatePdopTrigger>(c.solver, c.options.pdop_threshold,
                                                                               c.options.evaluate_every);
                     });
+  registry.Register("dop4_closest_point",
+                    "closest-point DOP with a bias column < trigger.bias_aware_threshold, O(1) (ours)",
+                    [](const std::string&, const Context& c) {
+                      return std::make_unique<estimator::ClosestPointBiasAwareTrigger>(c.options.bias_aware_threshold);
+                    });
+  registry.Register("dop4_confidence",
+                    "worst bias-aware DOP over the trigger.confidence_sigmas region of the solver's estimate < "
+                    "trigger.confidence_threshold (every trigger.evaluate_every samples; ours)",
+                    [](const std::string&, const Context& c) {
+                      if (!c.solver) throw std::invalid_argument("needs the anchor's solver");
+                      return std::make_unique<estimator::ConfidenceRegionDopTrigger>(
+                          c.solver, c.options.confidence_threshold, c.options.evaluate_every,
+                          c.options.confidence_sigmas);
+                    });
   registry.Register("fixed_window", "the baseline: one solve on all of an anchor's data at the end of the run",
                     [](const std::string&, const Context&) { return std::make_unique<estimator::FixedWindowTrigger>(); });
   registry.Register("sample_count", "after trigger.sample_count accepted samples",

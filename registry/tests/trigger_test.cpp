@@ -7,6 +7,7 @@
 #include "anchorbench/estimator/anchor_initializer.hpp"
 #include "anchorbench/estimator/ls_solver.hpp"
 #include "anchorbench/estimator/pdop.hpp"
+#include "anchorbench/estimator/triggers.hpp"
 #include "anchorbench/registry/components.hpp"
 #include "anchorbench/testing/test_data.hpp"
 #include "builtins.hpp"
@@ -136,6 +137,46 @@ TEST(Triggers, NlsUsesTheAnchorsSolver) {
   EXPECT_LT((fed.event->solve.p_world_anchor - kAnchor).norm(), 0.5);
 }
 
+// dop4_closest_point: the closest-point rows with a bias column, fired on the first sample whose
+// 4-column DOP is below its threshold; never before the paper's 3-column one.
+TEST(Triggers, ClosestPointBiasAwareFiresOnItsOwnThresholdAndNeverBeforeThePapers) {
+  const auto samples = PassBy(kAnchor, 0.05, 6);
+  EstimatorConfig options = Unfiltered();
+  options.trigger.bias_aware_threshold = 1.0;
+  AnchorInitializer paper = MakeInitializer(Builtins(), 7, options, "pdop_closest_point", 0);
+  AnchorInitializer bias_aware = MakeInitializer(Builtins(), 7, options, "dop4_closest_point", 0);
+  const Fed a = FeedAll(paper, samples), b = FeedAll(bias_aware, samples);
+  ASSERT_TRUE(a.event && b.event);
+  EXPECT_GT(b.index, a.index);
+  estimator::ClosestPointPdop direct;
+  int expected = -1;
+  for (std::size_t i = 0; i < samples.size() && expected < 0; ++i) {
+    direct.Add(samples[i].p_world_tag, samples[i].range_m);
+    if (i + 1 >= 20 && direct.BiasAwareValue() < 1.0) expected = static_cast<int>(i);
+  }
+  EXPECT_EQ(b.index, expected);
+}
+
+// dop4_confidence solves on its cadence and fires when the worst bias-aware DOP over the
+// estimate's 3-sigma region is below its threshold; the worst case is never below the estimate's.
+TEST(Triggers, ConfidenceRegionJudgesTheWorstCornerOfTheEstimate) {
+  const auto samples = PassBy(kAnchor, 0.05, 7);
+  EstimatorConfig options = Unfiltered();
+  options.solver = "lm_l2";
+  options.trigger.confidence_threshold = 1.5;
+  AnchorInitializer initializer = MakeInitializer(Builtins(), 7, options, "dop4_confidence", 0);
+  const Fed fed = FeedAll(initializer, samples);
+  ASSERT_TRUE(fed.event);
+  const auto n = static_cast<std::size_t>(fed.event->n_used);
+  EXPECT_EQ((n - 20) % 10, 0u);
+  const std::span<const Eigen::Vector3d> p(initializer.p_world_tag().data(), n);
+  const double worst = estimator::WorstBiasAwareDop(p, fed.event->solve, 3.0);
+  EXPECT_LT(worst, 1.5);
+  EXPECT_GE(worst, estimator::BiasAwareDopAt(p, fed.event->solve.p_world_anchor));
+  EXPECT_EQ(estimator::WorstBiasAwareDop(p, fed.event->solve, 0.0),
+            estimator::BiasAwareDopAt(p, fed.event->solve.p_world_anchor));
+}
+
 TEST(Triggers, DefaultChainIsTheRegistrysPaperChain) {
   const auto samples = PassBy(kAnchor, 0.05, 5);
   AnchorInitializer by_hand = estimator::MakePaperInitializer(7);
@@ -170,9 +211,9 @@ TEST(Triggers, RegistryListsEveryBuiltInWithADescription) {
     names.push_back(name);
     EXPECT_FALSE(description.empty()) << name;
   }
-  // The built-ins need no truth; the oracle pdop_true is eval's, registered on top by who wants it.
-  EXPECT_EQ(names, (std::vector<std::string>{"fixed_window", "pdop_closest_point", "pdop_ls", "pdop_nls", "sample_count",
-                                             "timeout"}));
+  // The built-ins need no truth; the oracles pdop_true and dop4_true are eval's, registered on top by who wants it.
+  EXPECT_EQ(names, (std::vector<std::string>{"dop4_closest_point", "dop4_confidence", "fixed_window", "pdop_closest_point",
+                                             "pdop_ls", "pdop_nls", "sample_count", "timeout"}));
 }
 
 }  // namespace

@@ -18,6 +18,10 @@ namespace anchorbench::estimator {
 // The row of p_C itself contributes zero, so it need not be removed. S2 is symmetric: only its
 // upper triangle (00, 01, 02, 11, 12, 22) is kept. Add and Value are inline: the initializer
 // calls both on every sample.
+//
+// With the bias as a fourth column of ones (our extension, for the dop4_closest_point trigger),
+// the bias-aware DOP also needs the sum of the rows g_k = (p_k - p_C)/d_k themselves:
+//   T0 = sum 1/d_k,  T1 = sum (p_k - p_C)/d_k,  re-centred as T1 <- T1 - T0 delta.
 class ClosestPointPdop {
  public:
   using Upper = Eigen::Matrix<double, 6, 1>;
@@ -37,6 +41,9 @@ class ClosestPointPdop {
     s0_ += w;
     s1_ += wp;
     s2_ += Outer(wp, p);
+    const double v = 1.0 / range_m;
+    t0_ += v;
+    t1_ += v * p;
     ++count_;
   }
 
@@ -46,6 +53,9 @@ class ClosestPointPdop {
     if (count_ < 4) return std::numeric_limits<double>::infinity();  // G~ needs >= 3 rows
     return PdopFromUpperTriangle(s2_[0], s2_[1], s2_[2], s2_[3], s2_[4], s2_[5]);
   }
+
+  // The bias-aware DOP of G~ with a column of ones (BiasAwareDopFromSums); +inf as Value().
+  double BiasAwareValue() const;
 
   // G~^T G~ of Eq. (6).
   Eigen::Matrix3d Information() const;
@@ -66,12 +76,15 @@ class ClosestPointPdop {
     const auto entry = [&](int i, int j) { return -s1_[i] * delta[j] + delta[i] * q[j]; };
     s2_ += Upper(entry(0, 0), entry(0, 1), entry(0, 2), entry(1, 1), entry(1, 2), entry(2, 2));
     s1_ = -q;
+    t1_ -= t0_ * delta;
   }
 
   int count_ = 0;
   double s0_ = 0.0;
   Eigen::Vector3d s1_ = Eigen::Vector3d::Zero();
   Upper s2_ = Upper::Zero();
+  double t0_ = 0.0;
+  Eigen::Vector3d t1_ = Eigen::Vector3d::Zero();
   Eigen::Vector3d p_world_closest_ = Eigen::Vector3d::Zero();
   double min_range_m_ = 0.0;
 };

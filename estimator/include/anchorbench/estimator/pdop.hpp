@@ -35,6 +35,20 @@ inline double PdopFromInformation(const Eigen::Matrix3d& m) {
   return PdopFromUpperTriangle(m(0, 0), m(0, 1), m(0, 2), m(1, 1), m(1, 2), m(2, 2));
 }
 
+// The bias-aware DOP from the sums of a geometry matrix's rows g_k over n rows: with the bias
+// estimated too, H = [G | 1], and the position block of (H^T H)^-1 is the inverse of the Schur
+// complement sum g g^T - (sum g)(sum g)^T / n (the spread of the rows about their mean). Its root
+// trace is >= the 3-column PDOP; +infinity where that one is already singular (the relative rank
+// test would otherwise judge the two matrices against different scales) or n < 2.
+inline double BiasAwareDopFromSums(const Eigen::Matrix3d& sum_outer, const Eigen::Vector3d& sum_rows, double n) {
+  if (n < 2.0 || std::isinf(PdopFromInformation(sum_outer))) return std::numeric_limits<double>::infinity();
+  return PdopFromInformation(sum_outer - sum_rows * sum_rows.transpose() / n);
+}
+
+// The bias-aware DOP of the unit directions from a point to the tags (the true anchor in
+// evaluation, an estimate or a point of its confidence region online). O(N).
+double BiasAwareDopAt(std::span<const Eigen::Vector3d> p_world_tag, const Eigen::Vector3d& p_world_anchor);
+
 // Eq. (2)-(3): PDOP with rows (p_k - p_A)^T / d_k for a given anchor position and ranges.
 // With an estimated p_A this is the "LS PDOP" / "NLS PDOP" of Sec. IV-B.
 double GeometryPdop(std::span<const Eigen::Vector3d> p_world_tag, std::span<const double> range_m,

@@ -4,6 +4,7 @@
 #include <memory>
 #include <string>
 
+#include "anchorbench/estimator/closest_point_pdop.hpp"
 #include "anchorbench/estimator/init_trigger.hpp"
 #include "anchorbench/estimator/solver.hpp"
 
@@ -17,6 +18,13 @@ struct TriggerOptions {
   // EstimatePdopTrigger: solve for the estimate every this many accepted samples. Each solve is
   // O(N), so solving at every sample would make an anchor O(N^2).
   int evaluate_every = 10;
+  // The bias-aware triggers (ours, docs/method.md): dop4_closest_point and the oracle dop4_true
+  // fire once their 4-column DOP is below bias_aware_threshold; dop4_confidence once the worst
+  // 4-column DOP over the confidence_sigmas ellipsoid of the running estimate is below
+  // confidence_threshold (evaluated every evaluate_every samples).
+  double bias_aware_threshold = 1.0;
+  double confidence_threshold = 1.5;
+  double confidence_sigmas = 3.0;
 
   bool IsValid(std::string* why) const;
 };
@@ -45,6 +53,40 @@ class EstimatePdopTrigger : public InitTrigger {
   std::size_t every_;
   std::size_t evaluated_at_ = 0;  // sample count of the last evaluation (0: none yet)
 };
+
+// Ours: the closest-point idea of Eq. (4) with the bias as a fourth column, O(1) per sample.
+class ClosestPointBiasAwareTrigger : public InitTrigger {
+ public:
+  explicit ClosestPointBiasAwareTrigger(double threshold) : threshold_(threshold) {}
+  bool Fire(const TriggerInput& in) override;
+
+ private:
+  ClosestPointPdop dop_;
+  double threshold_;
+};
+
+// Ours, after a prototype described in issue 13: the estimate that looks well conditioned from
+// where it stands may be wrong, so judge the geometry from every corner of its confidence region.
+// Every `every` accepted samples it solves (the anchor's solver), and takes the worst bias-aware
+// DOP at the estimate and at +-`sigmas` standard deviations along each principal axis of the
+// position covariance (7 points, O(N) each). It fires when that worst case is below the threshold.
+class ConfidenceRegionDopTrigger : public InitTrigger {
+ public:
+  ConfidenceRegionDopTrigger(std::shared_ptr<const Solver> solver, double threshold, int every, double sigmas)
+      : solver_(std::move(solver)), threshold_(threshold), every_(static_cast<std::size_t>(every)), sigmas_(sigmas) {}
+  bool Fire(const TriggerInput& in) override;
+
+ private:
+  std::shared_ptr<const Solver> solver_;
+  double threshold_;
+  std::size_t every_;
+  double sigmas_;
+  std::size_t evaluated_at_ = 0;
+};
+
+// The worst bias-aware DOP over the estimate and the 6 ends of the principal axes of its
+// position covariance scaled by `sigmas` (+inf if the covariance is not finite).
+double WorstBiasAwareDop(std::span<const Eigen::Vector3d> p_world_tag, const SolveResult& estimate, double sigmas);
 
 // The baseline of Sec. IV-A: never online; the initializer solves on everything at the end.
 class FixedWindowTrigger : public InitTrigger {

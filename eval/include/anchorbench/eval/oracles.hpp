@@ -10,21 +10,24 @@ namespace anchorbench::eval {
 
 // The oracle of Sec. IV-B: the true PDOP, Eq. (3) at the true anchor, below a threshold; O(1) per
 // sample. It needs the truth, so it lives here, not in the estimator.
+// With `bias_aware`, the true bias-aware DOP instead (the 4-column oracle, dop4_true).
 class TruePdopTrigger : public estimator::InitTrigger {
  public:
-  TruePdopTrigger(const Eigen::Vector3d& p_world_anchor, double threshold)
-      : geometry_(p_world_anchor), threshold_(threshold) {}
+  TruePdopTrigger(const Eigen::Vector3d& p_world_anchor, double threshold, bool bias_aware = false)
+      : geometry_(p_world_anchor), threshold_(threshold), bias_aware_(bias_aware) {}
   bool Fire(const estimator::TriggerInput& in) override {
     geometry_.Add(in.sample_p_world_tag);
-    return in.eligible && geometry_.Pdop() < threshold_;
+    return in.eligible && (bias_aware_ ? geometry_.BiasAwareDop() : geometry_.Pdop()) < threshold_;
   }
 
  private:
   TrueGeometry geometry_;
   double threshold_;
+  bool bias_aware_;
 };
 
-// pdop_true: built from the trigger context's reference position (the truth), refused without it.
+// pdop_true and dop4_true: built from the trigger context's reference position (the truth),
+// refused without it.
 void RegisterOracleTriggers(registry::TriggerRegistry& registry);
 
 // The built-in parts and the oracles: what the anchorbench command offers.
