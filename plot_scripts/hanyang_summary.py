@@ -35,6 +35,28 @@ for case in cases:
         errors = [number(r["err_m"]) for r in rows if r["method"] == method and r["initialized"] == "1"]
         cells.append(f"{len(errors)}: {sum(errors) / len(errors):.2f} / {max(errors):.2f} m" if errors else "0")
     lines.append(f"| {case.name} | " + " | ".join(cells) + " |")
+# Horizontal and vertical errors apart, without and with the mirror check (docs/method.md):
+# initialized anchors of the 32, their median x-y and z error, and how many the check refused.
+checked_root = RESULTS / "hanyang_height_check"
+if checked_root.exists():
+    lines += ["", "x-y and z errors over all 8 cases (32 anchor runs), without and with the mirror check "
+              "(`configs/hanyang_height_check.yaml`, results/hanyang_height_check/): initialized, median x-y / z "
+              "error, refused as height_unobservable.", "",
+              "| trigger | without: init, x-y / z (m) | with the check: init, x-y / z (m), refused |", "|---|---|---|"]
+
+    def pooled(folder, method):
+        rows = [r for case in cases for r in read_csv(folder / case.name / "estimates.csv") if r["method"] == method]
+        done = [r for r in rows if r["initialized"] == "1"]
+        xy = sorted(number(r["err_xy"]) for r in done)
+        z = sorted(number(r["err_z"]) for r in done)
+        median = (lambda v: v[len(v) // 2] if v else float("nan"))
+        refused = sum(r["status"] == "height_unobservable" for r in rows)
+        return len(done), median(xy), median(z), refused
+
+    for method in methods:
+        n0, xy0, z0, _ = pooled(root, method)
+        n1, xy1, z1, refused = pooled(checked_root, method)
+        lines.append(f"| {method} | {n0}, {xy0:.2f} / {z0:.2f} | {n1}, {xy1:.2f} / {z1:.2f}, {refused} |")
 (root / "summary.md").write_text("\n".join(lines) + "\n")
 print(f"wrote {(root / 'summary.md').relative_to(RESULTS.parent)}")
 

@@ -194,6 +194,21 @@ def bias_aware_sweep():
     return table(["trigger", "threshold", "row 1: Avg, >1 m, Init (of 300)", "row 4: Avg, >1 m, Init (of 300)"], out)
 
 
+def height_check_table():
+    without = {(r["row"], r["method"]): r for r in read("bias_aware/summary.csv")}
+    with_check = {(r["row"], r["method"]): r for r in read("height_check/summary.csv")}
+
+    def cell(r):
+        avg = f"{float(r['avg_m']):.2f} m" if r["avg_m"] else "-"
+        return f"{avg}, {float(r['ratio_pct'] or 0):.1f}%, {r['init']}"
+
+    rows = []
+    for method in ("fixed_window", "pdop_closest_point", "dop4_closest_point", "dop4_confidence"):
+        for row_id in ("1", "4"):
+            rows.append([method, row_id, cell(without[(row_id, method)]), cell(with_check[(row_id, method)])])
+    return table(["trigger", "row", "without: Avg, >1 m, Init (of 600)", "with the mirror check"], rows)
+
+
 def performance_bullets():
     solvers = {(r["solver"], int(r["samples"])): r for r in read("benchmarks/solvers.csv")}
 
@@ -230,7 +245,8 @@ def performance_bullets():
 
 GENERATORS = {f.__name__: f for f in (stress_triggers, stress_solvers, stress_costs, table1_against_paper,
                                       replay_throughput, performance_bullets, credibility_table,
-                                      credibility_table1, bias_aware_table, bias_aware_sweep)}
+                                      credibility_table1, bias_aware_table, bias_aware_sweep,
+                                      height_check_table)}
 MARKER = re.compile(r"(<!-- generated: (\w+) \(scripts/docs_tables.py\) -->\n)(.*?)(<!-- end generated -->)", re.S)
 
 

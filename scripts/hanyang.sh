@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # Converts and replays every case of the Hanyang outdoor UWB dataset (../shared/data/hanyang-uwb)
-# with the PDOP-gated initializer and the fixed window: results/hanyang/<case>/estimates.csv and
-# results/hanyang/summary.md. Skips (exit 0) when the dataset is not beside the checkout.
+# with the PDOP-gated initializer, the bias-aware triggers and the fixed window:
+# results/hanyang/<case>/estimates.csv and results/hanyang/summary.md; again with the mirror check
+# on (configs/hanyang_height_check.yaml): results/hanyang_height_check/<case>/. Skips (exit 0) when the dataset is not beside the checkout.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 data=${HANYANG_DATA:-../shared/data/hanyang-uwb}
@@ -16,5 +17,8 @@ for case_dir in "$data"/*/Trajectory_*/Case_*; do
   "$bin" replay --poses "build/hanyang/$name/poses.csv" --ranges "build/hanyang/$name/ranges.csv" \
     --anchors "build/hanyang/$name/anchors.csv" --config configs/hanyang.yaml \
     --trace "build/hanyang/$name/trace.csv" --out "results/hanyang/$name" --overwrite >/dev/null 2>&1
+  "$bin" replay --poses "build/hanyang/$name/poses.csv" --ranges "build/hanyang/$name/ranges.csv" \
+    --anchors "build/hanyang/$name/anchors.csv" --config configs/hanyang_height_check.yaml \
+    --out "results/hanyang_height_check/$name" --overwrite --quiet >/dev/null
 done
 /usr/bin/python3 plot_scripts/hanyang_summary.py

@@ -15,6 +15,7 @@ done
 "$bin" pdop-study configs/pdop_study.yaml --out results/pdop_study --quiet --overwrite
 bash scripts/halls.sh
 "$bin" run configs/bias_aware.yaml --out results/bias_aware --quiet --overwrite
+"$bin" run configs/height_check.yaml --out results/height_check --quiet --overwrite
 for sweep in sweep_bias_aware stress stress_ransac; do
   "$bin" sweep "configs/$sweep.yaml" --out "results/$sweep" --quiet --overwrite
 done

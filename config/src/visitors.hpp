@@ -156,6 +156,12 @@ void Estimator(V& v, registry::EstimatorConfig& o, const registry::Components& p
   v.Section("trigger", [&](auto& s) { Trigger(s, o); });
   v.Section("ls", [&](auto& s) { Ls(s, o.solver_options.ls); });
   v.Section("nls", [&](auto& s) { Nls(s, o.solver_options.nls); });
+  v.Section("height_check", [&](auto& s) {
+    s.Flag("enabled", o.initializer.height_check.enabled);
+    s.Number("min_evidence", o.initializer.height_check.min_evidence);
+    s.Number("trim_fraction", o.initializer.height_check.trim_fraction);
+    s.Check(o.initializer.height_check);
+  });
 }
 
 template <typename V>

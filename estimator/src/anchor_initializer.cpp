@@ -29,7 +29,7 @@ bool InitializerOptions::IsValid(std::string* why) const {
   if (max_buffered_samples / 2 < min_samples) {
     return fail("max_buffered_samples must be >= 2 min_samples (a thinned buffer keeps half)");
   }
-  return true;
+  return height_check.IsValid(why);
 }
 
 AnchorInitializer::AnchorInitializer(int anchor_id, const InitializerOptions& options,
@@ -39,7 +39,9 @@ AnchorInitializer::AnchorInitializer(int anchor_id, const InitializerOptions& op
       options_(options),
       filter_(std::move(filter)),
       trigger_(std::move(trigger)),
-      solver_(filter_->AtSolve(std::move(solver))) {}
+      solver_(filter_->AtSolve(std::move(solver))) {
+  if (options_.height_check.enabled) solver_ = std::make_shared<HeightCheckedSolver>(solver_, options_.height_check);
+}
 
 InitEvent AnchorInitializer::SolveNow(double t_s, double pdop) {
   InitEvent event;

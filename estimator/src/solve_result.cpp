@@ -10,6 +10,7 @@ std::string_view ToString(SolveStatus status) {
     case SolveStatus::kTooFewSamples: return "too_few_samples";
     case SolveStatus::kDegenerateGeometry: return "degenerate_geometry";
     case SolveStatus::kNumericalFailure: return "numerical_failure";
+    case SolveStatus::kHeightUnobservable: return "height_unobservable";
   }
   return "unknown";
 }

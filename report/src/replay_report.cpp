@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <iomanip>
+#include <optional>
 #include <string>
 
 #include "anchorbench/io/format.hpp"
@@ -14,10 +15,20 @@ using io::FormatNumber;
 using io::FormatOptional;
 
 constexpr const char* kEstimateColumns[] = {"anchor_id", "method", "initialized", "t_init", "n_used", "pdop_est",
-                                            "pdop_true", "x", "y", "z", "bias", "err_m"};
+                                            "pdop_true", "x", "y", "z", "bias", "err_m", "status", "err_xy", "err_z"};
 
 // Three decimals for a terminal, or the shortest text where that would be a wall of digits.
 std::string ForTerminal(double value) { return std::abs(value) < 1e9 ? FormatFixed(value, 3) : FormatNumber(value); }
+
+// The horizontal and the vertical part of an initialized attempt's error, where the truth is known.
+std::optional<double> ErrorXy(const runner::Attempt& a) {
+  if (!a.evaluation || !a.evaluation->error_xyz_m) return std::nullopt;
+  return a.evaluation->error_xyz_m->head<2>().norm();
+}
+std::optional<double> ErrorZ(const runner::Attempt& a) {
+  if (!a.evaluation || !a.evaluation->error_xyz_m) return std::nullopt;
+  return std::abs(a.evaluation->error_xyz_m->z());
+}
 
 // The columns of estimates.csv for one attempt, as text (empty where not applicable).
 std::vector<std::string> EstimateFields(const runner::Attempt& a) {
@@ -34,7 +45,10 @@ std::vector<std::string> EstimateFields(const runner::Attempt& a) {
           has_estimate ? FormatNumber(p.y()) : "",
           has_estimate ? FormatNumber(p.z()) : "",
           has_estimate ? FormatNumber(a.solve->bias_m) : "",
-          a.evaluation ? FormatOptional(a.evaluation->error_m) : ""};
+          a.evaluation ? FormatOptional(a.evaluation->error_m) : "",
+          a.status,
+          ErrorXy(a) ? FormatNumber(*ErrorXy(a)) : "",
+          ErrorZ(a) ? FormatNumber(*ErrorZ(a)) : ""};
 }
 
 }  // namespace
@@ -50,7 +64,7 @@ void WriteEstimates(std::ostream& out, const std::vector<runner::Attempt>& attem
 }
 
 void PrintEstimates(std::ostream& out, const std::vector<runner::Attempt>& attempts) {
-  constexpr int kWidth[] = {10, 20, 12, 10, 8, 10, 10, 10, 10, 10, 10, 10};
+  constexpr int kWidth[] = {10, 20, 12, 10, 8, 10, 10, 10, 10, 10, 10, 10, 21, 10, 10};
   for (std::size_t i = 0; i < std::size(kEstimateColumns); ++i) out << std::setw(kWidth[i]) << kEstimateColumns[i];
   out << '\n';
   for (const runner::Attempt& a : attempts) {
@@ -66,6 +80,8 @@ void PrintEstimates(std::ostream& out, const std::vector<runner::Attempt>& attem
       fields[10] = ForTerminal(a.solve->bias_m);
     }
     if (a.evaluation && a.evaluation->error_m) fields[11] = ForTerminal(*a.evaluation->error_m);
+    if (ErrorXy(a)) fields[13] = ForTerminal(*ErrorXy(a));
+    if (ErrorZ(a)) fields[14] = ForTerminal(*ErrorZ(a));
     for (std::size_t i = 0; i < fields.size(); ++i) out << std::setw(kWidth[i]) << (fields[i].empty() ? "-" : fields[i]);
     out << '\n';
   }

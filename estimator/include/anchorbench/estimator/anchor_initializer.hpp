@@ -12,6 +12,7 @@
 #include "anchorbench/estimator/anchor_solver.hpp"
 #include "anchorbench/estimator/closest_point_pdop.hpp"
 #include "anchorbench/estimator/consistency_filter.hpp"
+#include "anchorbench/estimator/height_check.hpp"
 #include "anchorbench/estimator/init_trigger.hpp"
 #include "anchorbench/estimator/outlier_filter.hpp"
 #include "anchorbench/estimator/range_sample.hpp"
@@ -38,6 +39,9 @@ struct InitializerOptions {
   // 6002 samples), so it changes none of their numbers.
   int max_buffered_samples = 50000;
   BufferPolicy at_cap = BufferPolicy::kThin;
+  // Off by default (the paper has none): every solve of the initializer, after its filter, must
+  // beat its mirror through the tags' plane, else it counts as failed (height_unobservable).
+  HeightCheckOptions height_check;
 
   bool IsValid(std::string* why) const;
 };

@@ -14,6 +14,7 @@ enum class SolveStatus {
   kTooFewSamples,       // fewer samples than unknowns (4) plus one
   kDegenerateGeometry,  // normal equations numerically singular (e.g. collinear tag positions)
   kNumericalFailure,    // a non-finite value appeared; no estimate
+  kHeightUnobservable,  // the estimate's mirror through the tags' plane fits as well (HeightCheckedSolver)
 };
 
 std::string_view ToString(SolveStatus status);

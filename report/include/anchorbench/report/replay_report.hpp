@@ -9,7 +9,7 @@
 
 namespace anchorbench::report {
 
-// estimates.csv: anchor_id,method,initialized,t_init,n_used,pdop_est,pdop_true,x,y,z,bias,err_m
+// estimates.csv: anchor_id,method,initialized,t_init,n_used,pdop_est,pdop_true,x,y,z,bias,err_m,status,err_xy,err_z
 void WriteEstimates(std::ostream& out, const std::vector<runner::Attempt>& attempts);
 // The same, aligned for a terminal.
 void PrintEstimates(std::ostream& out, const std::vector<runner::Attempt>& attempts);

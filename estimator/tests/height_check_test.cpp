@@ -1,0 +1,80 @@
+// The mirror check: on a flat path the reflected anchor fits as well and the solve is refused as
+// height_unobservable; with height variation in the path the estimate beats its mirror.
+#include "anchorbench/estimator/height_check.hpp"
+
+#include <cmath>
+#include <memory>
+
+#include <gtest/gtest.h>
+
+#include "anchorbench/estimator/anchor_solver.hpp"
+#include "anchorbench/testing/test_data.hpp"
+
+namespace anchorbench::estimator {
+namespace {
+
+const Eigen::Vector3d kAnchor(3.0, 4.0, 4.5);
+
+// A tag weaving in x-y at 1.5 m with a vertical wobble of `wobble_m`.
+testing::AnchorData Path(double wobble_m, double sigma_m, std::uint64_t seed) {
+  auto rng = testing::TestStream(seed);
+  testing::AnchorData data{kAnchor, 0.2, {}, {}};
+  for (int k = 0; k < 400; ++k) {
+    const double t = 0.1 * k;
+    const Eigen::Vector3d p(-10.0 + 0.5 * t, 3.0 * std::sin(0.4 * t), 1.5 + wobble_m * std::sin(0.9 * t));
+    data.p_world_tag.push_back(p);
+    data.range_m.push_back((p - kAnchor).norm() + 0.2 + sigma_m * rng.Normal());
+  }
+  return data;
+}
+
+// LS + L2 refinement, wrapped in the check or not.
+std::shared_ptr<const Solver> Checked(bool checked) {
+  AnchorSolverOptions options;
+  options.nls.kernel = KernelMode::kL2;
+  options.nls.kernel_scale_m = 0.05;
+  auto solver = std::make_shared<AnchorSolver>(options);
+  if (!checked) return solver;
+  return std::make_shared<HeightCheckedSolver>(solver, HeightCheckOptions{});
+}
+
+// Exactly flat, the LS is already degenerate; a 3 mm wobble makes it solvable, and the mirror
+// as good: unchecked, this noise draw converges to the mirror, 6 m off, as "converged".
+TEST(HeightCheck, ANearlyFlatPathIsHeightUnobservableNotAConfidentHeight) {
+  const testing::AnchorData flat = Path(0.003, 0.05, 2);
+  const SolveResult unchecked = Checked(false)->Solve(flat.p_world_tag, flat.range_m);
+  ASSERT_TRUE(Succeeded(unchecked.status));
+  EXPECT_GT((unchecked.p_world_anchor - kAnchor).norm(), 5.0);
+  EXPECT_LT(unchecked.p_world_anchor.z(), 1.5);  // below the path: the mirror
+  const SolveResult checked = Checked(true)->Solve(flat.p_world_tag, flat.range_m);
+  EXPECT_EQ(checked.status, SolveStatus::kHeightUnobservable);
+  for (std::uint64_t seed : {1, 3}) {  // the draws that land on the truth are refused as well
+    const testing::AnchorData other = Path(0.003, 0.05, seed);
+    EXPECT_EQ(Checked(true)->Solve(other.p_world_tag, other.range_m).status, SolveStatus::kHeightUnobservable);
+  }
+}
+
+TEST(HeightCheck, APathThatChangesHeightBeatsItsMirror) {
+  const testing::AnchorData varied = Path(0.1, 0.05, 2);  // 10 cm of height change already suffice
+  const SolveResult result = Checked(true)->Solve(varied.p_world_tag, varied.range_m);
+  ASSERT_TRUE(Succeeded(result.status)) << ToString(result.status);
+  EXPECT_LT((result.p_world_anchor - kAnchor).norm(), 0.2);
+  EXPECT_GT(MirrorEvidence(varied.p_world_tag, varied.range_m, result, 0.1), 100.0);
+}
+
+TEST(HeightCheck, OffByDefaultAndAnchorOnThePlaneHasNoMirror) {
+  EXPECT_FALSE(HeightCheckOptions{}.enabled);
+  const testing::AnchorData flat = Path(0.03, 0.05, 3);
+  EXPECT_TRUE(Succeeded(Checked(false)->Solve(flat.p_world_tag, flat.range_m).status));
+  SolveResult on_plane;
+  on_plane.p_world_anchor = Eigen::Vector3d(3.0, 4.0, 1.5);
+  EXPECT_TRUE(std::isinf(MirrorEvidence(flat.p_world_tag, flat.range_m, on_plane, 0.1)));
+  std::string why;
+  HeightCheckOptions bad;
+  bad.trim_fraction = 0.7;
+  EXPECT_FALSE(bad.IsValid(&why));
+  EXPECT_NE(why.find("trim_fraction"), std::string::npos);
+}
+
+}  // namespace
+}  // namespace anchorbench::estimator
