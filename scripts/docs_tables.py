@@ -209,6 +209,22 @@ def height_check_table():
     return table(["trigger", "row", "without: Avg, >1 m, Init (of 600)", "with the mirror check"], rows)
 
 
+def flat_path_table():
+    """The fixed window on the flat floor, per row: initialized, > 1 m, median x-y and z error."""
+    attempts = [a for a in read("flat_path/attempts.csv") if a["method"] == "fixed_window"]
+    rows = []
+    for name in dict.fromkeys(a["row"] for a in attempts):
+        mine = [a for a in attempts if a["row"] == name]
+        done = [a for a in mine if a["initialized"] == "1"]
+        xy = sorted((float(a["err_x"]) ** 2 + float(a["err_y"]) ** 2) ** 0.5 for a in done)
+        z = sorted(abs(float(a["err_z"])) for a in done)
+        bad = sum(float(a["err_m"]) > 1.0 for a in done)
+        refused = sum(a["status"] == "height_unobservable" for a in mine)
+        rows.append([name, f"{len(done)} / {len(mine)}", refused, f"{100 * bad / len(done):.1f}%" if done else "-",
+                     f"{xy[len(xy) // 2]:.3f} m" if done else "-", f"{z[len(z) // 2]:.3f} m" if done else "-"])
+    return table(["row", "initialized", "height_unobservable", "> 1 m", "median x-y error", "median z error"], rows)
+
+
 def performance_bullets():
     solvers = {(r["solver"], int(r["samples"])): r for r in read("benchmarks/solvers.csv")}
 
@@ -246,7 +262,7 @@ def performance_bullets():
 GENERATORS = {f.__name__: f for f in (stress_triggers, stress_solvers, stress_costs, table1_against_paper,
                                       replay_throughput, performance_bullets, credibility_table,
                                       credibility_table1, bias_aware_table, bias_aware_sweep,
-                                      height_check_table)}
+                                      height_check_table, flat_path_table)}
 MARKER = re.compile(r"(<!-- generated: (\w+) \(scripts/docs_tables.py\) -->\n)(.*?)(<!-- end generated -->)", re.S)
 
 

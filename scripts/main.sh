@@ -16,6 +16,7 @@ done
 bash scripts/halls.sh
 "$bin" run configs/bias_aware.yaml --out results/bias_aware --quiet --overwrite
 "$bin" run configs/height_check.yaml --out results/height_check --quiet --overwrite
+"$bin" run configs/flat_path.yaml --out results/flat_path --quiet --overwrite
 for sweep in sweep_bias_aware stress stress_ransac; do
   "$bin" sweep "configs/$sweep.yaml" --out "results/$sweep" --quiet --overwrite
 done

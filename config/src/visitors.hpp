@@ -160,6 +160,8 @@ void Estimator(V& v, registry::EstimatorConfig& o, const registry::Components& p
     s.Flag("enabled", o.initializer.height_check.enabled);
     s.Number("min_evidence", o.initializer.height_check.min_evidence);
     s.Number("trim_fraction", o.initializer.height_check.trim_fraction);
+    s.Choice("side", o.initializer.height_check.side, estimator::ParseSide,
+             [](auto side) { return estimator::ToString(side); }, "any, above, below");
     s.Check(o.initializer.height_check);
   });
 }

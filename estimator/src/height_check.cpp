@@ -50,40 +50,83 @@ bool HeightCheckOptions::IsValid(std::string* why) const {
   return true;
 }
 
-double MirrorEvidence(std::span<const Eigen::Vector3d> p_world_tag, std::span<const double> range_m,
-                      const SolveResult& estimate, double trim_fraction) {
-  constexpr double kInf = std::numeric_limits<double>::infinity();
+std::string_view ToString(HeightCheckOptions::Side side) {
+  switch (side) {
+    case HeightCheckOptions::Side::kAny: return "any";
+    case HeightCheckOptions::Side::kAbove: return "above";
+    case HeightCheckOptions::Side::kBelow: return "below";
+  }
+  return "any";
+}
+
+bool ParseSide(std::string_view name, HeightCheckOptions::Side* side) {
+  for (auto candidate : {HeightCheckOptions::Side::kAny, HeightCheckOptions::Side::kAbove, HeightCheckOptions::Side::kBelow}) {
+    if (name == ToString(candidate)) {
+      *side = candidate;
+      return true;
+    }
+  }
+  return false;
+}
+
+Mirror MirrorOf(std::span<const Eigen::Vector3d> p_world_tag, std::span<const double> range_m,
+                const SolveResult& estimate, double trim_fraction) {
+  Mirror mirror;
   const std::size_t n = p_world_tag.size();
-  if (n < 5) return kInf;
+  if (n < 5) return mirror;
   // The plane of the tag positions: through their centroid, normal to their least spread.
   Eigen::Vector3d centroid = Eigen::Vector3d::Zero();
   for (const Eigen::Vector3d& p : p_world_tag) centroid += p;
   centroid /= static_cast<double>(n);
   Eigen::Matrix3d scatter = Eigen::Matrix3d::Zero();
   for (const Eigen::Vector3d& p : p_world_tag) scatter.noalias() += (p - centroid) * (p - centroid).transpose();
-  const Eigen::Vector3d normal = Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d>(scatter).eigenvectors().col(0);
-  const double height_m = (estimate.p_world_anchor - centroid).dot(normal);
-  if (std::abs(height_m) < kOnPlaneM) return kInf;
-  const Eigen::Vector3d p_mirror = estimate.p_world_anchor - 2.0 * height_m * normal;
+  mirror.normal = Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d>(scatter).eigenvectors().col(0);
+  if (mirror.normal.z() < 0.0) mirror.normal = -mirror.normal;
+  mirror.height_m = (estimate.p_world_anchor - centroid).dot(mirror.normal);
+  if (std::abs(mirror.height_m) < kOnPlaneM) return mirror;
+  mirror.exists = true;
+  mirror.p_world_mirror = estimate.p_world_anchor - 2.0 * mirror.height_m * mirror.normal;
 
   const std::vector<double> own = Residuals(p_world_tag, range_m, estimate.p_world_anchor, estimate.bias_m);
-  std::vector<double> mirror = Residuals(p_world_tag, range_m, p_mirror, 0.0);
-  const double bias_mirror_m = Median(mirror);
-  for (double& r : mirror) r -= bias_mirror_m;
+  std::vector<double> reflected = Residuals(p_world_tag, range_m, mirror.p_world_mirror, 0.0);
+  mirror.bias_mirror_m = Median(reflected);
+  for (double& r : reflected) r -= mirror.bias_mirror_m;
 
   std::vector<double> deviations(own.size());
   const double own_median = Median(own);
   for (std::size_t k = 0; k < own.size(); ++k) deviations[k] = std::abs(own[k] - own_median);
   const double sigma_m = std::max(kMadToSigma * Median(deviations), kMinSigmaM);
-  return (TrimmedSquares(mirror, trim_fraction) - TrimmedSquares(own, trim_fraction)) / (sigma_m * sigma_m);
+  mirror.evidence =
+      (TrimmedSquares(reflected, trim_fraction) - TrimmedSquares(own, trim_fraction)) / (sigma_m * sigma_m);
+  return mirror;
+}
+
+double MirrorEvidence(std::span<const Eigen::Vector3d> p_world_tag, std::span<const double> range_m,
+                      const SolveResult& estimate, double trim_fraction) {
+  return MirrorOf(p_world_tag, range_m, estimate, trim_fraction).evidence;
 }
 
 SolveResult HeightCheckedSolver::Solve(std::span<const Eigen::Vector3d> p_world_tag, std::span<const double> range_m) const {
+  using Side = HeightCheckOptions::Side;
   SolveResult result = inner_->Solve(p_world_tag, range_m);
-  if (Succeeded(result.status) &&
-      MirrorEvidence(p_world_tag, range_m, result, options_.trim_fraction) < options_.min_evidence) {
+  if (!Succeeded(result.status)) return result;
+  const Mirror mirror = MirrorOf(p_world_tag, range_m, result, options_.trim_fraction);
+  if (!mirror.exists || mirror.evidence >= options_.min_evidence) return result;  // the data decide
+  // Ambiguous. Without a usable side prior, say so.
+  constexpr double kMinNormalZ = 0.5;  // cos(60 deg): a steeper plane has no above and below
+  if (options_.side == Side::kAny || mirror.normal.z() < kMinNormalZ) {
     result.status = SolveStatus::kHeightUnobservable;
+    return result;
   }
+  const bool above = mirror.height_m > 0.0;
+  if (above == (options_.side == Side::kAbove)) return result;
+  // The prior's side is the mirror's: reflect the estimate, its bias refit, its covariance.
+  const Eigen::Matrix3d reflection = Eigen::Matrix3d::Identity() - 2.0 * mirror.normal * mirror.normal.transpose();
+  Eigen::Matrix4d to_mirror = Eigen::Matrix4d::Identity();
+  to_mirror.topLeftCorner<3, 3>() = reflection;
+  result.p_world_anchor = mirror.p_world_mirror;
+  result.bias_m = mirror.bias_mirror_m;
+  result.covariance = to_mirror * result.covariance * to_mirror.transpose();
   return result;
 }
 

@@ -62,6 +62,34 @@ TEST(HeightCheck, APathThatChangesHeightBeatsItsMirror) {
   EXPECT_GT(MirrorEvidence(varied.p_world_tag, varied.range_m, result, 0.1), 100.0);
 }
 
+// With the anchor's side known, an ambiguous estimate on the wrong side becomes its mirror (the
+// truth here), one on the right side stands; a wrong prior puts the anchor on the wrong side.
+TEST(HeightCheck, ASidePriorResolvesTheMirror) {
+  AnchorSolverOptions options;
+  options.nls.kernel = KernelMode::kL2;
+  options.nls.kernel_scale_m = 0.05;
+  auto solver = std::make_shared<AnchorSolver>(options);
+  HeightCheckOptions above;
+  above.side = HeightCheckOptions::Side::kAbove;
+  HeightCheckOptions below = above;
+  below.side = HeightCheckOptions::Side::kBelow;
+  for (std::uint64_t seed : {1, 2, 3}) {  // seed 2 converges to the mirror unchecked
+    const testing::AnchorData flat = Path(0.003, 0.05, seed);
+    const SolveResult right = HeightCheckedSolver(solver, above).Solve(flat.p_world_tag, flat.range_m);
+    ASSERT_TRUE(Succeeded(right.status)) << "seed " << seed;
+    EXPECT_LT((right.p_world_anchor - kAnchor).norm(), 0.3) << "seed " << seed;
+    EXPECT_NEAR(right.bias_m, 0.2, 0.1) << "seed " << seed;
+    const SolveResult wrong = HeightCheckedSolver(solver, below).Solve(flat.p_world_tag, flat.range_m);
+    ASSERT_TRUE(Succeeded(wrong.status));
+    EXPECT_LT(wrong.p_world_anchor.z(), 1.5) << "seed " << seed;  // below the path: the prior's cost
+    EXPECT_NEAR(wrong.p_world_anchor.head<2>().x(), kAnchor.x(), 0.3);  // x-y survive a wrong prior
+  }
+  HeightCheckOptions::Side side;
+  EXPECT_TRUE(ParseSide("below", &side));
+  EXPECT_EQ(side, HeightCheckOptions::Side::kBelow);
+  EXPECT_FALSE(ParseSide("up", &side));
+}
+
 TEST(HeightCheck, OffByDefaultAndAnchorOnThePlaneHasNoMirror) {
   EXPECT_FALSE(HeightCheckOptions{}.enabled);
   const testing::AnchorData flat = Path(0.03, 0.05, 3);

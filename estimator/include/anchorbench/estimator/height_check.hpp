@@ -1,8 +1,10 @@
 #pragma once
 
+#include <limits>
 #include <memory>
 #include <span>
 #include <string>
+#include <string_view>
 
 #include <Eigen/Core>
 
@@ -18,16 +20,38 @@ namespace anchorbench::estimator {
 // fits. The evidence is the trimmed sum of squared residuals of the mirror minus the estimate's,
 // in units of the estimate's robust residual variance (1.4826 MAD)^2: a log-likelihood ratio
 // (x2) under Gaussian noise, robust to the outliers the trimming drops.
+//
+// A side prior resolves the ambiguity where the user knows it (anchors on the ceiling above a
+// ground robot): with `side` above or below, an ambiguous estimate on the other side of the tags'
+// plane is replaced by its mirror (bias refit there, covariance reflected), and an ambiguous one
+// on the prior's side is accepted. Where the data decide (evidence >= min_evidence) they win over
+// the prior. "Above" is the side the plane's normal points to with a positive z; a plane within
+// 60 degrees of vertical has no above, and the prior is not used.
 struct HeightCheckOptions {
+  enum class Side { kAny, kAbove, kBelow };
   bool enabled = false;       // off: the paper's estimator, which has no such check
   double min_evidence = 9.21; // below this the mirror is within a likelihood ratio of 100: ambiguous
   double trim_fraction = 0.1; // the largest residuals of each fit left out of its sum
+  Side side = Side::kAny;     // the anchor's side of the tags' plane, if known
 
   bool IsValid(std::string* why) const;
 };
+std::string_view ToString(HeightCheckOptions::Side side);
+bool ParseSide(std::string_view name, HeightCheckOptions::Side* side);
 
-// The evidence against the mirror of `estimate` (see above); +infinity when there is no mirror to
-// fear: the estimate on the tags' plane (within 1 mm), or fewer than 5 samples.
+// An estimate's mirror through the plane of the tag positions.
+struct Mirror {
+  bool exists = false;  // false: fewer than 5 samples, or the estimate within 1 mm of the plane
+  double evidence = std::numeric_limits<double>::infinity();  // against the mirror (see above)
+  Eigen::Vector3d normal = Eigen::Vector3d::UnitZ();          // of the plane, z component >= 0
+  double height_m = 0.0;                                      // of the estimate along the normal
+  Eigen::Vector3d p_world_mirror = Eigen::Vector3d::Zero();
+  double bias_mirror_m = 0.0;
+};
+Mirror MirrorOf(std::span<const Eigen::Vector3d> p_world_tag, std::span<const double> range_m,
+                const SolveResult& estimate, double trim_fraction);
+
+// The evidence against the mirror of `estimate`; +infinity where there is none.
 double MirrorEvidence(std::span<const Eigen::Vector3d> p_world_tag, std::span<const double> range_m,
                       const SolveResult& estimate, double trim_fraction);
 
