@@ -6,8 +6,8 @@
 
 namespace anchorbench::app {
 
-Progress::Progress(std::string label, bool quiet, std::string unit)
-    : label_(std::move(label)), unit_(std::move(unit)), scale_(unit_ == "MB" ? 1e6 : 1.0), quiet_(quiet), terminal_(::isatty(STDERR_FILENO) != 0),
+Progress::Progress(std::string label, bool quiet, std::string unit, double per_unit)
+    : label_(std::move(label)), unit_(std::move(unit)), scale_(per_unit), quiet_(quiet), terminal_(::isatty(STDERR_FILENO) != 0),
       start_(std::chrono::steady_clock::now()), last_print_(start_) {}
 
 double Progress::elapsed_s() const {

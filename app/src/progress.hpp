@@ -9,8 +9,8 @@ namespace anchorbench::app {
 // summary line at the end; nothing when quiet.
 class Progress {
  public:
-  // `unit` names what is counted ("realizations"; "MB" for bytes read, shown in megabytes).
-  Progress(std::string label, bool quiet, std::string unit = "realizations");
+  // `unit` names what is shown; `per_unit` counted items make one (1e6 bytes for "MB").
+  Progress(std::string label, bool quiet, std::string unit = "realizations", double per_unit = 1.0);
   void Update(long long done, long long total);
   void Finish(long long total);  // the closing line (both modes)
   double elapsed_s() const;

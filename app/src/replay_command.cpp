@@ -16,6 +16,8 @@
 namespace anchorbench::app {
 namespace {
 
+constexpr double kBytesPerMb = 1e6;  // progress counts bytes read, shows megabytes
+
 std::vector<std::filesystem::path> Inputs(const ReplayArgs& args) {
   std::vector<std::filesystem::path> inputs = {args.poses};
   for (const std::string& ranges : args.ranges) inputs.emplace_back(ranges);
@@ -35,7 +37,7 @@ io::LogPolicy PolicyOf(const ReplayArgs& args) {
 // The first pass: every file read to the end under the policy, so that a malformed file or a
 // refused row ends the command before any output exists.
 io::LogSurvey Survey(const io::LogFiles& files, const io::LogPolicy& policy, bool quiet) {
-  Progress progress("replay: checking", quiet, "MB");
+  Progress progress("replay: checking", quiet, "MB", kBytesPerMb);
   io::LogSurvey survey =
       io::SurveyLog(files, policy, [&](std::uint64_t done, std::uint64_t total) { progress.Update(done, total); });
   if (!quiet && progress.elapsed_s() > 1.0) progress.Finish(static_cast<long long>(survey.bytes));
@@ -77,7 +79,7 @@ int ReplayCommand(const ReplayArgs& args, const AppContext& app) {
   // The second pass, streamed: one row at a time from the files into the front end.
   report::ReplaySummary summary{files, policy, survey.pose_rows, survey.range_rows, {}, {}};
   io::RecordedLog log(files, policy, survey.default_tag_id, summary.drops);
-  Progress progress("replay", args.quiet, "MB");
+  Progress progress("replay", args.quiet, "MB", kBytesPerMb);
   std::int64_t rows = 0;
   const runner::LogSource source = [&](io::RecordedLog::Kind& kind, io::PoseRecord& pose, io::RangeRecord& range) {
     if ((++rows & 0xffff) == 0) progress.Update(static_cast<long long>(log.bytes_read()), static_cast<long long>(survey.bytes));

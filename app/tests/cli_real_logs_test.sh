@@ -3,12 +3,8 @@
 # the estimates of its clean version, counts what it dropped, and --strict refuses it; conflicting
 # poses and late rows follow their policies; one file per anchor and a sort window give the same
 # bytes as the clean single file; a malformed file is one error with file:line and no output.
-set -u
-bin="$1"
-dir=$(mktemp -d)
-trap 'rm -rf "$dir"' EXIT
-failures=0
-fail() { echo "FAIL: $*"; failures=$((failures + 1)); }
+# shellcheck source=common.sh
+source "$(dirname "$0")/common.sh"
 
 # expect_refusal DESCRIPTION EXPECTED_TEXT COMMAND...: exit 2, one line naming the place, no output.
 expect_refusal() {

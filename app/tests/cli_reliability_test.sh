@@ -2,12 +2,8 @@
 # Nothing lost, nothing half-written (issue 11): one regression case per finding, each named after
 # what it protects. Every bad input must exit 2 with one line naming the place, write nothing, and
 # never crash (exit codes other than 0 and 2 fail the case).
-set -u
-bin="$1"
-dir=$(mktemp -d)
-trap 'rm -rf "$dir"' EXIT
-failures=0
-fail() { echo "FAIL: $*"; failures=$((failures + 1)); }
+# shellcheck source=common.sh
+source "$(dirname "$0")/common.sh"
 
 # expect_exit CODE DESCRIPTION EXPECTED_TEXT COMMAND...: the exit code, the text in one line of stderr.
 expect_exit() {

@@ -26,9 +26,7 @@ bool TriggerOptions::IsValid(std::string* why) const {
 }
 
 bool EstimatePdopTrigger::Fire(const TriggerInput& in) {
-  const std::size_t n = in.n_accepted;
-  if (!in.eligible || (evaluated_at_ != 0 && n < evaluated_at_ + every_)) return false;
-  evaluated_at_ = n;
+  if (!cadence_.Due(in)) return false;
   const SolveResult estimate = solver_->Solve(in.p_world_tag, in.range_m);
   return Succeeded(estimate.status) && GeometryPdop(in.p_world_tag, in.range_m, estimate.p_world_anchor) < threshold_;
 }
@@ -53,9 +51,7 @@ double WorstBiasAwareDop(std::span<const Eigen::Vector3d> p_world_tag, const Sol
 }
 
 bool ConfidenceRegionDopTrigger::Fire(const TriggerInput& in) {
-  const std::size_t n = in.n_accepted;
-  if (!in.eligible || (evaluated_at_ != 0 && n < evaluated_at_ + every_)) return false;
-  evaluated_at_ = n;
+  if (!cadence_.Due(in)) return false;
   const SolveResult estimate = solver_->Solve(in.p_world_tag, in.range_m);
   return Succeeded(estimate.status) && WorstBiasAwareDop(in.p_world_tag, estimate, sigmas_) < threshold_;
 }

@@ -1,5 +1,6 @@
 #include "anchorbench/estimator/closest_point_pdop.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 
@@ -13,10 +14,13 @@ namespace anchorbench::estimator {
 namespace {
 
 // Eq. (4) computed directly: G~ built row by row around the shortest range, row j removed.
+// The index of the shortest range: the closest point p_C.
+std::size_t Closest(const std::vector<double>& d) {
+  return static_cast<std::size_t>(std::min_element(d.begin(), d.end()) - d.begin());
+}
+
 double DirectClosestPointPdop(const std::vector<Eigen::Vector3d>& p, const std::vector<double>& d) {
-  std::size_t j = 0;
-  for (std::size_t k = 1; k < d.size(); ++k)
-    if (d[k] < d[j]) j = k;
+  const std::size_t j = Closest(d);
   Eigen::Matrix3d information = Eigen::Matrix3d::Zero();
   for (std::size_t k = 0; k < d.size(); ++k) {
     if (k == j) continue;
@@ -66,9 +70,7 @@ TEST(ClosestPointPdop, StreamingMatchesDirectEq4OverRandomSequences) {
 // The bias column: [G~ | 1] built directly about the final closest point, all N rows (the row of
 // p_C is zero in G~ but one in the bias column).
 double DirectClosestPointBiasAwareDop(const std::vector<Eigen::Vector3d>& p, const std::vector<double>& d) {
-  std::size_t j = 0;
-  for (std::size_t k = 1; k < d.size(); ++k)
-    if (d[k] < d[j]) j = k;
+  const std::size_t j = Closest(d);
   Eigen::Matrix4d information = Eigen::Matrix4d::Zero();
   for (std::size_t k = 0; k < d.size(); ++k) {
     Eigen::Vector4d row;

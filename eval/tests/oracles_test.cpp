@@ -18,12 +18,14 @@ registry::EstimatorConfig Unfiltered() {
   return config;
 }
 
-// The oracle fires on the first sample (at or after min_samples) where Eq. (3) at the true anchor
-// over the samples so far drops below the threshold.
-TEST(Oracles, TruePdopFiresWhereTheTruePdopFirstDropsBelowTheThreshold) {
+// The sample index where `trigger` fires, and where `measure` of the samples so far at the true
+// anchor first drops below `threshold` (at or after min_samples = 20).
+template <typename Measure>
+std::pair<int, int> FiredAndExpected(const std::string& trigger, const registry::EstimatorConfig& config,
+                                     Measure measure, double threshold) {
   const auto samples = testing::PassBy(kAnchor, 0.05, 2);
   const registry::Components components = MakeComponentsWithOracles();
-  estimator::AnchorInitializer initializer = registry::MakeInitializer(components, 7, Unfiltered(), "pdop_true", 0, kAnchor);
+  estimator::AnchorInitializer initializer = registry::MakeInitializer(components, 7, config, trigger, 0, kAnchor);
   int fired = -1;
   for (std::size_t i = 0; i < samples.size() && fired < 0; ++i) {
     if (initializer.Feed(samples[i]).event) fired = static_cast<int>(i);
@@ -32,29 +34,24 @@ TEST(Oracles, TruePdopFiresWhereTheTruePdopFirstDropsBelowTheThreshold) {
   std::vector<Eigen::Vector3d> p;
   for (std::size_t i = 0; i < samples.size() && expected < 0; ++i) {
     p.push_back(samples[i].p_world_tag);
-    if (p.size() >= 20 && TruePdop(p, kAnchor) < 1.0) expected = static_cast<int>(i);
+    if (p.size() >= 20 && measure(p, kAnchor) < threshold) expected = static_cast<int>(i);
   }
+  return {fired, expected};
+}
+
+// The oracle fires on the first sample (at or after min_samples) where Eq. (3) at the true anchor
+// over the samples so far drops below the threshold.
+TEST(Oracles, TruePdopFiresWhereTheTruePdopFirstDropsBelowTheThreshold) {
+  const auto [fired, expected] = FiredAndExpected("pdop_true", Unfiltered(), TruePdop, 1.0);
   ASSERT_GE(expected, 0);
   EXPECT_EQ(fired, expected);
 }
 
 // dop4_true: the same with the bias-aware DOP, which is never below the PDOP.
 TEST(Oracles, TrueBiasAwareDopFiresWhereItFirstDropsBelowItsThreshold) {
-  const auto samples = testing::PassBy(kAnchor, 0.05, 2);
-  const registry::Components components = MakeComponentsWithOracles();
   registry::EstimatorConfig config = Unfiltered();
   config.trigger.bias_aware_threshold = 1.2;
-  estimator::AnchorInitializer initializer = registry::MakeInitializer(components, 7, config, "dop4_true", 0, kAnchor);
-  int fired = -1;
-  for (std::size_t i = 0; i < samples.size() && fired < 0; ++i) {
-    if (initializer.Feed(samples[i]).event) fired = static_cast<int>(i);
-  }
-  int expected = -1;
-  std::vector<Eigen::Vector3d> p;
-  for (std::size_t i = 0; i < samples.size() && expected < 0; ++i) {
-    p.push_back(samples[i].p_world_tag);
-    if (p.size() >= 20 && BiasAwareDop(p, kAnchor) < 1.2) expected = static_cast<int>(i);
-  }
+  const auto [fired, expected] = FiredAndExpected("dop4_true", config, BiasAwareDop, 1.2);
   ASSERT_GE(expected, 0);
   EXPECT_EQ(fired, expected);
 }

@@ -64,11 +64,10 @@ void LogDrops::Count(Drop reason, int id, const std::string& source, int line) {
 }
 
 void LogDrops::Add(const LogDrops& other) {
-  for (const auto* side : {&other.ranges_, &other.poses_}) {
-    auto& mine = side == &other.ranges_ ? ranges_ : poses_;
-    for (const auto& [id, reasons] : *side) {
+  for (const auto* by_id : {&other.ranges_, &other.poses_}) {
+    for (const auto& [id, reasons] : *by_id) {
       for (const auto& [reason, tally] : reasons) {
-        DropTally& into = mine[id][reason];
+        DropTally& into = (IsPoseDrop(reason) ? poses_ : ranges_)[id][reason];
         if (into.count == 0) into.first = tally.first;
         into.count += tally.count;
         total_ += tally.count;

@@ -39,6 +39,13 @@ void CheckGroupSize(const CsvReader& csv, std::size_t rows, double t_s) {
 
 enum class Row { kEnd, kDropped, kRead };
 
+// A row the policy drops: counted under `id` (anchor or tag), or with --strict the error it is.
+void CountOrFail(const LogPolicy& policy, const CsvReader& csv, LogDrops& drops, Drop reason, int id, int line,
+                 const std::string& why) {
+  if (policy.strict) csv.FailAt(line, why + " (--strict)");
+  drops.Count(reason, id, csv.source(), line);
+}
+
 // The next row in time order: rows read by `read` (which parses and judges one, or says the file
 // ended) go through the policy's order; a late row is an error, or dropped by `drop_late`.
 template <typename Record, typename Read, typename DropLate>
@@ -103,8 +110,7 @@ PoseStream::PoseStream(std::istream& in, std::string source, const LogPolicy& po
 }
 
 void PoseStream::Dropped(Drop reason, const PoseRecord& pose, const std::string& why) {
-  if (policy_.strict) csv_.FailAt(pose.line, why + " (--strict)");
-  drops_.Count(reason, pose.tag_id, csv_.source(), pose.line);
+  CountOrFail(policy_, csv_, drops_, reason, pose.tag_id, pose.line, why);
 }
 
 bool PoseStream::NextOrdered(PoseRecord& pose) {
@@ -210,8 +216,7 @@ RangeStream::RangeStream(std::istream& in, std::string source, int file_index, c
 }
 
 void RangeStream::Dropped(Drop reason, const RangeRecord& range, const std::string& why) {
-  if (policy_.strict) csv_.FailAt(range.line, why + " (--strict)");
-  drops_.Count(reason, range.anchor_id, csv_.source(), range.line);
+  CountOrFail(policy_, csv_, drops_, reason, range.anchor_id, range.line, why);
 }
 
 bool RangeStream::NextOrdered(RangeRecord& range) {
@@ -224,16 +229,16 @@ bool RangeStream::NextOrdered(RangeRecord& range) {
     row.tag_id = tag_ >= 0 ? csv_.Integer(tag_) : *default_tag_id_;
     row.anchor_id = anchor_ >= 0 ? csv_.Integer(anchor_) : *file_anchor_id_;
     row.range_m = csv_.NumberOrNonFinite(range_);
-    const std::optional<Drop> invalid = !std::isfinite(row.range_m)       ? std::optional(Drop::kRangeNotFinite)
-                                        : row.range_m <= 0.0              ? std::optional(Drop::kRangeNotPositive)
-                                        : row.range_m > policy_.max_range_m ? std::optional(Drop::kRangeBeyondMax)
-                                                                            : std::nullopt;
-    if (!invalid) return Row::kRead;
     const std::string value = "range " + FormatNumber(row.range_m);
-    Dropped(*invalid, row,
-            value + (*invalid == Drop::kRangeNotFinite     ? " is not finite"
-                     : *invalid == Drop::kRangeNotPositive ? " is not positive"
-                                                           : " is beyond --max-range-m " + FormatNumber(policy_.max_range_m)));
+    if (!std::isfinite(row.range_m)) {
+      Dropped(Drop::kRangeNotFinite, row, value + " is not finite");
+    } else if (row.range_m <= 0.0) {
+      Dropped(Drop::kRangeNotPositive, row, value + " is not positive");
+    } else if (row.range_m > policy_.max_range_m) {
+      Dropped(Drop::kRangeBeyondMax, row, value + " is beyond --max-range-m " + FormatNumber(policy_.max_range_m));
+    } else {
+      return Row::kRead;
+    }
     return Row::kDropped;
   };
   auto drop_late = [this](const RangeRecord& row, const std::string& why) { Dropped(Drop::kLateRange, row, why); };

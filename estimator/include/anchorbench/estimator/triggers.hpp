@@ -39,22 +39,41 @@ class ClosestPointPdopTrigger : public InitTrigger {
   double threshold_;
 };
 
+// When a trigger that solves for an estimate evaluates: at the first eligible sample, then every
+// `every` accepted samples. Each solve is O(N), so solving at every sample would make an anchor
+// O(N^2).
+class SolveCadence {
+ public:
+  explicit SolveCadence(int every) : every_(static_cast<std::size_t>(every)) {}
+  bool Due(const TriggerInput& in) {
+    if (!in.eligible || (evaluated_at_ != 0 && in.n_accepted < evaluated_at_ + every_)) return false;
+    evaluated_at_ = in.n_accepted;
+    return true;
+  }
+
+ private:
+  std::size_t every_;
+  std::size_t evaluated_at_ = 0;  // sample count of the last evaluation (0: none yet)
+};
+
 // Sec. IV-B's alternatives: Eqs. (2)-(3) at the current estimate of a solver (LS, or the NLS the
 // anchor is initialized with), re-solved every `every` accepted samples.
 class EstimatePdopTrigger : public InitTrigger {
  public:
   EstimatePdopTrigger(std::shared_ptr<const Solver> solver, double threshold, int every)
-      : solver_(std::move(solver)), threshold_(threshold), every_(static_cast<std::size_t>(every)) {}
+      : solver_(std::move(solver)), threshold_(threshold), cadence_(every) {}
   bool Fire(const TriggerInput& in) override;
 
  private:
   std::shared_ptr<const Solver> solver_;
   double threshold_;
-  std::size_t every_;
-  std::size_t evaluated_at_ = 0;  // sample count of the last evaluation (0: none yet)
+  SolveCadence cadence_;
 };
 
-// Ours: the closest-point idea of Eq. (4) with the bias as a fourth column, O(1) per sample.
+// Ours: the closest-point idea of Eq. (4) with the bias as a fourth column, O(1) per sample. It
+// keeps its own sums rather than read the initializer's: with deferred solves the initializer
+// admits queued samples after its closest-point sums have moved on, and the trigger must see the
+// geometry as of each sample it judges.
 class ClosestPointBiasAwareTrigger : public InitTrigger {
  public:
   explicit ClosestPointBiasAwareTrigger(double threshold) : threshold_(threshold) {}
@@ -73,15 +92,14 @@ class ClosestPointBiasAwareTrigger : public InitTrigger {
 class ConfidenceRegionDopTrigger : public InitTrigger {
  public:
   ConfidenceRegionDopTrigger(std::shared_ptr<const Solver> solver, double threshold, int every, double sigmas)
-      : solver_(std::move(solver)), threshold_(threshold), every_(static_cast<std::size_t>(every)), sigmas_(sigmas) {}
+      : solver_(std::move(solver)), threshold_(threshold), cadence_(every), sigmas_(sigmas) {}
   bool Fire(const TriggerInput& in) override;
 
  private:
   std::shared_ptr<const Solver> solver_;
   double threshold_;
-  std::size_t every_;
+  SolveCadence cadence_;
   double sigmas_;
-  std::size_t evaluated_at_ = 0;
 };
 
 // The worst bias-aware DOP over the estimate and the 6 ends of the principal axes of its
