@@ -118,6 +118,7 @@ void Trigger(V& v, registry::EstimatorConfig& o) {
   v.Number("bias_aware_threshold", o.trigger.bias_aware_threshold);
   v.Number("confidence_threshold", o.trigger.confidence_threshold);
   v.Number("confidence_sigmas", o.trigger.confidence_sigmas);
+  v.Number("horizontal_threshold", o.trigger.horizontal_threshold);
   v.Check(o.trigger);
   v.Check(o.initializer);
 }
@@ -163,6 +164,14 @@ void Estimator(V& v, registry::EstimatorConfig& o, const registry::Components& p
     s.Choice("side", o.initializer.height_check.side, estimator::ParseSide,
              [](auto side) { return estimator::ToString(side); }, "any, above, below");
     s.Check(o.initializer.height_check);
+  });
+  v.Section("height_prior", [&](auto& s) {
+    s.Flag("enabled", o.height_prior.enabled);
+    s.Number("sigma_m", o.height_prior.sigma_m);
+    s.Number("z_m", o.height_prior.z_m);
+    s.Flag("from_reference", o.height_prior.from_reference);
+    s.Number("offset_m", o.height_prior.offset_m);
+    s.Check(o.height_prior);
   });
 }
 

@@ -107,6 +107,11 @@ TEST(Config, CrossFieldChecksNameTheKeyOrTheSection) {
   // Bursts of mean length 1 cannot make more than half of the ranges outliers.
   error = ErrorFor("scenario:\n  ranging: {outlier_probability: 0.99, outlier_burst_length: 1}\n");
   EXPECT_NE(error.find("key 'scenario.ranging.outlier_probability': must be <= L/(L+1)"), std::string::npos) << error;
+  error = ErrorFor("estimator:\n  height_prior: {enabled: true, sigma_m: 0}\n");
+  EXPECT_NE(error.find("key 'estimator.height_prior'"), std::string::npos) << error;
+  EXPECT_EQ(ErrorFor("estimator:\n  height_prior: {enabled: true, sigma_m: 0.2, from_reference: true, offset_m: -1}\n"
+                     "  trigger: {horizontal_threshold: 0.8}\n  triggers: [hdop_closest_point]\n"),
+            "");
   error = ErrorFor("estimator:\n  filter: {ransac: {subset_size: 200, outlier_fraction: 0.99}}\n");
   EXPECT_NE(error.find("key 'estimator.filter.ransac.subset_size'"), std::string::npos) << error;
 }

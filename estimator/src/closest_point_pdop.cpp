@@ -10,6 +10,11 @@ Eigen::Matrix3d ClosestPointPdop::Information() const {
   return information;
 }
 
+double ClosestPointPdop::HorizontalValue() const {
+  if (count_ < 4) return std::numeric_limits<double>::infinity();  // as Value(), so the two compare
+  return HdopFromBlock(s2_[0], s2_[1], s2_[3]);
+}
+
 double ClosestPointPdop::BiasAwareValue() const {
   if (count_ < 4) return std::numeric_limits<double>::infinity();
   return BiasAwareDopFromSums(Information(), t1_, static_cast<double>(count_));

@@ -47,7 +47,7 @@ bool HeightCheckOptions::IsValid(std::string* why) const {
   };
   if (!(min_evidence >= 0.0) || !std::isfinite(min_evidence)) return fail("min_evidence must be >= 0");
   if (!(trim_fraction >= 0.0 && trim_fraction <= 0.5)) return fail("trim_fraction must be in [0, 0.5]");
-  return true;
+  return !height_prior || height_prior->IsValid(why);
 }
 
 std::string_view ToString(HeightCheckOptions::Side side) {
@@ -110,8 +110,12 @@ SolveResult HeightCheckedSolver::Solve(std::span<const Eigen::Vector3d> p_world_
   using Side = HeightCheckOptions::Side;
   SolveResult result = inner_->Solve(p_world_tag, range_m);
   if (!Succeeded(result.status)) return result;
-  const Mirror mirror = MirrorOf(p_world_tag, range_m, result, options_.trim_fraction);
-  if (!mirror.exists || mirror.evidence >= options_.min_evidence) return result;  // the data decide
+  Mirror mirror = MirrorOf(p_world_tag, range_m, result, options_.trim_fraction);
+  if (mirror.exists && options_.height_prior) {
+    mirror.evidence += options_.height_prior->Chi2(mirror.p_world_mirror.z()) -
+                       options_.height_prior->Chi2(result.p_world_anchor.z());
+  }
+  if (!mirror.exists || mirror.evidence >= options_.min_evidence) return result;  // the data (and a height prior) decide
   // Ambiguous. Without a usable side prior, say so.
   constexpr double kMinNormalZ = 0.5;  // cos(60 deg): a steeper plane has no above and below
   if (options_.side == Side::kAny || mirror.normal.z() < kMinNormalZ) {

@@ -1,6 +1,7 @@
 #include "anchorbench/estimator/ls_solver.hpp"
 
 #include <cmath>
+#include <optional>
 
 #include <Eigen/Cholesky>
 
@@ -85,10 +86,47 @@ bool LsOptions::IsValid(std::string* why) const {
   return true;
 }
 
-SolveResult SolveDoubleDifferenceLs(std::span<const Eigen::Vector3d> p_world_tag,
-                                    std::span<const double> range_m, const LsOptions& options) {
+namespace {
+
+// sum w (a^T x - b)^2 over the rows.
+double WeightedSquares(const RowBuilder& rows, std::size_t n, const Eigen::Vector4d& x) {
+  double weighted_squares = 0.0;
+  for (std::size_t k = 0; k < n; ++k) {
+    if (k == rows.pivot()) continue;
+    const Row row = rows(k);
+    const double residual = row.a.dot(x) - row.b;
+    weighted_squares += row.weight * residual * residual;
+  }
+  return weighted_squares;
+}
+
+// The rows' residual variance with the anchor's height held at the prior (x(2) = x_z, positions
+// relative to the pivot): the scale that puts the prior, in metres, beside rows in m^2. False
+// when x-y and the bias are not determined even with the height known.
+bool RowVarianceAtHeight(const RowBuilder& rows, std::size_t n, const Eigen::Matrix4d& normal,
+                         const Eigen::Vector4d& rhs, double x_z, double* variance) {
+  constexpr int kFree[3] = {0, 1, 3};  // x, y, bias
+  Eigen::Matrix3d reduced;
+  Eigen::Vector3d reduced_rhs;
+  for (int i = 0; i < 3; ++i) {
+    for (int j = 0; j < 3; ++j) reduced(i, j) = normal(kFree[i], kFree[j]);
+    reduced_rhs(i) = rhs(kFree[i]) - normal(kFree[i], 2) * x_z;
+  }
+  const Eigen::LDLT<Eigen::Matrix3d> ldlt(reduced);
+  if (!internal::IsWellConditioned(ldlt)) return false;
+  const Eigen::Vector3d free = ldlt.solve(reduced_rhs);
+  const Eigen::Vector4d x(free(0), free(1), x_z, free(2));
+  *variance = WeightedSquares(rows, n, x) / (static_cast<double>(n) - 1.0 - 3.0);
+  return std::isfinite(*variance);
+}
+
+}  // namespace
+
+SolveResult SolveDoubleDifferenceLs(std::span<const Eigen::Vector3d> p_world_tag, std::span<const double> range_m,
+                                    const LsOptions& options, const std::optional<HeightPrior>& height_prior) {
   SolveResult result;
-  if (range_m.size() < kMinSamplesLs || p_world_tag.size() != range_m.size()) {
+  const std::size_t n = range_m.size();
+  if (n < kMinSamplesLs || p_world_tag.size() != n) {
     result.status = SolveStatus::kTooFewSamples;
     return result;
   }
@@ -97,16 +135,31 @@ SolveResult SolveDoubleDifferenceLs(std::span<const Eigen::Vector3d> p_world_tag
 
   Eigen::Matrix4d normal = Eigen::Matrix4d::Zero();
   Eigen::Vector4d rhs = Eigen::Vector4d::Zero();
-  for (std::size_t k = 0; k < range_m.size(); ++k) {
+  for (std::size_t k = 0; k < n; ++k) {
     if (k == j) continue;
     const Row row = rows(k);
     normal.noalias() += row.weight * row.a * row.a.transpose();
     rhs += row.weight * row.b * row.a;
   }
-
   if (!normal.allFinite() || !rhs.allFinite()) {
     result.status = SolveStatus::kNumericalFailure;
     return result;
+  }
+  double rows_observed = static_cast<double>(n) - 1.0;
+  double prior_weight = 0.0;
+  double prior_x_z = 0.0;
+  if (height_prior) {
+    // The prior as one more row [0 0 1 0] x = z - z_j, weighted s^2 / sigma^2 against the rows.
+    prior_x_z = height_prior->z_world_m - p_world_tag[j].z();
+    double row_variance = 0.0;
+    if (!RowVarianceAtHeight(rows, n, normal, rhs, prior_x_z, &row_variance)) {
+      result.status = SolveStatus::kDegenerateGeometry;
+      return result;
+    }
+    prior_weight = row_variance / (height_prior->sigma_m * height_prior->sigma_m);
+    normal(2, 2) += prior_weight;
+    rhs(2) += prior_weight * prior_x_z;
+    rows_observed += 1.0;
   }
   Eigen::Matrix4d normal_inverse;
   if (!internal::InvertNormalMatrix(normal, &normal_inverse)) {
@@ -115,15 +168,11 @@ SolveResult SolveDoubleDifferenceLs(std::span<const Eigen::Vector3d> p_world_tag
   }
   const Eigen::Vector4d x = normal_inverse * rhs;
 
-  // Covariance s^2 (A^T W A)^-1, s^2 the weighted residual variance of the linear system.
-  double weighted_squares = 0.0;
-  for (std::size_t k = 0; k < range_m.size(); ++k) {
-    if (k == j) continue;
-    const Row row = rows(k);
-    const double residual = row.a.dot(x) - row.b;
-    weighted_squares += row.weight * residual * residual;
-  }
-  const double dof = static_cast<double>(range_m.size()) - 1.0 - 4.0;
+  // Covariance s^2 (A^T W A)^-1, s^2 the weighted residual variance of the linear system (the
+  // prior's row, if any, has its residual in the sum too).
+  const double weighted_squares =
+      WeightedSquares(rows, n, x) + prior_weight * (x(2) - prior_x_z) * (x(2) - prior_x_z);
+  const double dof = rows_observed - 4.0;
   result.p_world_anchor = p_world_tag[j] + x.head<3>();
   result.bias_m = x(3);
   result.covariance = (weighted_squares / dof) * normal_inverse;

@@ -143,6 +143,10 @@ bool NloptSolver::Accepts(const std::string& algorithm, std::string* why) {
 std::unique_ptr<NloptSolver> NloptSolver::Create(const std::string& algorithm, const AnchorSolverOptions& options,
                                                  std::shared_ptr<const LogPartitionTable> table, std::string* why) {
   if (!Accepts(algorithm, why)) return nullptr;
+  if (options.height_prior) {  // its cost is the ranges' alone
+    if (why) *why = "nlopt:" + algorithm + " takes no height prior (the LS and lm_* solvers do)";
+    return nullptr;
+  }
   const int a = AlgorithmNumber(algorithm);
   if (!table || table->truncation() != options.nls.truncation || table->alpha_min() != options.nls.alpha_min) {
     table = std::make_shared<const LogPartitionTable>(options.nls.truncation, options.nls.alpha_min);

@@ -26,9 +26,29 @@ constexpr double kMinDiagonal = 1e-12;
 
 using Vector4 = Eigen::Vector4d;
 
+// The height prior as a quadratic term (no kernel: the prior is not an outlier candidate) in the
+// units of the passes, whose sums leave out the common factor 1/c^2: cost 0.5 ((z - z0)/sigma)^2,
+// information c^2/sigma^2 on z and gradient c^2 (z - z0)/sigma^2. Absent: zero, exactly.
+class PriorTerm {
+ public:
+  PriorTerm(const std::optional<HeightPrior>& prior, double kernel_scale_m) : prior_(prior) {
+    if (prior_) weight_ = kernel_scale_m * kernel_scale_m / (prior_->sigma_m * prior_->sigma_m);
+  }
+  double Cost(const Vector4& theta) const { return prior_ ? 0.5 * prior_->Chi2(theta(2)) : 0.0; }
+  void AddTo(const Vector4& theta, Eigen::Matrix4d* information, Vector4* gradient) const {
+    if (!prior_) return;
+    (*information)(2, 2) += weight_;
+    (*gradient)(2) += weight_ * (theta(2) - prior_->z_world_m);
+  }
+
+ private:
+  std::optional<HeightPrior> prior_;
+  double weight_ = 0.0;
+};
+
 // The summary of a refined estimate from its normal equations (see SummarizeSolution).
 SolveResult Summary(const Vector4& theta, double alpha, const internal::PassResult& eq, std::size_t n,
-                    SolveStatus status, int iterations) {
+                    SolveStatus status, int iterations, const std::optional<HeightPrior>& prior = std::nullopt) {
   SolveResult result;
   if (!theta.allFinite() || !eq.information.allFinite() || !std::isfinite(eq.cost)) {
     result.status = SolveStatus::kNumericalFailure;
@@ -38,16 +58,20 @@ SolveResult Summary(const Vector4& theta, double alpha, const internal::PassResu
   result.bias_m = theta(3);
   result.alpha = alpha;
   result.iterations = iterations;
-  result.final_cost = eq.cost;
+  result.final_cost = eq.cost + (prior ? 0.5 * prior->Chi2(theta(2)) : 0.0);
   result.status = status;
+  // For alpha = 2 this is the usual sigma^2 (J^T J)^-1; a prior adds its information 1/sigma^2
+  // to the data's (J^T W J) / s^2.
+  const double s2 = eq.weighted_squares / static_cast<double>(n - 4);
+  Eigen::Matrix4d information = eq.information;
+  if (prior) information = information / s2 + Eigen::Vector4d::UnitZ() * Eigen::Vector4d::UnitZ().transpose() /
+                                                  (prior->sigma_m * prior->sigma_m);
   Eigen::Matrix4d information_inverse;
-  if (!internal::InvertNormalMatrix(eq.information, &information_inverse)) {
+  if (!internal::InvertNormalMatrix(information, &information_inverse)) {
     result.status = SolveStatus::kDegenerateGeometry;
     return result;
   }
-  // For alpha = 2 this is the usual sigma^2 (J^T J)^-1.
-  const double s2 = eq.weighted_squares / static_cast<double>(n - 4);
-  result.covariance = s2 * information_inverse;
+  result.covariance = prior ? information_inverse : Eigen::Matrix4d(s2 * information_inverse);
   return result;
 }
 
@@ -99,10 +123,12 @@ NlsSolver::NlsSolver(const NlsOptions& options, std::shared_ptr<const LogPartiti
 }
 
 NlsSolver::Stage NlsSolver::Refine(const internal::SampleArrays& samples, const Eigen::Vector4d& theta_initial,
-                                   std::optional<double> fixed_alpha, double step_tolerance_m) const {
+                                   std::optional<double> fixed_alpha, double step_tolerance_m,
+                                   const std::optional<HeightPrior>& height_prior) const {
   using internal::Pass;
   const bool adaptive = !fixed_alpha.has_value();
   const double c = options_.kernel_scale_m;
+  const PriorTerm prior(height_prior, c);
   // The alternation keeps the histogram of the accepted residuals; candidates fill their own.
   std::optional<AlphaSelector> selector, candidate_histogram;
   if (adaptive) {
@@ -132,16 +158,20 @@ NlsSolver::Stage NlsSolver::Refine(const internal::SampleArrays& samples, const 
       return stage;
     }
     // Damped step (J^T W J + lambda diag) delta = -J^T W r, raised until the cost drops.
+    Eigen::Matrix4d information = eq.information;
+    Vector4 gradient = eq.gradient;
+    prior.AddTo(stage.theta, &information, &gradient);
+    const double cost = eq.cost + prior.Cost(stage.theta);
     bool accepted = false;
     Vector4 delta = Vector4::Zero();
     for (int attempt = 0; attempt < kMaxDampingIncreases && !accepted; ++attempt) {
-      Eigen::Matrix4d damped = eq.information;
-      damped.diagonal() += damping * eq.information.diagonal().cwiseMax(kMinDiagonal);
-      delta = damped.ldlt().solve(-eq.gradient);
+      Eigen::Matrix4d damped = information;
+      damped.diagonal() += damping * information.diagonal().cwiseMax(kMinDiagonal);
+      delta = damped.ldlt().solve(-gradient);
       if (!delta.allFinite()) break;
       internal::PassResult candidate = Pass(samples, stage.theta + delta, c,
                                             {stage.alpha, true, true, adaptive ? &*candidate_histogram : nullptr});
-      if (candidate.cost <= eq.cost) {
+      if (candidate.cost + prior.Cost(stage.theta + delta) <= cost) {
         accepted = true;
         stage.theta += delta;
         eq = candidate;
@@ -169,7 +199,8 @@ NlsSolver::Stage NlsSolver::Refine(const internal::SampleArrays& samples, const 
 }
 
 SolveResult NlsSolver::Solve(std::span<const Eigen::Vector3d> p_world_tag, std::span<const double> range_m,
-                             const Eigen::Vector3d& p_world_anchor_initial, double bias_initial_m) const {
+                             const Eigen::Vector3d& p_world_anchor_initial, double bias_initial_m,
+                             const std::optional<HeightPrior>& height_prior) const {
   SolveResult result;
   const std::size_t n = range_m.size();
   if (n < kMinSamplesNls || p_world_tag.size() != n) {
@@ -181,16 +212,16 @@ SolveResult NlsSolver::Solve(std::span<const Eigen::Vector3d> p_world_tag, std::
   Stage stage{theta, 2.0, 0, SolveStatus::kConverged};
   const internal::SampleArrays samples(p_world_tag, range_m);
   if (options_.kernel == KernelMode::kL2) {
-    stage = Refine(samples, theta, 2.0, options_.step_tolerance_m);
+    stage = Refine(samples, theta, 2.0, options_.step_tolerance_m, height_prior);
   } else {
     if (options_.l2_warm_start) {  // only into the basin: 10x the step tolerance
-      stage = Refine(samples, theta, 2.0, 10.0 * options_.step_tolerance_m);
+      stage = Refine(samples, theta, 2.0, 10.0 * options_.step_tolerance_m, height_prior);
     }
     if (stage.status != SolveStatus::kNumericalFailure) {
       const int used = stage.iterations;
       const std::optional<double> alpha =
           options_.kernel == KernelMode::kFixed ? std::optional<double>(options_.fixed_alpha) : std::nullopt;
-      stage = Refine(samples, stage.theta, alpha, options_.step_tolerance_m);
+      stage = Refine(samples, stage.theta, alpha, options_.step_tolerance_m, height_prior);
       stage.iterations += used;
     }
   }
@@ -202,7 +233,7 @@ SolveResult NlsSolver::Solve(std::span<const Eigen::Vector3d> p_world_tag, std::
   equations.information = stage.information;
   equations.cost = stage.cost;
   equations.weighted_squares = stage.weighted_squares;
-  return Summary(stage.theta, stage.alpha, equations, n, stage.status, stage.iterations);
+  return Summary(stage.theta, stage.alpha, equations, n, stage.status, stage.iterations, height_prior);
 }
 
 SolveResult SummarizeSolution(std::span<const Eigen::Vector3d> p_world_tag, std::span<const double> range_m,

@@ -22,6 +22,7 @@ bool TriggerOptions::IsValid(std::string* why) const {
   if (!(bias_aware_threshold > 0.0)) return fail("bias_aware_threshold must be > 0");
   if (!(confidence_threshold > 0.0)) return fail("confidence_threshold must be > 0");
   if (!(confidence_sigmas >= 0.0) || !(confidence_sigmas <= 10.0)) return fail("confidence_sigmas must be in [0, 10]");
+  if (!(horizontal_threshold > 0.0)) return fail("horizontal_threshold must be > 0");
   return true;
 }
 
@@ -29,11 +30,6 @@ bool EstimatePdopTrigger::Fire(const TriggerInput& in) {
   if (!cadence_.Due(in)) return false;
   const SolveResult estimate = solver_->Solve(in.p_world_tag, in.range_m);
   return Succeeded(estimate.status) && GeometryPdop(in.p_world_tag, in.range_m, estimate.p_world_anchor) < threshold_;
-}
-
-bool ClosestPointBiasAwareTrigger::Fire(const TriggerInput& in) {
-  dop_.Add(in.sample_p_world_tag, in.sample_range_m);
-  return in.eligible && dop_.BiasAwareValue() < threshold_;
 }
 
 double WorstBiasAwareDop(std::span<const Eigen::Vector3d> p_world_tag, const SolveResult& estimate, double sigmas) {

@@ -23,7 +23,11 @@ AttemptEvaluation Evaluate(std::span<const Eigen::Vector3d> p_world_tag_used, co
   for (const Eigen::Vector3d& p : p_world_tag_used) geometry.Add(p);
   evaluation.pdop_true = geometry.Pdop();
   const double bias_aware = geometry.BiasAwareDop();
-  if (std::isfinite(bias_aware)) evaluation.bias_aware_dop = bias_aware;
+  if (std::isfinite(bias_aware)) {
+    evaluation.bias_aware_dop = bias_aware;
+    evaluation.bias_aware_hdop = geometry.BiasAwareHorizontalDop();
+    evaluation.bias_aware_vdop = geometry.BiasAwareVerticalDop();
+  }
   if (estimate) {
     evaluation.error_xyz_m = estimate->p_world_anchor - truth.p_world_anchor;
     evaluation.error_m = (estimate->p_world_anchor - truth.p_world_anchor).norm();

@@ -1,6 +1,9 @@
 #include "anchorbench/eval/true_geometry.hpp"
 
 #include <cmath>
+#include <limits>
+
+#include <Eigen/LU>
 
 #include "anchorbench/estimator/pdop.hpp"
 
@@ -19,6 +22,21 @@ void TrueGeometry::Add(const Eigen::Vector3d& p_world_tag) {
 }
 
 double TrueGeometry::Pdop() const { return PdopFromInformation(sum_outer_); }
+
+Eigen::Matrix3d TrueGeometry::BiasAwareInverse() const {
+  return (sum_outer_ - sum_unit_ * sum_unit_.transpose() / count_).inverse();  // the Schur complement's
+}
+
+double TrueGeometry::BiasAwareHorizontalDop() const {
+  if (std::isinf(BiasAwareDop())) return std::numeric_limits<double>::infinity();
+  const Eigen::Matrix3d q = BiasAwareInverse();
+  return std::sqrt(q(0, 0) + q(1, 1));
+}
+
+double TrueGeometry::BiasAwareVerticalDop() const {
+  if (std::isinf(BiasAwareDop())) return std::numeric_limits<double>::infinity();
+  return std::sqrt(BiasAwareInverse()(2, 2));
+}
 
 double TrueGeometry::BiasAwareDop() const { return estimator::BiasAwareDopFromSums(sum_outer_, sum_unit_, count_); }
 

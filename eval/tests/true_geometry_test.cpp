@@ -79,6 +79,27 @@ TEST(Pdop, GeometryPdopWithTrueDistancesIsTruePdop) {
               TruePdop(data.p_world_tag, data.p_world_anchor), 1e-12);
 }
 
+// DOP^2 = HDOP^2 + VDOP^2 for the bias-aware DOP; a nearly flat path below the anchor sees the
+// height, traded off against the bias, far worse than x-y; a path with height change much less so.
+TEST(Pdop, BiasAwareHorizontalAndVerticalPartsAddUp) {
+  auto rng = testing::TestStream(5);
+  const Eigen::Vector3d p_anchor(1.0, 2.0, 8.0);
+  TrueGeometry flat(p_anchor), varied(p_anchor);
+  EXPECT_TRUE(std::isinf(flat.BiasAwareHorizontalDop()) && std::isinf(flat.BiasAwareVerticalDop()));
+  for (int k = 0; k < 200; ++k) {
+    // A ring 18-22 m around the anchor: on flat ground every row has nearly the same vertical part.
+    const double angle = rng.Uniform(0.0, 6.283), radius = rng.Uniform(18.0, 22.0);
+    const Eigen::Vector3d around(p_anchor.x() + radius * std::cos(angle), p_anchor.y() + radius * std::sin(angle), 0.0);
+    flat.Add(around + Eigen::Vector3d(0, 0, rng.Uniform(0.0, 0.05)));
+    varied.Add(around + Eigen::Vector3d(0, 0, rng.Uniform(0.0, 6.0)));
+  }
+  const double h = flat.BiasAwareHorizontalDop(), v = flat.BiasAwareVerticalDop();
+  const double dop = flat.BiasAwareDop();
+  EXPECT_NEAR(h * h + v * v, dop * dop, 1e-9 * dop * dop);
+  EXPECT_GT(v, 3.0 * h);
+  EXPECT_LT(varied.BiasAwareVerticalDop(), 0.5 * v);
+}
+
 TEST(Pdop, OrthogonalUnitDirectionsGiveSqrtThree) {
   // Three orthogonal unit rows: G^T G = I, so PDOP = sqrt(tr(I)) = sqrt(3).
   const std::vector<Eigen::Vector3d> p = {{5, 0, 0}, {0, 5, 0}, {0, 0, 5}};

@@ -51,13 +51,16 @@ constexpr const char* kNloptPrefix = "nlopt:";
 
 void RegisterBuiltinSolvers(SolverRegistry& registry) {
   registry.Register("ls_single", "single-difference LS with bias (the authors' earlier library, 'SINGLE')",
-                    [](const std::string&, const SolverContext&) {
+                    [](const std::string&, const SolverContext& context) {
+                      if (context.options.height_prior) {
+                        throw std::invalid_argument("ls_single takes no height prior (ls_double and lm_* do)");
+                      }
                       return std::unique_ptr<Solver>(new FunctionSolver(
                           [](auto p, auto d) { return estimator::SolveSingleDifferenceLs(p, d); }));
                     });
   registry.Register("ls_double", "double-difference LS, Eqs. (9)-(10), pivot as configured (ls.pivot)",
                     [](const std::string&, const SolverContext& context) {
-                      return std::unique_ptr<Solver>(new estimator::DoubleDifferenceLsSolver(context.options.ls));
+                      return std::unique_ptr<Solver>(new estimator::DoubleDifferenceLsSolver(context.options.ls, context.options.height_prior));
                     });
   registry.Register("lm_l2", "LS + Levenberg-Marquardt on plain least squares, Eq. (11)", LmWith(KernelMode::kL2));
   registry.Register("lm_huber", "LS + LM with a smooth Huber kernel (Barron alpha = 1, pseudo-Huber)",
@@ -100,7 +103,8 @@ void RegisterBuiltinTriggers(TriggerRegistry& registry) {
   registry.Register("pdop_ls", "PDOP at the LS estimate < trigger.pdop_threshold (every trigger.evaluate_every samples)",
                     [](const std::string&, const Context& c) {
                       return std::make_unique<estimator::EstimatePdopTrigger>(
-                          std::make_shared<estimator::DoubleDifferenceLsSolver>(c.ls), c.options.pdop_threshold,
+                          std::make_shared<estimator::DoubleDifferenceLsSolver>(c.solver_options.ls, c.solver_options.height_prior),
+                          c.options.pdop_threshold,
                           c.options.evaluate_every);
                     });
   registry.Register("pdop_nls",
@@ -113,7 +117,15 @@ void RegisterBuiltinTriggers(TriggerRegistry& registry) {
   registry.Register("dop4_closest_point",
                     "closest-point DOP with a bias column < trigger.bias_aware_threshold, O(1) (ours)",
                     [](const std::string&, const Context& c) {
-                      return std::make_unique<estimator::ClosestPointBiasAwareTrigger>(c.options.bias_aware_threshold);
+                      return std::make_unique<estimator::ClosestPointDopTrigger>(
+                          &estimator::ClosestPointPdop::BiasAwareValue, c.options.bias_aware_threshold);
+                    });
+  registry.Register("hdop_closest_point",
+                    "closest-point DOP of x-y alone < trigger.horizontal_threshold, O(1): for a height prior on a "
+                    "flat path (ours)",
+                    [](const std::string&, const Context& c) {
+                      return std::make_unique<estimator::ClosestPointDopTrigger>(
+                          &estimator::ClosestPointPdop::HorizontalValue, c.options.horizontal_threshold);
                     });
   registry.Register("dop4_confidence",
                     "worst bias-aware DOP over the trigger.confidence_sigmas region of the solver's estimate < "

@@ -22,15 +22,21 @@ estimator::AnchorInitializer MakeInitializer(const Components& components, int a
                                              const std::string& trigger, std::uint64_t seed,
                                              const std::optional<Eigen::Vector3d>& p_world_anchor_reference) {
   std::string why;
+  // The anchor's own height prior, for its solver and its height check alike.
+  estimator::AnchorSolverOptions solver_options = config.solver_options;
+  solver_options.height_prior = config.height_prior.For(anchor_id, p_world_anchor_reference);
+  estimator::InitializerOptions initializer_options = config.initializer;
+  initializer_options.height_check.height_prior = solver_options.height_prior;
   std::shared_ptr<const estimator::Solver> solver =
-      components.solvers.Create(config.solver, {config.solver_options, seed, components.tables.get()}, &why);
+      components.solvers.Create(config.solver, {solver_options, seed, components.tables.get()}, &why);
   if (!solver) throw std::invalid_argument(why);
   std::unique_ptr<estimator::OutlierFilter> filter = components.filters.Create(config.filter.kind, {config.filter, seed}, &why);
   if (!filter) throw std::invalid_argument(why);
   std::unique_ptr<estimator::InitTrigger> made = components.triggers.Create(
-      trigger, {config.trigger, config.solver_options.ls, solver, p_world_anchor_reference}, &why);
+      trigger, {config.trigger, solver_options, solver, p_world_anchor_reference}, &why);
   if (!made) throw std::invalid_argument(why);
-  return estimator::AnchorInitializer(anchor_id, config.initializer, std::move(filter), std::move(made), std::move(solver));
+  return estimator::AnchorInitializer(anchor_id, initializer_options, std::move(filter), std::move(made),
+                                      std::move(solver));
 }
 
 std::vector<estimator::AnchorInitializer> MakeChains(const Components& components, int anchor_id,

@@ -137,6 +137,18 @@ TEST(Triggers, NlsUsesTheAnchorsSolver) {
   EXPECT_LT((fed.event->solve.p_world_anchor - kAnchor).norm(), 0.5);
 }
 
+// The index of the first sample, from the 20th on, whose closest-point value (a ClosestPointPdop
+// member) is below the threshold: where a closest-point trigger must fire.
+int FirstBelow(const std::vector<RangeSample>& samples, double (estimator::ClosestPointPdop::*value)() const,
+               double threshold) {
+  estimator::ClosestPointPdop direct;
+  for (std::size_t i = 0; i < samples.size(); ++i) {
+    direct.Add(samples[i].p_world_tag, samples[i].range_m);
+    if (i + 1 >= 20 && (direct.*value)() < threshold) return static_cast<int>(i);
+  }
+  return -1;
+}
+
 // dop4_closest_point: the closest-point rows with a bias column, fired on the first sample whose
 // 4-column DOP is below its threshold; never before the paper's 3-column one.
 TEST(Triggers, ClosestPointBiasAwareFiresOnItsOwnThresholdAndNeverBeforeThePapers) {
@@ -148,13 +160,49 @@ TEST(Triggers, ClosestPointBiasAwareFiresOnItsOwnThresholdAndNeverBeforeThePaper
   const Fed a = FeedAll(paper, samples), b = FeedAll(bias_aware, samples);
   ASSERT_TRUE(a.event && b.event);
   EXPECT_GT(b.index, a.index);
-  estimator::ClosestPointPdop direct;
-  int expected = -1;
-  for (std::size_t i = 0; i < samples.size() && expected < 0; ++i) {
-    direct.Add(samples[i].p_world_tag, samples[i].range_m);
-    if (i + 1 >= 20 && direct.BiasAwareValue() < 1.0) expected = static_cast<int>(i);
+  EXPECT_EQ(b.index, FirstBelow(samples, &estimator::ClosestPointPdop::BiasAwareValue, 1.0));
+}
+
+// hdop_closest_point: the x-y block of the closest-point rows, fired on the first sample whose
+// horizontal DOP is below its threshold; never after the paper's (the block's DOP is smaller).
+TEST(Triggers, ClosestPointHorizontalFiresOnItsOwnThresholdAndNeverAfterThePapers) {
+  const auto samples = PassBy(kAnchor, 0.05, 6);
+  EstimatorConfig options = Unfiltered();
+  options.trigger.horizontal_threshold = 1.0;
+  AnchorInitializer paper = MakeInitializer(Builtins(), 7, options, "pdop_closest_point", 0);
+  AnchorInitializer horizontal = MakeInitializer(Builtins(), 7, options, "hdop_closest_point", 0);
+  const Fed a = FeedAll(paper, samples), b = FeedAll(horizontal, samples);
+  ASSERT_TRUE(a.event && b.event);
+  EXPECT_LE(b.index, a.index);
+  EXPECT_EQ(b.index, FirstBelow(samples, &estimator::ClosestPointPdop::HorizontalValue, 1.0));
+}
+
+// The height prior of each anchor: a fixed height for all, or the reference's shifted by the
+// offset; a reference prior without a reference is refused; solvers without a prior term refuse it.
+TEST(HeightPriorConfig, EachAnchorGetsItsPriorAndSolversWithoutOneRefuseIt) {
+  HeightPriorConfig config;
+  EXPECT_FALSE(config.For(3, std::nullopt));
+  config.enabled = true;
+  config.z_m = 2.5;
+  config.offset_m = 0.5;
+  EXPECT_DOUBLE_EQ(config.For(3, std::nullopt)->z_world_m, 3.0);
+  config.from_reference = true;
+  EXPECT_DOUBLE_EQ(config.For(3, Eigen::Vector3d(1, 2, 4))->z_world_m, 4.5);
+  EXPECT_THROW(config.For(3, std::nullopt), std::invalid_argument);
+
+  EstimatorConfig options = Unfiltered();
+  options.height_prior = config;
+  for (const char* solver : {"ls_single", "nlopt:LN_BOBYQA"}) {
+    options.solver = solver;
+    try {
+      MakeInitializer(Builtins(), 3, options, "pdop_closest_point", 0, Eigen::Vector3d(1, 2, 4));
+      ADD_FAILURE() << solver << " accepted a height prior";
+    } catch (const std::invalid_argument& e) {
+      EXPECT_NE(std::string(e.what()).find("height prior"), std::string::npos) << e.what();
+    }
   }
-  EXPECT_EQ(b.index, expected);
+  options.solver = "lm_adaptive";
+  EXPECT_NO_THROW(MakeInitializer(Builtins(), 3, options, "pdop_ls", 0, Eigen::Vector3d(1, 2, 4)));
 }
 
 // dop4_confidence solves on its cadence and fires when the worst bias-aware DOP over the
@@ -212,7 +260,7 @@ TEST(Triggers, RegistryListsEveryBuiltInWithADescription) {
     EXPECT_FALSE(description.empty()) << name;
   }
   // The built-ins need no truth; the oracles pdop_true and dop4_true are eval's, registered on top by who wants it.
-  EXPECT_EQ(names, (std::vector<std::string>{"dop4_closest_point", "dop4_confidence", "fixed_window", "pdop_closest_point",
+  EXPECT_EQ(names, (std::vector<std::string>{"dop4_closest_point", "dop4_confidence", "fixed_window", "hdop_closest_point", "pdop_closest_point",
                                              "pdop_ls", "pdop_nls", "sample_count", "timeout"}));
 }
 

@@ -15,7 +15,8 @@ using io::FormatNumber;
 using io::FormatOptional;
 
 constexpr const char* kEstimateColumns[] = {"anchor_id", "method", "initialized", "t_init", "n_used", "pdop_est",
-                                            "pdop_true", "x", "y", "z", "bias", "err_m", "status", "err_xy", "err_z"};
+                                            "pdop_true", "x", "y", "z", "bias", "err_m", "status", "err_xy", "err_z",
+                                            "bias_aware_hdop", "bias_aware_vdop"};
 
 // Three decimals for a terminal, or the shortest text where that would be a wall of digits.
 std::string ForTerminal(double value) { return std::abs(value) < 1e9 ? FormatFixed(value, 3) : FormatNumber(value); }
@@ -48,7 +49,9 @@ std::vector<std::string> EstimateFields(const runner::Attempt& a) {
           a.evaluation ? FormatOptional(a.evaluation->error_m) : "",
           a.status,
           ErrorXy(a) ? FormatNumber(*ErrorXy(a)) : "",
-          ErrorZ(a) ? FormatNumber(*ErrorZ(a)) : ""};
+          ErrorZ(a) ? FormatNumber(*ErrorZ(a)) : "",
+          a.evaluation ? FormatOptional(a.evaluation->bias_aware_hdop) : "",
+          a.evaluation ? FormatOptional(a.evaluation->bias_aware_vdop) : ""};
 }
 
 }  // namespace
@@ -64,8 +67,10 @@ void WriteEstimates(std::ostream& out, const std::vector<runner::Attempt>& attem
 }
 
 void PrintEstimates(std::ostream& out, const std::vector<runner::Attempt>& attempts) {
+  // The terminal shows the columns up to err_z; the DOP split is in estimates.csv.
   constexpr int kWidth[] = {10, 20, 12, 10, 8, 10, 10, 10, 10, 10, 10, 10, 21, 10, 10};
-  for (std::size_t i = 0; i < std::size(kEstimateColumns); ++i) out << std::setw(kWidth[i]) << kEstimateColumns[i];
+  static_assert(std::size(kWidth) <= std::size(kEstimateColumns));
+  for (std::size_t i = 0; i < std::size(kWidth); ++i) out << std::setw(kWidth[i]) << kEstimateColumns[i];
   out << '\n';
   for (const runner::Attempt& a : attempts) {
     std::vector<std::string> fields = EstimateFields(a);
@@ -82,7 +87,7 @@ void PrintEstimates(std::ostream& out, const std::vector<runner::Attempt>& attem
     if (a.evaluation && a.evaluation->error_m) fields[11] = ForTerminal(*a.evaluation->error_m);
     if (ErrorXy(a)) fields[13] = ForTerminal(*ErrorXy(a));
     if (ErrorZ(a)) fields[14] = ForTerminal(*ErrorZ(a));
-    for (std::size_t i = 0; i < fields.size(); ++i) out << std::setw(kWidth[i]) << (fields[i].empty() ? "-" : fields[i]);
+    for (std::size_t i = 0; i < std::size(kWidth); ++i) out << std::setw(kWidth[i]) << (fields[i].empty() ? "-" : fields[i]);
     out << '\n';
   }
 }

@@ -116,7 +116,7 @@ void WriteAgainstThePaper(std::ostream& out, const std::vector<MethodSummary>& s
 
 void WriteAttempts(std::ostream& out, const std::vector<Attempt>& attempts, const std::vector<RowConfig>& rows) {
   out << "row,realization,anchor_id,method,initialized,t_init,n_used,pdop_est,pdop_true,crlb_m,err_m,err_x,err_y,"
-         "err_z,bias_err,alpha,status,bias_aware_dop,nees_pos,nees\n";
+         "err_z,bias_err,alpha,status,bias_aware_dop,nees_pos,nees,bias_aware_hdop,bias_aware_vdop\n";
   const eval::AttemptEvaluation none;
   for (const Attempt& a : attempts) {
     const eval::AttemptEvaluation& e = a.evaluation ? *a.evaluation : none;
@@ -128,7 +128,8 @@ void WriteAttempts(std::ostream& out, const std::vector<Attempt>& attempts, cons
         << FormatOptional(Of(e.error_xyz_m, 1)) << ',' << FormatOptional(Of(e.error_xyz_m, 2)) << ','
         << FormatOptional(e.bias_error_m) << ',' << FormatOptional(a.solve ? std::optional(a.solve->alpha) : std::nullopt)
         << ',' << a.status << ',' << FormatOptional(e.bias_aware_dop) << ',' << FormatOptional(e.nees_position) << ','
-        << FormatOptional(e.nees) << '\n';
+        << FormatOptional(e.nees) << ',' << FormatOptional(e.bias_aware_hdop) << ','
+        << FormatOptional(e.bias_aware_vdop) << '\n';
   }
 }
 

@@ -1,6 +1,7 @@
 #pragma once
 
 #include <memory>
+#include <optional>
 #include <span>
 #include <string>
 
@@ -13,8 +14,11 @@ namespace anchorbench::estimator {
 struct AnchorSolverOptions {
   LsOptions ls;
   NlsOptions nls;
+  std::optional<HeightPrior> height_prior;  // one anchor's known height, in both the LS and the NLS
 
-  bool IsValid(std::string* why) const { return ls.IsValid(why) && nls.IsValid(why); }
+  bool IsValid(std::string* why) const {
+    return ls.IsValid(why) && nls.IsValid(why) && (!height_prior || height_prior->IsValid(why));
+  }
 };
 
 // Sec. III-D in full: the double-difference LS coarse solution seeds the NLS refinement.
@@ -25,9 +29,9 @@ class AnchorSolver : public Solver {
       : options_(options), nls_(options.nls, std::move(table)) {}
 
   SolveResult Solve(std::span<const Eigen::Vector3d> p_world_tag, std::span<const double> range_m) const override {
-    const SolveResult coarse = SolveDoubleDifferenceLs(p_world_tag, range_m, options_.ls);
+    const SolveResult coarse = SolveDoubleDifferenceLs(p_world_tag, range_m, options_.ls, options_.height_prior);
     if (!Succeeded(coarse.status)) return coarse;
-    return nls_.Solve(p_world_tag, range_m, coarse.p_world_anchor, coarse.bias_m);
+    return nls_.Solve(p_world_tag, range_m, coarse.p_world_anchor, coarse.bias_m, options_.height_prior);
   }
 
  private:

@@ -57,6 +57,10 @@ class ClosestPointPdop {
   // The bias-aware DOP of G~ with a column of ones (BiasAwareDopFromSums); +inf as Value().
   double BiasAwareValue() const;
 
+  // The DOP of x-y with the height known (ours, for a height prior on a flat path):
+  // sqrt(tr(B^-1)) of the x-y block B of G~^T G~; +inf as Value().
+  double HorizontalValue() const;
+
   // G~^T G~ of Eq. (6).
   Eigen::Matrix3d Information() const;
 

@@ -2,12 +2,14 @@
 
 #include <limits>
 #include <memory>
+#include <optional>
 #include <span>
 #include <string>
 #include <string_view>
 
 #include <Eigen/Core>
 
+#include "anchorbench/estimator/height_prior.hpp"
 #include "anchorbench/estimator/solver.hpp"
 
 namespace anchorbench::estimator {
@@ -33,6 +35,9 @@ struct HeightCheckOptions {
   double min_evidence = 9.21; // below this the mirror is within a likelihood ratio of 100: ambiguous
   double trim_fraction = 0.1; // the largest residuals of each fit left out of its sum
   Side side = Side::kAny;     // the anchor's side of the tags' plane, if known
+  // The anchor's height prior, if its solver has one (set with the solver's, not configured
+  // here): the prior's chi-square of the mirror minus the estimate's joins the evidence.
+  std::optional<HeightPrior> height_prior;
 
   bool IsValid(std::string* why) const;
 };

@@ -1,9 +1,11 @@
 #pragma once
 
+#include <optional>
 #include <span>
 #include <string>
 #include <string_view>
 
+#include "anchorbench/estimator/height_prior.hpp"
 #include "anchorbench/estimator/solve_result.hpp"
 #include "anchorbench/estimator/solver.hpp"
 
@@ -32,19 +34,26 @@ struct LsOptions {
 //   b_k = ((d_k^2 - d_j^2) - (||p_k||^2 - ||p_j||^2)) / 2               Eq. (10)
 // Solved through the 4x4 normal equations accumulated in one O(N) pass (no N x 4 matrix), with
 // positions taken relative to p_j so the squared norms do not cancel far from the origin.
+// Ordinary least squares on these rows (the paper calls its linear step total least squares).
+// A height prior adds the row [0 0 1 0] x = z_prior, weighted by the rows' residual variance with
+// the height held at the prior over sigma^2 (ours: the rows are in m^2, the prior in m).
 SolveResult SolveDoubleDifferenceLs(std::span<const Eigen::Vector3d> p_world_tag,
-                                    std::span<const double> range_m, const LsOptions& options = {});
+                                    std::span<const double> range_m, const LsOptions& options = {},
+                                    const std::optional<HeightPrior>& height_prior = std::nullopt);
 
 // The same behind the Solver interface (ls_double, and the pdop_ls trigger's estimate).
 class DoubleDifferenceLsSolver : public Solver {
  public:
-  explicit DoubleDifferenceLsSolver(const LsOptions& options = {}) : options_(options) {}
+  explicit DoubleDifferenceLsSolver(const LsOptions& options = {},
+                                    const std::optional<HeightPrior>& height_prior = std::nullopt)
+      : options_(options), height_prior_(height_prior) {}
   SolveResult Solve(std::span<const Eigen::Vector3d> p_world_tag, std::span<const double> range_m) const override {
-    return SolveDoubleDifferenceLs(p_world_tag, range_m, options_);
+    return SolveDoubleDifferenceLs(p_world_tag, range_m, options_, height_prior_);
   }
 
  private:
   LsOptions options_;
+  std::optional<HeightPrior> height_prior_;
 };
 
 // The single-difference LS of the authors' earlier library ("SINGLE", constant bias):

@@ -6,6 +6,7 @@
 #include <string>
 #include <string_view>
 
+#include "anchorbench/estimator/height_prior.hpp"
 #include "anchorbench/estimator/robust_kernel.hpp"
 #include "anchorbench/estimator/solve_result.hpp"
 
@@ -62,8 +63,11 @@ class NlsSolver {
   // for other settings, the solver builds its own.
   explicit NlsSolver(const NlsOptions& options = {}, std::shared_ptr<const LogPartitionTable> table = nullptr);
 
+  // With a height prior, the cost gains 0.5 ((z_A - z_prior) / sigma)^2 (quadratic: the prior is
+  // not an outlier candidate) and the covariance its information.
   SolveResult Solve(std::span<const Eigen::Vector3d> p_world_tag, std::span<const double> range_m,
-                    const Eigen::Vector3d& p_world_anchor_initial, double bias_initial_m) const;
+                    const Eigen::Vector3d& p_world_anchor_initial, double bias_initial_m,
+                    const std::optional<HeightPrior>& height_prior = std::nullopt) const;
 
   const NlsOptions& options() const { return options_; }
 
@@ -81,7 +85,7 @@ class NlsSolver {
   };
   // LM from theta with the kernel shape fixed at *fixed_alpha, or adaptive when it is empty.
   Stage Refine(const internal::SampleArrays& samples, const Eigen::Vector4d& theta, std::optional<double> fixed_alpha,
-               double step_tolerance_m) const;
+               double step_tolerance_m, const std::optional<HeightPrior>& height_prior) const;
 
   NlsOptions options_;
   std::shared_ptr<const LogPartitionTable> table_;  // only for KernelMode::kAdaptive

@@ -30,6 +30,15 @@ inline double PdopFromUpperTriangle(double m00, double m01, double m02, double m
   return std::sqrt(trace_of_inverse);
 }
 
+// sqrt(tr(B^-1)) for the symmetric 2x2 x-y block B of an information matrix: the horizontal DOP
+// with the height known. +infinity when B is numerically singular (the test of the 3x3 case).
+inline double HdopFromBlock(double m00, double m01, double m11) {
+  const double det = m00 * m11 - m01 * m01;
+  const double trace = m00 + m11;
+  if (!(trace > 0.0) || !(det > kMinRelativeDeterminant * trace * trace)) return std::numeric_limits<double>::infinity();
+  return std::sqrt(trace / det);
+}
+
 // The same for a full matrix; only its upper triangle is read.
 inline double PdopFromInformation(const Eigen::Matrix3d& m) {
   return PdopFromUpperTriangle(m(0, 0), m(0, 1), m(0, 2), m(1, 1), m(1, 2), m(2, 2));

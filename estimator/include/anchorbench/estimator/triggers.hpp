@@ -25,6 +25,8 @@ struct TriggerOptions {
   double bias_aware_threshold = 1.0;
   double confidence_threshold = 1.5;
   double confidence_sigmas = 3.0;
+  // hdop_closest_point (ours): fire once the closest-point DOP of x-y alone is below this.
+  double horizontal_threshold = 1.0;
 
   bool IsValid(std::string* why) const;
 };
@@ -70,17 +72,24 @@ class EstimatePdopTrigger : public InitTrigger {
   SolveCadence cadence_;
 };
 
-// Ours: the closest-point idea of Eq. (4) with the bias as a fourth column, O(1) per sample. It
-// keeps its own sums rather than read the initializer's: with deferred solves the initializer
-// admits queued samples after its closest-point sums have moved on, and the trigger must see the
-// geometry as of each sample it judges.
-class ClosestPointBiasAwareTrigger : public InitTrigger {
+// Ours: a closest-point DOP other than the paper's, O(1) per sample: Eq. (4)'s rows with the bias
+// as a fourth column (dop4_closest_point), or their x-y block alone, the DOP with the height known
+// (hdop_closest_point, for a height prior on a flat path). It keeps its own sums rather than read
+// the initializer's: with deferred solves the initializer admits queued samples after its
+// closest-point sums have moved on, and the trigger must see the geometry as of each sample it
+// judges.
+class ClosestPointDopTrigger : public InitTrigger {
  public:
-  explicit ClosestPointBiasAwareTrigger(double threshold) : threshold_(threshold) {}
-  bool Fire(const TriggerInput& in) override;
+  using Value = double (ClosestPointPdop::*)() const;
+  ClosestPointDopTrigger(Value value, double threshold) : value_(value), threshold_(threshold) {}
+  bool Fire(const TriggerInput& in) override {
+    dop_.Add(in.sample_p_world_tag, in.sample_range_m);
+    return in.eligible && (dop_.*value_)() < threshold_;
+  }
 
  private:
   ClosestPointPdop dop_;
+  Value value_;
   double threshold_;
 };
 

@@ -19,6 +19,8 @@ struct AnchorTruth {
 struct AttemptEvaluation {
   // On the attempt's data (the samples of its solve, or all buffered if none initialized it):
   double pdop_true = 0.0;                // Eqs. (2)-(3) at the true anchor (+inf if undefined)
+  std::optional<double> bias_aware_hdop;  // its horizontal and vertical parts (TrueGeometry), finite only
+  std::optional<double> bias_aware_vdop;
   std::optional<double> bias_aware_dop;  // finite only; sigma_d times it is the CRLB on the position error
   // Initialized attempts only:
   std::optional<Eigen::Vector3d> error_xyz_m;  // estimate - truth

@@ -24,8 +24,15 @@ class TrueGeometry {
   void Add(const Eigen::Vector3d& p_world_tag);
   double Pdop() const;          // TruePdop of the samples so far
   double BiasAwareDop() const;  // BiasAwareDop of the samples so far
+  // BiasAwareDop split: sqrt(Q_xx + Q_yy) and sqrt(Q_zz) of its position block Q, so that
+  // DOP^2 = HDOP^2 + VDOP^2 (both +inf where it is). On a flat path the height trades off against
+  // the bias (the rows' vertical parts barely vary): a large VDOP.
+  double BiasAwareHorizontalDop() const;
+  double BiasAwareVerticalDop() const;
 
  private:
+  Eigen::Matrix3d BiasAwareInverse() const;  // the position block of (H^T H)^-1, H = [G | 1]
+
   Eigen::Vector3d p_world_anchor_;
   Eigen::Matrix3d sum_outer_ = Eigen::Matrix3d::Zero();  // sum u u^T
   Eigen::Vector3d sum_unit_ = Eigen::Vector3d::Zero();   // sum u

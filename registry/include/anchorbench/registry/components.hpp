@@ -39,7 +39,7 @@ struct FilterContext {
 // caller knows it. No built-in trigger of the estimator reads it.
 struct TriggerContext {
   estimator::TriggerOptions options;
-  estimator::LsOptions ls;
+  estimator::AnchorSolverOptions solver_options;  // the anchor's, its height prior included
   std::shared_ptr<const estimator::Solver> solver;
   std::optional<Eigen::Vector3d> p_world_anchor_reference;
 };
@@ -64,14 +64,15 @@ struct Components {
 void RegisterBuiltinSolvers(SolverRegistry& registry);
 // none, consistency, ransac.
 void RegisterBuiltinFilters(FilterRegistry& registry);
-// pdop_closest_point, pdop_ls, pdop_nls, fixed_window, sample_count, timeout.
+// pdop_closest_point, pdop_ls, pdop_nls, dop4_closest_point, dop4_confidence, hdop_closest_point,
+// fixed_window, sample_count, timeout.
 void RegisterBuiltinTriggers(TriggerRegistry& registry);
 // All three.
 void RegisterBuiltins(Components& components);
 
 // One anchor's initializer from names: config.filter.kind, config.solver and `trigger`. `seed`
 // feeds the parts that draw random numbers (RANSAC); the reference position serves evaluation
-// triggers. Throws std::invalid_argument saying which name could not be built and why.
+// triggers and a height prior taken from the reference (HeightPriorConfig). Throws std::invalid_argument saying which name could not be built and why.
 estimator::AnchorInitializer MakeInitializer(const Components& components, int anchor_id, const EstimatorConfig& config,
                                              const std::string& trigger, std::uint64_t seed,
                                              const std::optional<Eigen::Vector3d>& p_world_anchor_reference = std::nullopt);

@@ -1,11 +1,13 @@
 #pragma once
 
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "anchorbench/estimator/anchor_initializer.hpp"
 #include "anchorbench/estimator/anchor_solver.hpp"
 #include "anchorbench/estimator/consistency_filter.hpp"
+#include "anchorbench/estimator/height_prior.hpp"
 #include "anchorbench/estimator/ransac_solver.hpp"
 #include "anchorbench/estimator/triggers.hpp"
 
@@ -18,6 +20,23 @@ struct FilterConfig {
   estimator::RansacOptions ransac;
 };
 
+// Where an anchor's height prior comes from (the config's estimator.height_prior; ours,
+// docs/method.md "Flat paths"). Every anchor gets z_m if it is set; with from_reference, each
+// anchor gets its reference height instead (the truth in simulation, the survey in replay): the
+// stand-in for a height measured per anchor, shifted by offset_m to measure what a wrong one costs.
+struct HeightPriorConfig {
+  bool enabled = false;
+  double sigma_m = 0.1;
+  double z_m = 0.0;
+  bool from_reference = false;
+  double offset_m = 0.0;
+
+  bool IsValid(std::string* why) const;
+  // The prior of one anchor; none when disabled. Throws std::invalid_argument when it comes from
+  // a reference the anchor does not have.
+  std::optional<estimator::HeightPrior> For(int anchor_id, const std::optional<Eigen::Vector3d>& p_world_reference) const;
+};
+
 // The estimator as an experiment describes it (the config's `estimator` section): its parts by
 // registry name, and the typed options they are built with. Names are checked against the
 // caller's registries (Components::Check); IsValid checks the typed options.
@@ -28,6 +47,7 @@ struct EstimatorConfig {
   estimator::TriggerOptions trigger;                                     // estimator.trigger
   estimator::InitializerOptions initializer;  // estimator.trigger.min_samples / retry_growth, estimator.buffer
   estimator::AnchorSolverOptions solver_options;                         // estimator.ls, estimator.nls
+  HeightPriorConfig height_prior;                                        // estimator.height_prior
 
   bool IsValid(std::string* why) const;
 };
