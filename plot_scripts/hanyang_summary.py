@@ -57,6 +57,26 @@ if checked_root.exists():
         n0, xy0, z0, _ = pooled(root, method)
         n1, xy1, z1, refused = pooled(checked_root, method)
         lines.append(f"| {method} | {n0}, {xy0:.2f} / {z0:.2f} | {n1}, {xy1:.2f} / {z1:.2f}, {refused} |")
+# With each anchor's surveyed height as a prior (sigma 0.1 m) and the horizontal-DOP trigger.
+prior_root = RESULTS / "hanyang_height_prior"
+if prior_root.exists():
+    prior_methods = list(dict.fromkeys(r["method"] for r in read_csv(prior_root / cases[0].name / "estimates.csv")))
+    lines += ["", "With each anchor's surveyed height as a prior, sigma 0.1 m (`configs/hanyang_height_prior.yaml`, "
+              "results/hanyang_height_prior/), over all 8 cases: initialized of 32, median x-y / z error, mean and "
+              "worst error, median t_init.", "",
+              "| trigger | initialized | median x-y / z (m) | mean / worst (m) | median t_init (s) |", "|---|---|---|---|---|"]
+    for method in prior_methods:
+        rows = [r for case in cases for r in read_csv(prior_root / case.name / "estimates.csv") if r["method"] == method]
+        done = [r for r in rows if r["initialized"] == "1"]
+        if not done:
+            lines.append(f"| {method} | 0 / {len(rows)} | - | - | - |")
+            continue
+        xy = sorted(number(r["err_xy"]) for r in done)
+        z = sorted(number(r["err_z"]) for r in done)
+        errors = [number(r["err_m"]) for r in done]
+        t = sorted(number(r["t_init"]) for r in done)
+        lines.append(f"| {method} | {len(done)} / {len(rows)} | {xy[len(xy) // 2]:.2f} / {z[len(z) // 2]:.2f} | "
+                     f"{sum(errors) / len(errors):.2f} / {max(errors):.2f} | {t[len(t) // 2]:.0f} |")
 (root / "summary.md").write_text("\n".join(lines) + "\n")
 print(f"wrote {(root / 'summary.md').relative_to(RESULTS.parent)}")
 

@@ -115,6 +115,7 @@ void Trigger(V& v, registry::EstimatorConfig& o) {
   v.Integer("sample_count", o.trigger.sample_count);
   v.Number("timeout_s", o.trigger.timeout_s);
   v.Integer("evaluate_every", o.trigger.evaluate_every);
+  v.Number("evaluate_growth", o.trigger.evaluate_growth);
   v.Number("bias_aware_threshold", o.trigger.bias_aware_threshold);
   v.Number("confidence_threshold", o.trigger.confidence_threshold);
   v.Number("confidence_sigmas", o.trigger.confidence_sigmas);

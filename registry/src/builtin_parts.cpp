@@ -47,6 +47,10 @@ SolverRegistry::Factory LmWith(KernelMode kernel, double fixed_alpha = 1.0) {
 
 constexpr const char* kNloptPrefix = "nlopt:";
 
+estimator::SolveCadence Cadence(const estimator::TriggerOptions& options) {
+  return {options.evaluate_every, options.evaluate_growth};
+}
+
 }  // namespace
 
 void RegisterBuiltinSolvers(SolverRegistry& registry) {
@@ -100,19 +104,18 @@ void RegisterBuiltinTriggers(TriggerRegistry& registry) {
                     [](const std::string&, const Context& c) {
                       return std::make_unique<estimator::ClosestPointPdopTrigger>(c.options.pdop_threshold);
                     });
-  registry.Register("pdop_ls", "PDOP at the LS estimate < trigger.pdop_threshold (every trigger.evaluate_every samples)",
+  registry.Register("pdop_ls", "PDOP at the LS estimate < trigger.pdop_threshold (on trigger.evaluate_every / evaluate_growth)",
                     [](const std::string&, const Context& c) {
                       return std::make_unique<estimator::EstimatePdopTrigger>(
                           std::make_shared<estimator::DoubleDifferenceLsSolver>(c.solver_options.ls, c.solver_options.height_prior),
-                          c.options.pdop_threshold,
-                          c.options.evaluate_every);
+                          c.options.pdop_threshold, Cadence(c.options));
                     });
   registry.Register("pdop_nls",
-                    "PDOP at the solver's estimate < trigger.pdop_threshold (every trigger.evaluate_every samples)",
+                    "PDOP at the solver's estimate < trigger.pdop_threshold (on trigger.evaluate_every / evaluate_growth)",
                     [](const std::string&, const Context& c) {
                       if (!c.solver) throw std::invalid_argument("needs the anchor's solver");
                       return std::make_unique<estimator::EstimatePdopTrigger>(c.solver, c.options.pdop_threshold,
-                                                                              c.options.evaluate_every);
+                                                                              Cadence(c.options));
                     });
   registry.Register("dop4_closest_point",
                     "closest-point DOP with a bias column < trigger.bias_aware_threshold, O(1) (ours)",
@@ -129,12 +132,11 @@ void RegisterBuiltinTriggers(TriggerRegistry& registry) {
                     });
   registry.Register("dop4_confidence",
                     "worst bias-aware DOP over the trigger.confidence_sigmas region of the solver's estimate < "
-                    "trigger.confidence_threshold (every trigger.evaluate_every samples; ours)",
+                    "trigger.confidence_threshold (on trigger.evaluate_every / evaluate_growth; ours)",
                     [](const std::string&, const Context& c) {
                       if (!c.solver) throw std::invalid_argument("needs the anchor's solver");
                       return std::make_unique<estimator::ConfidenceRegionDopTrigger>(
-                          c.solver, c.options.confidence_threshold, c.options.evaluate_every,
-                          c.options.confidence_sigmas);
+                          c.solver, c.options.confidence_threshold, Cadence(c.options), c.options.confidence_sigmas);
                     });
   registry.Register("fixed_window", "the baseline: one solve on all of an anchor's data at the end of the run",
                     [](const std::string&, const Context&) { return std::make_unique<estimator::FixedWindowTrigger>(); });

@@ -121,6 +121,30 @@ TEST(Triggers, LsEvaluatesOnItsCadenceAndFiresOnTheFirstGoodEstimate) {
   }
 }
 
+// The solving triggers' cadence: the first eligible sample, then the first count at least `every`
+// past the last and `growth` times it; growth 1 is the fixed cadence.
+TEST(Triggers, SolveCadenceGrowsGeometrically) {
+  auto evaluations = [](int every, double growth) {
+    estimator::SolveCadence cadence(every, growth);
+    std::vector<std::size_t> at;
+    estimator::TriggerInput in;
+    for (std::size_t n = 1; n <= 5000; ++n) {
+      in.n_accepted = n;
+      in.eligible = n >= 20;
+      if (cadence.Due(in)) at.push_back(n);
+    }
+    return at;
+  };
+  const std::vector<std::size_t> fixed = evaluations(10, 1.0);
+  ASSERT_EQ(fixed.size(), 499u);
+  EXPECT_EQ(fixed[1], 30u);
+  const std::vector<std::size_t> grown = evaluations(10, 1.5);
+  EXPECT_EQ((std::vector<std::size_t>(grown.begin(), grown.begin() + 6)), (std::vector<std::size_t>{20, 30, 45, 68, 102, 153}));
+  std::size_t solved = 0;
+  for (std::size_t n : grown) solved += n;
+  EXPECT_LT(solved, 3u * 5000u);  // the solves' total stays O(N): sum n_i <= N g / (g - 1)
+}
+
 TEST(Triggers, NlsUsesTheAnchorsSolver) {
   const auto samples = PassBy(kAnchor, 0.05, 4);
   EstimatorConfig options = Unfiltered();

@@ -30,12 +30,13 @@ double Mean(const std::vector<double>& values) {
 }
 
 void WriteTraceRows(std::ostream& out, const std::vector<PdopCheckpoint>& checkpoints) {
-  out << "realization,anchor_id,n,t,pdop_closest_point,pdop_ls,pdop_nls,pdop_true,bias_aware_dop,ls_err_m,nls_err_m\n";
+  out << "realization,anchor_id,n,t,pdop_closest_point,pdop_ls,pdop_nls,pdop_true,bias_aware_dop,ls_err_m,nls_err_m,"
+         "dop4_closest_point,dop4_confidence\n";
   for (const PdopCheckpoint& c : checkpoints) {
     out << c.realization << ',' << c.anchor_id << ',' << c.n << ',' << FormatNumber(c.t_s);
     for (double value : c.pdop) out << ',' << FormatNumber(value);
     out << ',' << FormatNumber(c.bias_aware_dop) << ',' << io::FormatOptional(c.ls_error_m) << ',' << io::FormatOptional(c.nls_error_m)
-        << '\n';
+        << ',' << FormatNumber(c.dop4_closest_point) << ',' << FormatNumber(c.dop4_confidence) << '\n';
   }
 }
 
@@ -100,6 +101,50 @@ void WriteTriggers(std::ostream& md, const std::vector<PdopCheckpoint>& checkpoi
   }
 }
 
+// The bias-aware DOPs (ours): each online proxy against the true bias-aware DOP, and each as the
+// trigger at its own threshold, initialized with LS + NLS at that checkpoint. Same measures as the
+// PDOP triggers above, so the two tables compare.
+struct BiasAwareDop {
+  const char* name;
+  double PdopCheckpoint::*value;
+  double threshold;
+};
+
+void WriteBiasAware(std::ostream& md, const std::vector<PdopCheckpoint>& checkpoints, const std::vector<BiasAwareDop>& dops,
+                    int anchors) {
+  md << "\n## The bias-aware DOPs (ours): proxies against the true one, and each as the trigger\n\n"
+        "| DOP | threshold | below the true bias-aware DOP | initialized | median t (s) | median n | median error (m) "
+        "| mean error (m) | > 1 m |\n|---|---|---|---|---|---|---|---|---|\n";
+  for (const BiasAwareDop& dop : dops) {
+    long finite = 0, below = 0;
+    std::map<std::pair<int, int>, const PdopCheckpoint*> first;  // (realization, anchor) -> trigger
+    for (const PdopCheckpoint& c : checkpoints) {
+      const double value = c.*dop.value;
+      if (std::isfinite(value) && std::isfinite(c.bias_aware_dop)) {
+        ++finite;
+        below += value < c.bias_aware_dop;
+      }
+      const auto key = std::make_pair(c.realization, c.anchor_id);
+      if (!first.count(key) && value < dop.threshold && c.nls_error_m) first[key] = &c;
+    }
+    std::vector<double> times, samples, errors;
+    int bad = 0;
+    for (const auto& [key, c] : first) {
+      times.push_back(c->t_s);
+      samples.push_back(c->n);
+      errors.push_back(*c->nls_error_m);
+      bad += *c->nls_error_m > 1.0;
+    }
+    const bool oracle = dop.value == &PdopCheckpoint::bias_aware_dop;
+    const double count = static_cast<double>(first.size());
+    md << "| " << dop.name << " | " << FormatNumber(dop.threshold) << " | "
+       << (oracle ? "-" : finite ? FormatFixed(100.0 * below / finite, 1) + "%" : "-") << " | " << first.size()
+       << " / " << anchors << " | " << FormatFixed(Median(times), 1) << " | " << FormatFixed(Median(samples), 0)
+       << " | " << FormatFixed(Median(errors), 3) << " | " << FormatFixed(Mean(errors), 3) << " | "
+       << (count > 0 ? FormatFixed(100.0 * bad / count, 1) + "%" : "-") << " |\n";
+  }
+}
+
 }  // namespace
 
 void WritePdopTrace(std::ostream& out, const std::vector<PdopCheckpoint>& checkpoints) { WriteTraceRows(out, checkpoints); }
@@ -126,6 +171,12 @@ void WritePdopStudyMarkdown(std::ostream& md, const runner::ExperimentConfig& co
 
   WriteBins(md, study.checkpoints, bin_s);
   WriteTriggers(md, study.checkpoints, config.estimator.trigger.pdop_threshold, study.anchors);
+  const estimator::TriggerOptions& trigger = config.estimator.trigger;
+  WriteBiasAware(md, study.checkpoints,
+                 {{"dop4_closest_point", &PdopCheckpoint::dop4_closest_point, trigger.bias_aware_threshold},
+                  {"dop4_confidence", &PdopCheckpoint::dop4_confidence, trigger.confidence_threshold},
+                  {"dop4_true (oracle)", &PdopCheckpoint::bias_aware_dop, trigger.bias_aware_threshold}},
+                 study.anchors);
 }
 
 }  // namespace anchorbench::report

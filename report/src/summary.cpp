@@ -76,6 +76,17 @@ std::optional<double> Percentile(std::vector<double> values, double q) {
   return i + 1 < values.size() ? values[i] + fraction * (values[i + 1] - values[i]) : values[i];
 }
 
+namespace {
+
+// FNV-1a of the method's name, cut to the substream's 24 bits.
+std::uint32_t MethodSubstream(const std::string& method) {
+  std::uint32_t hash = 2166136261u;
+  for (const char c : method) hash = (hash ^ static_cast<unsigned char>(c)) * 16777619u;
+  return hash & sim::RandomStream::kMaxSubstream;
+}
+
+}  // namespace
+
 std::vector<MethodSummary> Summarize(const std::vector<Attempt>& attempts, const std::vector<runner::RowConfig>& rows,
                                      int realizations, int bootstrap_resamples, std::uint64_t seed) {
   std::vector<MethodSummary> summaries;
@@ -92,10 +103,11 @@ std::vector<MethodSummary> Summarize(const std::vector<Attempt>& attempts, const
         ++r.init;
         r.gt1m += *a.evaluation->error_m > 1.0;
       }
-      // One bootstrap stream per (row, method), numbered in table order.
-      const auto substream = static_cast<std::uint32_t>(summaries.size());
+      // One bootstrap stream per (row, method), named by them rather than numbered in table order:
+      // adding a trigger to a config leaves the other methods' intervals as they were.
       MethodSummary s = SummarizeOne(selected, sums, bootstrap_resamples,
-                                     sim::RandomStream(seed, 0, kBootstrapStream, substream));
+                                     sim::RandomStream(seed, static_cast<std::uint64_t>(row), kBootstrapStream,
+                                                       MethodSubstream(method)));
       s.row = row;
       s.method = method;
       summaries.push_back(s);

@@ -49,6 +49,23 @@ TEST(Summary, TableColumnsWorkedByHand) {
   EXPECT_FALSE(summaries[1].ratio_pct.has_value());
 }
 
+// A method's bootstrap interval depends on its own attempts only: another trigger in front of it
+// in the config does not move it.
+TEST(Summary, AddingATriggerLeavesTheOthersIntervalsAlone) {
+  std::vector<Attempt> attempts;
+  for (int r = 0; r < 10; ++r) attempts.push_back(Initialized(r, 0.1 * (r + 1)));
+  RowConfig alone, behind;
+  alone.estimator.triggers = {kFixedWindowTrigger};
+  behind.estimator.triggers = {"pdop_closest_point", kFixedWindowTrigger};
+  const auto a = Summarize(attempts, {alone}, 10, 200, 3);
+  const auto b = Summarize(attempts, {behind}, 10, 200, 3);
+  ASSERT_EQ(a.size(), 1u);
+  ASSERT_EQ(b.size(), 2u);
+  EXPECT_EQ(*a[0].avg_lo, *b[1].avg_lo);
+  EXPECT_EQ(*a[0].avg_hi, *b[1].avg_hi);
+  EXPECT_LT(*a[0].avg_lo, *a[0].avg_hi);
+}
+
 TEST(Summary, ManifestNamesWhatReproducesTheRun) {
   runner::ExperimentConfig config;
   config.seed = 7;

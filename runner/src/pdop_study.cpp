@@ -11,6 +11,7 @@
 #include "anchorbench/estimator/closest_point_pdop.hpp"
 #include "anchorbench/estimator/front_end.hpp"
 #include "anchorbench/estimator/pdop.hpp"
+#include "anchorbench/estimator/triggers.hpp"
 #include "anchorbench/eval/true_geometry.hpp"
 #include "anchorbench/io/input_error.hpp"
 #include "anchorbench/sim/scenario.hpp"
@@ -32,12 +33,13 @@ struct AnchorStudy {
 class StudyProbe : public estimator::InitTrigger {
  public:
   StudyProbe(const sim::SimAnchor& anchor, int realization, int every, const estimator::LsOptions& ls,
-             std::shared_ptr<const estimator::Solver> solver, AnchorStudy* out)
+             double confidence_sigmas, std::shared_ptr<const estimator::Solver> solver, AnchorStudy* out)
       : anchor_(anchor), realization_(realization), every_(static_cast<std::size_t>(every)), ls_(ls),
-        solver_(std::move(solver)), truth_(anchor.p_world_anchor), out_(out) {}
+        confidence_sigmas_(confidence_sigmas), solver_(std::move(solver)), truth_(anchor.p_world_anchor), out_(out) {}
 
   bool Fire(const estimator::TriggerInput& in) override {
     truth_.Add(in.sample_p_world_tag);
+    measured_.Add(in.sample_p_world_tag, in.sample_range_m);
     UpdateIdeal(in);
     CountUnderestimate(in.pdop);
     if (in.n_accepted % every_ == 0) out_->checkpoints.push_back(Checkpoint(in));
@@ -85,6 +87,8 @@ class StudyProbe : public estimator::InitTrigger {
     c.t_s = in.t_s - in.t_first_s;
     c.pdop = {in.pdop, kInf, kInf, truth_.Pdop()};
     c.bias_aware_dop = truth_.BiasAwareDop();
+    c.dop4_closest_point = measured_.BiasAwareValue();
+    c.dop4_confidence = kInf;
     const estimator::SolveResult ls = estimator::SolveDoubleDifferenceLs(in.p_world_tag, in.range_m, ls_);
     if (!estimator::Succeeded(ls.status)) return c;
     c.pdop[static_cast<int>(PdopMethod::kLs)] = estimator::GeometryPdop(in.p_world_tag, in.range_m, ls.p_world_anchor);
@@ -93,6 +97,7 @@ class StudyProbe : public estimator::InitTrigger {
     if (estimator::Succeeded(nls.status)) {
       c.pdop[static_cast<int>(PdopMethod::kNls)] = estimator::GeometryPdop(in.p_world_tag, in.range_m, nls.p_world_anchor);
       c.nls_error_m = (nls.p_world_anchor - anchor_.p_world_anchor).norm();
+      c.dop4_confidence = estimator::WorstBiasAwareDop(in.p_world_tag, nls, confidence_sigmas_);
     }
     return c;
   }
@@ -101,9 +106,11 @@ class StudyProbe : public estimator::InitTrigger {
   int realization_;
   std::size_t every_;
   estimator::LsOptions ls_;
+  double confidence_sigmas_;
   std::shared_ptr<const estimator::Solver> solver_;
   eval::TrueGeometry truth_;
   estimator::ClosestPointPdop ideal_;
+  estimator::ClosestPointPdop measured_;  // as the initializer keeps it (a trigger does not see those sums)
   bool precondition_ = true;
   AnchorStudy* out_;
 };
@@ -123,8 +130,8 @@ PdopStudy StudyRealization(const ExperimentConfig& config, const registry::Compo
     // The online stage of the configured filter (a batch filter such as RANSAC accepts everything here).
     std::unique_ptr<estimator::OutlierFilter> filter = components.filters.Create(estimator.filter.kind, {estimator.filter, 0}, &why);
     if (!filter) throw io::InputError(why);
-    auto probe = std::make_unique<StudyProbe>(anchor, realization, every, estimator.solver_options.ls, solver,
-                                              &by_anchor[anchor_id]);
+    auto probe = std::make_unique<StudyProbe>(anchor, realization, every, estimator.solver_options.ls,
+                                              estimator.trigger.confidence_sigmas, solver, &by_anchor[anchor_id]);
     std::vector<estimator::AnchorInitializer> chain;
     chain.emplace_back(anchor_id, estimator.initializer, std::move(filter), std::move(probe), solver);
     return chain;

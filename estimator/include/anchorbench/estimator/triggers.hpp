@@ -15,13 +15,16 @@ struct TriggerOptions {
   double pdop_threshold = 1.0;  // PDOP triggers: fire once the PDOP is below this (Sec. IV-A uses 1)
   int sample_count = 300;       // SampleCountTrigger: fire at this many accepted samples
   double timeout_s = 30.0;      // TimeoutTrigger: fire this long after the anchor's first accepted sample
-  // EstimatePdopTrigger: solve for the estimate every this many accepted samples. Each solve is
-  // O(N), so solving at every sample would make an anchor O(N^2).
+  // The triggers that solve (pdop_ls, pdop_nls, dop4_confidence): solve for the estimate every this
+  // many accepted samples, and (ours) once the data has grown by this factor since the last
+  // solve. Each solve is O(N): a fixed cadence makes a long run O(N^2 / every); a growth factor
+  // g > 1 bounds the solves' total to O(N g / (g - 1)). 1: the fixed cadence alone.
   int evaluate_every = 10;
+  double evaluate_growth = 1.0;
   // The bias-aware triggers (ours, docs/method.md): dop4_closest_point and the oracle dop4_true
   // fire once their 4-column DOP is below bias_aware_threshold; dop4_confidence once the worst
   // 4-column DOP over the confidence_sigmas ellipsoid of the running estimate is below
-  // confidence_threshold (evaluated every evaluate_every samples).
+  // confidence_threshold (evaluated on the cadence above).
   double bias_aware_threshold = 1.0;
   double confidence_threshold = 1.5;
   double confidence_sigmas = 3.0;
@@ -41,29 +44,34 @@ class ClosestPointPdopTrigger : public InitTrigger {
   double threshold_;
 };
 
-// When a trigger that solves for an estimate evaluates: at the first eligible sample, then every
-// `every` accepted samples. Each solve is O(N), so solving at every sample would make an anchor
-// O(N^2).
+// When a trigger that solves for an estimate evaluates: at the first eligible sample, then once
+// at least `every` more samples were accepted and the count has grown by the factor `growth`
+// (TriggerOptions::evaluate_every, evaluate_growth).
 class SolveCadence {
  public:
-  explicit SolveCadence(int every) : every_(static_cast<std::size_t>(every)) {}
+  SolveCadence(int every, double growth) : every_(static_cast<std::size_t>(every)), growth_(growth) {}
   bool Due(const TriggerInput& in) {
-    if (!in.eligible || (evaluated_at_ != 0 && in.n_accepted < evaluated_at_ + every_)) return false;
+    if (!in.eligible) return false;
+    if (evaluated_at_ != 0 && (in.n_accepted < evaluated_at_ + every_ ||
+                               static_cast<double>(in.n_accepted) < growth_ * static_cast<double>(evaluated_at_))) {
+      return false;
+    }
     evaluated_at_ = in.n_accepted;
     return true;
   }
 
  private:
   std::size_t every_;
+  double growth_;
   std::size_t evaluated_at_ = 0;  // sample count of the last evaluation (0: none yet)
 };
 
 // Sec. IV-B's alternatives: Eqs. (2)-(3) at the current estimate of a solver (LS, or the NLS the
-// anchor is initialized with), re-solved every `every` accepted samples.
+// anchor is initialized with), re-solved on the cadence.
 class EstimatePdopTrigger : public InitTrigger {
  public:
-  EstimatePdopTrigger(std::shared_ptr<const Solver> solver, double threshold, int every)
-      : solver_(std::move(solver)), threshold_(threshold), cadence_(every) {}
+  EstimatePdopTrigger(std::shared_ptr<const Solver> solver, double threshold, SolveCadence cadence)
+      : solver_(std::move(solver)), threshold_(threshold), cadence_(cadence) {}
   bool Fire(const TriggerInput& in) override;
 
  private:
@@ -95,13 +103,13 @@ class ClosestPointDopTrigger : public InitTrigger {
 
 // Ours, after a prototype described in issue 13: the estimate that looks well conditioned from
 // where it stands may be wrong, so judge the geometry from every corner of its confidence region.
-// Every `every` accepted samples it solves (the anchor's solver), and takes the worst bias-aware
+// On its cadence it solves (the anchor's solver), and takes the worst bias-aware
 // DOP at the estimate and at +-`sigmas` standard deviations along each principal axis of the
 // position covariance (7 points, O(N) each). It fires when that worst case is below the threshold.
 class ConfidenceRegionDopTrigger : public InitTrigger {
  public:
-  ConfidenceRegionDopTrigger(std::shared_ptr<const Solver> solver, double threshold, int every, double sigmas)
-      : solver_(std::move(solver)), threshold_(threshold), cadence_(every), sigmas_(sigmas) {}
+  ConfidenceRegionDopTrigger(std::shared_ptr<const Solver> solver, double threshold, SolveCadence cadence, double sigmas)
+      : solver_(std::move(solver)), threshold_(threshold), cadence_(cadence), sigmas_(sigmas) {}
   bool Fire(const TriggerInput& in) override;
 
  private:

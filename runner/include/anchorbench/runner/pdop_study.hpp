@@ -24,6 +24,11 @@ struct PdopCheckpoint {
   double t_s = 0.0;          // since the anchor's first accepted range
   std::array<double, 4> pdop{};  // by PdopMethod; +inf where undefined
   double bias_aware_dop = 0.0;   // true, with the bias column (CRLB / sigma_d)
+  // The online bias-aware proxies (docs/method.md): the closest-point DOP with a bias column
+  // (dop4_closest_point), and the worst bias-aware DOP over the confidence region of the NLS
+  // estimate (dop4_confidence, trigger.confidence_sigmas); +inf where undefined.
+  double dop4_closest_point = 0.0;
+  double dop4_confidence = 0.0;
   std::optional<double> ls_error_m, nls_error_m;
 };
 
