@@ -9,6 +9,7 @@ cd "$(dirname "$0")/.."
 bash scripts/build.sh anchorbench
 bin=build/app/anchorbench
 "$bin" run configs/table1.yaml --out results/table1 --overwrite
+/usr/bin/python3 scripts/table1_sensitivity.py 50   # one scenario choice at a time -> results/table1_sensitivity/
 for sweep in sweep_pdop_threshold sweep_tau sweep_noise_outliers; do
   "$bin" sweep "configs/$sweep.yaml" --out "results/$sweep" --quiet --overwrite
 done

@@ -126,6 +126,8 @@ void Trigger(V& v, registry::EstimatorConfig& o) {
 
 template <typename V>
 void Ls(V& v, estimator::LsOptions& o) {
+  v.Choice("method", o.method, estimator::ParseLsMethod, [](auto m) { return estimator::ToString(m); },
+           "ordinary, total");
   v.Choice("pivot", o.pivot, estimator::ParseLsPivot, [](auto p) { return estimator::ToString(p); },
            "shortest_range, minimum_variance");
   v.Number("sigma_range_m", o.sigma_range_m);

@@ -4,6 +4,7 @@
 #include <optional>
 
 #include <Eigen/Cholesky>
+#include <Eigen/Eigenvalues>
 
 #include "numerics.hpp"
 
@@ -67,6 +68,15 @@ std::string_view ToString(LsPivot pivot) {
   return pivot == LsPivot::kShortestRange ? "shortest_range" : "minimum_variance";
 }
 
+std::string_view ToString(LsMethod method) { return method == LsMethod::kOrdinary ? "ordinary" : "total"; }
+
+bool ParseLsMethod(std::string_view name, LsMethod* method) {
+  if (name == "ordinary") *method = LsMethod::kOrdinary;
+  else if (name == "total") *method = LsMethod::kTotal;
+  else return false;
+  return true;
+}
+
 bool ParseLsPivot(std::string_view name, LsPivot* pivot) {
   if (name == "shortest_range") *pivot = LsPivot::kShortestRange;
   else if (name == "minimum_variance") *pivot = LsPivot::kMinimumVariance;
@@ -120,6 +130,25 @@ bool RowVarianceAtHeight(const RowBuilder& rows, std::size_t n, const Eigen::Mat
   return std::isfinite(*variance);
 }
 
+// Total least squares: the x minimizing ||A x - b||^2 / (1 + ||x||^2), i.e. v = [x; -1] along the
+// eigenvector of the smallest eigenvalue of the Gram matrix of [A b]. False when that eigenvector
+// has no b component (no solution of this form).
+bool TotalLeastSquares(const Eigen::Matrix4d& normal, const Eigen::Vector4d& rhs, double b_squares,
+                       Eigen::Vector4d* x) {
+  using Matrix5d = Eigen::Matrix<double, 5, 5>;
+  Matrix5d gram;
+  gram.topLeftCorner<4, 4>() = normal;
+  gram.topRightCorner<4, 1>() = rhs;
+  gram.bottomLeftCorner<1, 4>() = rhs.transpose();
+  gram(4, 4) = b_squares;
+  const Eigen::SelfAdjointEigenSolver<Matrix5d> eigen(gram);
+  if (eigen.info() != Eigen::Success) return false;
+  const Eigen::Matrix<double, 5, 1> v = eigen.eigenvectors().col(0);  // eigenvalues ascending
+  if (!(std::abs(v(4)) > 1e-12)) return false;
+  *x = -v.head<4>() / v(4);
+  return x->allFinite();
+}
+
 }  // namespace
 
 SolveResult SolveDoubleDifferenceLs(std::span<const Eigen::Vector3d> p_world_tag, std::span<const double> range_m,
@@ -135,11 +164,13 @@ SolveResult SolveDoubleDifferenceLs(std::span<const Eigen::Vector3d> p_world_tag
 
   Eigen::Matrix4d normal = Eigen::Matrix4d::Zero();
   Eigen::Vector4d rhs = Eigen::Vector4d::Zero();
+  double b_squares = 0.0;  // for total least squares
   for (std::size_t k = 0; k < n; ++k) {
     if (k == j) continue;
     const Row row = rows(k);
     normal.noalias() += row.weight * row.a * row.a.transpose();
     rhs += row.weight * row.b * row.a;
+    b_squares += row.weight * row.b * row.b;
   }
   if (!normal.allFinite() || !rhs.allFinite()) {
     result.status = SolveStatus::kNumericalFailure;
@@ -159,6 +190,7 @@ SolveResult SolveDoubleDifferenceLs(std::span<const Eigen::Vector3d> p_world_tag
     prior_weight = row_variance / (height_prior->sigma_m * height_prior->sigma_m);
     normal(2, 2) += prior_weight;
     rhs(2) += prior_weight * prior_x_z;
+    b_squares += prior_weight * prior_x_z * prior_x_z;
     rows_observed += 1.0;
   }
   Eigen::Matrix4d normal_inverse;
@@ -166,7 +198,11 @@ SolveResult SolveDoubleDifferenceLs(std::span<const Eigen::Vector3d> p_world_tag
     result.status = SolveStatus::kDegenerateGeometry;  // e.g. collinear tag positions
     return result;
   }
-  const Eigen::Vector4d x = normal_inverse * rhs;
+  Eigen::Vector4d x = normal_inverse * rhs;
+  if (options.method == LsMethod::kTotal && !TotalLeastSquares(normal, rhs, b_squares, &x)) {
+    result.status = SolveStatus::kDegenerateGeometry;
+    return result;
+  }
 
   // Covariance s^2 (A^T W A)^-1, s^2 the weighted residual variance of the linear system (the
   // prior's row, if any, has its residual in the sum too).

@@ -24,6 +24,32 @@ TEST(DoubleDifferenceLs, RecoversAnchorAndBiasExactlyOnNoiseFreeData) {
   }
 }
 
+// Total least squares: exact on noise-free data like the ordinary one; on noisy data a different
+// solution of comparable accuracy (it weighs errors in A as well as in b).
+TEST(DoubleDifferenceLs, TotalLeastSquaresIsExactWithoutNoiseAndDiffersWithIt) {
+  LsOptions total;
+  total.method = LsMethod::kTotal;
+  for (int trial = 0; trial < 10; ++trial) {
+    auto rng = testing::TestStream(200 + trial);
+    const Eigen::Vector3d p_anchor = testing::UniformIn(rng, Eigen::Vector3d(-20, -20, 0), Eigen::Vector3d(20, 20, 5));
+    const auto exact = testing::BoxData(rng, 60, p_anchor, p_anchor + Eigen::Vector3d(6, -3, 0), 4.0, 0.2, 0.0);
+    const SolveResult tls = SolveDoubleDifferenceLs(exact.p_world_tag, exact.range_m, total);
+    ASSERT_EQ(tls.status, SolveStatus::kConverged);
+    EXPECT_LT((tls.p_world_anchor - p_anchor).norm(), 1e-6);
+    EXPECT_NEAR(tls.bias_m, 0.2, 1e-6);
+    const auto noisy = testing::BoxData(rng, 400, p_anchor, p_anchor + Eigen::Vector3d(6, -3, 0), 4.0, 0.2, 0.1);
+    const SolveResult ols = SolveDoubleDifferenceLs(noisy.p_world_tag, noisy.range_m);
+    const SolveResult tls_noisy = SolveDoubleDifferenceLs(noisy.p_world_tag, noisy.range_m, total);
+    ASSERT_EQ(tls_noisy.status, SolveStatus::kConverged);
+    EXPECT_GT((tls_noisy.p_world_anchor - ols.p_world_anchor).norm(), 1e-9);
+    EXPECT_LT((tls_noisy.p_world_anchor - p_anchor).norm(), 1.0);
+  }
+  LsMethod method;
+  EXPECT_TRUE(ParseLsMethod("total", &method));
+  EXPECT_EQ(method, LsMethod::kTotal);
+  EXPECT_FALSE(ParseLsMethod("tls", &method));
+}
+
 TEST(DoubleDifferenceLs, CollinearPositionsAreDegenerateNotNan) {
   std::vector<Eigen::Vector3d> p;
   std::vector<double> d;

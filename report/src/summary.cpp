@@ -1,6 +1,7 @@
 #include "anchorbench/report/summary.hpp"
 
 #include <algorithm>
+#include <cmath>
 
 #include "anchorbench/sim/random_stream.hpp"
 
@@ -44,7 +45,7 @@ MethodSummary SummarizeOne(const std::vector<const Attempt*>& attempts, const st
   s.med_m = Percentile(errors, 0.5);
   s.ratio_pct = 100.0 * s.gt1m / s.init;
 
-  std::vector<double> avg_samples, ratio_samples;
+  std::vector<double> avg_samples;
   const int realizations = static_cast<int>(sums.size());
   for (int b = 0; b < bootstrap_resamples; ++b) {
     RealizationSums resample;
@@ -56,16 +57,27 @@ MethodSummary SummarizeOne(const std::vector<const Attempt*>& attempts, const st
     }
     if (resample.init == 0) continue;
     avg_samples.push_back(resample.error_sum_m / resample.init);
-    ratio_samples.push_back(100.0 * resample.gt1m / resample.init);
   }
   s.avg_lo = Percentile(avg_samples, 0.025);
   s.avg_hi = Percentile(avg_samples, 0.975);
-  s.ratio_lo = Percentile(ratio_samples, 0.025);
-  s.ratio_hi = Percentile(ratio_samples, 0.975);
+  const Interval ratio = *WilsonInterval(s.gt1m, s.init);
+  s.ratio_lo = 100.0 * ratio.lo;
+  s.ratio_hi = 100.0 * ratio.hi;
   return s;
 }
 
 }  // namespace
+
+std::optional<Interval> WilsonInterval(int successes, int trials) {
+  if (trials <= 0) return std::nullopt;
+  constexpr double kZ = 1.959963984540054;  // the standard normal's 97.5% quantile
+  const double n = trials;
+  const double p = successes / n;
+  const double z2_n = kZ * kZ / n;
+  const double centre = (p + z2_n / 2.0) / (1.0 + z2_n);
+  const double half = kZ * std::sqrt(p * (1.0 - p) / n + z2_n / (4.0 * n)) / (1.0 + z2_n);
+  return Interval{std::max(0.0, centre - half), std::min(1.0, centre + half)};
+}
 
 std::optional<double> Percentile(std::vector<double> values, double q) {
   if (values.empty()) return std::nullopt;

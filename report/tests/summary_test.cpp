@@ -66,6 +66,28 @@ TEST(Summary, AddingATriggerLeavesTheOthersIntervalsAlone) {
   EXPECT_LT(*a[0].avg_lo, *a[0].avg_hi);
 }
 
+// Wilson's interval, against values worked by hand (z = 1.96): 0 of 10 gives [0, 0.2775], 5 of 10
+// [0.2366, 0.7634]; never outside [0, 1], absent without trials.
+TEST(Summary, WilsonIntervalIsMeaningfulAtZero) {
+  const Interval none = *WilsonInterval(0, 10);
+  EXPECT_DOUBLE_EQ(none.lo, 0.0);
+  EXPECT_NEAR(none.hi, 0.2775, 1e-4);
+  const Interval half = *WilsonInterval(5, 10);
+  EXPECT_NEAR(half.lo, 0.2366, 1e-4);
+  EXPECT_NEAR(half.hi, 0.7634, 1e-4);
+  const Interval all = *WilsonInterval(10, 10);
+  EXPECT_NEAR(all.lo, 1.0 - 0.2775, 1e-4);
+  EXPECT_DOUBLE_EQ(all.hi, 1.0);
+  EXPECT_FALSE(WilsonInterval(0, 0));
+  std::vector<Attempt> attempts;
+  for (int r = 0; r < 20; ++r) attempts.push_back(Initialized(r, 0.1));
+  RowConfig row;
+  row.estimator.triggers = {kFixedWindowTrigger};
+  const MethodSummary s = Summarize(attempts, {row}, 20, 100, 1)[0];
+  EXPECT_EQ(*s.ratio_lo, 0.0);
+  EXPECT_NEAR(*s.ratio_hi, 100.0 * 0.1611, 0.01);  // 0 of 20: up to 16%, not [0, 0]
+}
+
 TEST(Summary, ManifestNamesWhatReproducesTheRun) {
   runner::ExperimentConfig config;
   config.seed = 7;

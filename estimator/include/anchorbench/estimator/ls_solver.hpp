@@ -21,7 +21,15 @@ enum class LsPivot {
 std::string_view ToString(LsPivot pivot);
 bool ParseLsPivot(std::string_view name, LsPivot* pivot);
 
+enum class LsMethod {
+  kOrdinary,  // min ||A x - b||: errors in b only (our default; every committed result uses it)
+  kTotal,     // total least squares, errors in A and b alike: the paper's name for its linear step
+};
+std::string_view ToString(LsMethod method);
+bool ParseLsMethod(std::string_view name, LsMethod* method);
+
 struct LsOptions {
+  LsMethod method = LsMethod::kOrdinary;
   LsPivot pivot = LsPivot::kShortestRange;
   double sigma_range_m = 0.1;     // for kMinimumVariance only
   double sigma_position_m = 0.05;  // for kMinimumVariance only
@@ -34,7 +42,10 @@ struct LsOptions {
 //   b_k = ((d_k^2 - d_j^2) - (||p_k||^2 - ||p_j||^2)) / 2               Eq. (10)
 // Solved through the 4x4 normal equations accumulated in one O(N) pass (no N x 4 matrix), with
 // positions taken relative to p_j so the squared norms do not cancel far from the origin.
-// Ordinary least squares on these rows (the paper calls its linear step total least squares).
+// Ordinary least squares on these rows by default; the paper calls its linear step total least
+// squares, which LsMethod::kTotal solves: the eigenvector of the smallest eigenvalue of
+// [A b]^T W [A b] (5x5, from the same one pass), in the rows' own units (m and m^2, unscaled). The
+// covariance is s^2 (A^T W A)^-1 at the solution for both (for TLS a first-order stand-in).
 // A height prior adds the row [0 0 1 0] x = z_prior, weighted by the rows' residual variance with
 // the height held at the prior over sigma^2 (ours: the rows are in m^2, the prior in m).
 SolveResult SolveDoubleDifferenceLs(std::span<const Eigen::Vector3d> p_world_tag,

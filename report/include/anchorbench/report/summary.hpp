@@ -22,9 +22,11 @@ struct MethodSummary {
   int gt1m = 0;                      // initialized with error > 1 m
   std::optional<double> ratio_pct;   // 100 gt1m / init
   std::optional<double> t_init_mean_s, t_init_med_s;  // when the initialized attempts initialized
-  // 95% percentile intervals from a bootstrap over realizations (whole realizations are resampled:
-  // the anchors of one realization share a trajectory, so they are not independent), drawn from
-  // the stream (seed, 0, kBootstrapStream, summary index).
+  // Avg: the 95% percentile interval of a bootstrap over realizations (whole realizations are
+  // resampled: the anchors of one realization share a trajectory, so they are not independent),
+  // drawn from the stream (seed, row, kBootstrapStream, a hash of the method's name).
+  // Ratio: the 95% Wilson score interval of gt1m out of init, which stays meaningful at 0 or init
+  // failures (a bootstrap there collapses to [0, 0]). It treats the initializations as independent.
   std::optional<double> avg_lo, avg_hi, ratio_lo, ratio_hi;
   // The credibility of the initialized attempts' position covariances (3-dof NEES; docs/method.md).
   eval::Credibility position_credibility;
@@ -32,6 +34,12 @@ struct MethodSummary {
 };
 
 constexpr std::uint32_t kBootstrapStream = 9;  // above the simulator's ids and runner::kSolverStream
+
+// The 95% Wilson score interval of a proportion successes / trials, in [0, 1]; absent for no trials.
+struct Interval {
+  double lo = 0.0, hi = 0.0;
+};
+std::optional<Interval> WilsonInterval(int successes, int trials);
 
 // The q-quantile (0..1) with linear interpolation; absent for no values.
 std::optional<double> Percentile(std::vector<double> values, double q);
