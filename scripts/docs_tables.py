@@ -45,9 +45,11 @@ def cell(r, with_init=True):
 
 def stress_triggers():
     cells, timing = stress_cells()
-    labels = {"pdop_true": "pdop_true (oracle)", "sample_count": "sample_count (700)", "timeout": "timeout (70 s)"}
+    labels = {"pdop_true": "pdop_true (oracle)", "sample_count": "sample_count (700)", "timeout": "timeout (70 s)",
+              "dop4_true": "dop4_true (oracle)"}
     rows = []
-    for method in ["pdop_closest_point", "pdop_ls", "pdop_nls", "pdop_true", "fixed_window", "sample_count", "timeout"]:
+    for method in ["pdop_closest_point", "pdop_ls", "pdop_nls", "pdop_true", "fixed_window", "sample_count", "timeout",
+                   "dop4_closest_point", "dop4_confidence", "dop4_true"]:
         row = [labels.get(method, method)]
         for row_id in ("1", "4"):
             row.append(cell(cells[("lm_adaptive", "consistency", row_id, method)]))
