@@ -211,10 +211,10 @@ def height_check_table():
     return table(["trigger", "row", "without: Avg, >1 m, Init (of 600)", "with the mirror check"], rows)
 
 
-def flat_path_table():
-    """The flat floor, per row and method (the fixed window, and any online trigger that initialized):
-    initialized, refused, > 1 m, median x-y and z error, median time of the initialization."""
-    attempts = read("flat_path/attempts.csv")
+def height_table(folder):
+    """Per row and method (the fixed window, and any online trigger that initialized): initialized,
+    refused, > 1 m, median x-y and z error, median time of the initialization."""
+    attempts = read(f"{folder}/attempts.csv")
     rows = []
     for name in dict.fromkeys(a["row"] for a in attempts):
         for method in dict.fromkeys(a["method"] for a in attempts if a["row"] == name):
@@ -233,6 +233,14 @@ def flat_path_table():
                          f"{t[len(t) // 2]:.0f} s" if done else "-"])
     return table(["row", "method", "initialized", "height_unobservable", "> 1 m", "median x-y error", "median z error",
                   "median t_init"], rows)
+
+
+def flat_path_table():
+    return height_table("flat_path")
+
+
+def amr_height_table():
+    return height_table("amr_hall_height")
 
 
 def bias_aware_everywhere():
@@ -436,7 +444,7 @@ GENERATORS = {f.__name__: f for f in (stress_triggers, stress_solvers, stress_co
                                       credibility_table1, bias_aware_table, bias_aware_sweep,
                                       height_check_table, flat_path_table, bias_aware_everywhere,
                                       ransac_cost, uav_against_paper, halls_amr_table, halls_uav_table,
-                                      table1_scores, table1_holds, table1_sensitivity)}
+                                      table1_scores, table1_holds, table1_sensitivity, amr_height_table)}
 MARKER = re.compile(r"(<!-- generated: (\w+) \(scripts/docs_tables.py\) -->\n)(.*?)(<!-- end generated -->)", re.S)
 
 

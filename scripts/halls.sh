@@ -4,7 +4,7 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 bin=build/app/anchorbench
-for hall in amr_hall uav_hall table2; do
+for hall in amr_hall amr_hall_height uav_hall table2; do
   "$bin" run "configs/$hall.yaml" --out "results/$hall" --quiet --overwrite
 done
 example() {  # NAME CONFIG [--set ...]: simulate realization 0, replay it, keep the estimates

@@ -51,7 +51,8 @@ void WriteOurTable(std::ostream& out, const std::vector<MethodSummary>& summarie
   for (const std::string& trigger : rows.front().estimator.triggers) compared += (compared.empty() ? "" : " vs ") + trigger;
   out << "# " << config.name << ": " << compared << "\n\n"
       << config.realizations << " realizations per row, seed " << config.seed
-      << ". Errors over initialized attempts; [95% bootstrap interval over realizations].\n\n"
+      << ". Errors over initialized attempts; Avg [95% bootstrap interval over realizations], Ratio [95% Wilson "
+         "interval].\n\n"
       << "| # | Method | Avg. (m) | Med. (m) | Init. | >1m | Ratio (%) | t_init mean / median (s) |\n"
       << "|---|---|---|---|---|---|---|---|\n";
   for (const MethodSummary& s : summaries) {
