@@ -29,5 +29,6 @@ for ax, (key, lo, hi, paper_key, label) in zip(axes, panels):
     ax.set_xticks(x + width / 2, [f"row {n}" for n in names])
     ax.set_ylabel(label)
 axes[0].legend(loc="upper left")
-fig.suptitle("Table I: PDOP-gated vs fixed window (solid: ours with 95% bootstrap interval; hatched: paper)")
+fig.suptitle("Table I: PDOP-gated vs fixed window (solid: ours with 95% intervals, bootstrap for Avg, Wilson for "
+             "Ratio; hatched: paper)")
 save(fig, RESULTS / "table1" / "table1_bars.png")
