@@ -405,6 +405,31 @@ def table1_sensitivity():
     return table(["variant", "cells within 25%", "paper inside our interval", "row 1", "row 2", "row 3", "row 4"], rows)
 
 
+def pdop_triggers_table():
+    """Figs. 7/8's triggers: overconfident share in the first 40 s and the trigger outcomes
+    (results/pdop_study/pdop_study.md), the cost per update at 1000 samples (bench_triggers in
+    results/benchmarks/micro.csv)."""
+    text = (RESULTS / "pdop_study" / "pdop_study.md").read_text()
+    bins = re.findall(r"^\| (\d+)-\d+ \| [-\d.]+ / (\d+)% \| [-\d.]+ / (\d+)% \| [-\d.]+ / (\d+)% \|", text, re.M)
+    early = [b for b in bins if float(b[0]) < 40]
+    shares = {m: [int(b[i]) for b in early] for i, m in ((1, "closest_point"), (2, "ls"), (3, "nls"))}
+    outcomes = {m: (init, median) for m, init, median in
+                re.findall(r"^\| (closest_point|ls|nls|true)(?: \(oracle\))? \| (\d+ / \d+) \| [\d.]+ \| \d+ \| ([\d.]+) \|",
+                           text, re.M)}
+    micro = {r["benchmark"]: f"{float(r['time']):.3g} {r['unit']}" for r in read("benchmarks/micro.csv")}
+    rows = []
+    for method, label, bench, note in [
+            ("closest_point", "closest point (ours)", "BM_UpdateClosestPoint/1000", "O(1)"),
+            ("ls", "PDOP at the LS estimate", "BM_UpdateLsPdop/1000", "O(N): LS solve + Eq. (3)"),
+            ("nls", "PDOP at the NLS estimate", "BM_UpdateNlsPdop/1000", "O(N): LS + NLS + Eq. (3)"),
+            ("true", "true PDOP (oracle)", "BM_UpdateTruePdop/1000", "O(1) running sums, needs the truth")]:
+        early_share = f"{min(shares[method])}-{max(shares[method])}%" if method in shares else "-"
+        init, median = outcomes[method]
+        rows.append([label, early_share, init, f"{median} m", f"{micro[bench]} ({note})"])
+    return table(["trigger", "below the true PDOP, first 40 s", "initialized (threshold 1)", "median error at trigger",
+                  "cost per update at 1000 samples (`bench_triggers`)"], rows)
+
+
 def performance_bullets():
     solvers = {(r["solver"], int(r["samples"])): r for r in read("benchmarks/solvers.csv")}
 
@@ -444,7 +469,8 @@ GENERATORS = {f.__name__: f for f in (stress_triggers, stress_solvers, stress_co
                                       credibility_table1, bias_aware_table, bias_aware_sweep,
                                       height_check_table, flat_path_table, bias_aware_everywhere,
                                       ransac_cost, uav_against_paper, halls_amr_table, halls_uav_table,
-                                      table1_scores, table1_holds, table1_sensitivity, amr_height_table)}
+                                      table1_scores, table1_holds, table1_sensitivity, amr_height_table,
+                                      pdop_triggers_table)}
 MARKER = re.compile(r"(<!-- generated: (\w+) \(scripts/docs_tables.py\) -->\n)(.*?)(<!-- end generated -->)", re.S)
 
 
