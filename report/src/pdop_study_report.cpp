@@ -70,40 +70,59 @@ void WriteBins(std::ostream& md, const std::vector<PdopCheckpoint>& checkpoints,
   }
 }
 
-// Figs. 7/8 right: each method as the trigger at the threshold; the NLS solution on the data at
-// that checkpoint is the initialization.
+// A DOP used as the trigger: at the first checkpoint of each (realization, anchor) where it is
+// below the threshold (and the NLS solved), the NLS solution there is the initialization.
+struct TriggerOutcome {
+  std::vector<const PdopCheckpoint*> fired;  // one per initialized anchor
+  std::vector<double> times, samples, errors;
+  int bad = 0;  // errors > 1 m
+};
+
+template <typename Dop>
+TriggerOutcome FireAt(const std::vector<PdopCheckpoint>& checkpoints, Dop dop, double threshold) {
+  std::map<std::pair<int, int>, const PdopCheckpoint*> first;  // (realization, anchor) -> trigger
+  for (const PdopCheckpoint& c : checkpoints) {
+    const auto key = std::make_pair(c.realization, c.anchor_id);
+    if (!first.count(key) && dop(c) < threshold && c.nls_error_m) first[key] = &c;
+  }
+  TriggerOutcome outcome;
+  for (const auto& [key, c] : first) {
+    outcome.fired.push_back(c);
+    outcome.times.push_back(c->t_s);
+    outcome.samples.push_back(c->n);
+    outcome.errors.push_back(*c->nls_error_m);
+    outcome.bad += *c->nls_error_m > 1.0;
+  }
+  return outcome;
+}
+
+// "initialized | median t | median n | median error | mean error | > 1 m" cells of an outcome.
+std::string OutcomeCells(const TriggerOutcome& o, int anchors) {
+  const double count = static_cast<double>(o.fired.size());
+  return std::to_string(o.fired.size()) + " / " + std::to_string(anchors) + " | " + FormatFixed(Median(o.times), 1) +
+         " | " + FormatFixed(Median(o.samples), 0) + " | " + FormatFixed(Median(o.errors), 3) + " | " +
+         FormatFixed(Mean(o.errors), 3) + " | " + (count > 0 ? FormatFixed(100.0 * o.bad / count, 1) + "%" : "-");
+}
+
+// Figs. 7/8 right: each method as the trigger at the threshold.
 void WriteTriggers(std::ostream& md, const std::vector<PdopCheckpoint>& checkpoints, double threshold, int anchors) {
   md << "\n## Each PDOP as the trigger (threshold " << threshold
      << "), initialized with LS + NLS at that checkpoint\n\n"
         "| trigger | initialized | median t (s) | median n | median error (m) | mean error (m) | > 1 m | bias-aware DOP > threshold |\n"
         "|---|---|---|---|---|---|---|---|\n";
   for (PdopMethod m : kPdopMethods) {
-    std::map<std::pair<int, int>, const PdopCheckpoint*> first;  // (realization, anchor) -> trigger
-    for (const PdopCheckpoint& c : checkpoints) {
-      const auto key = std::make_pair(c.realization, c.anchor_id);
-      if (!first.count(key) && c.pdop[static_cast<int>(m)] < threshold && c.nls_error_m) first[key] = &c;
-    }
-    std::vector<double> times, samples, errors;
-    int bad = 0, bias_aware_above = 0;
-    for (const auto& [key, c] : first) {
-      times.push_back(c->t_s);
-      samples.push_back(c->n);
-      errors.push_back(*c->nls_error_m);
-      bad += *c->nls_error_m > 1.0;
-      bias_aware_above += c->bias_aware_dop > threshold;
-    }
-    const double count = static_cast<double>(first.size());
-    md << "| " << PdopMethodName(m) << (m == PdopMethod::kTrue ? " (oracle)" : "") << " | " << first.size() << " / "
-       << anchors << " | " << FormatFixed(Median(times), 1) << " | " << FormatFixed(Median(samples), 0) << " | "
-       << FormatFixed(Median(errors), 3) << " | " << FormatFixed(Mean(errors), 3) << " | "
-       << (count > 0 ? FormatFixed(100.0 * bad / count, 1) + "%" : "-") << " | "
-       << (count > 0 ? FormatFixed(100.0 * bias_aware_above / count, 0) + "%" : "-") << " |\n";
+    const TriggerOutcome o =
+        FireAt(checkpoints, [m](const PdopCheckpoint& c) { return c.pdop[static_cast<int>(m)]; }, threshold);
+    int bias_aware_above = 0;
+    for (const PdopCheckpoint* c : o.fired) bias_aware_above += c->bias_aware_dop > threshold;
+    const double count = static_cast<double>(o.fired.size());
+    md << "| " << PdopMethodName(m) << (m == PdopMethod::kTrue ? " (oracle)" : "") << " | " << OutcomeCells(o, anchors)
+       << " | " << (count > 0 ? FormatFixed(100.0 * bias_aware_above / count, 0) + "%" : "-") << " |\n";
   }
 }
 
 // The bias-aware DOPs (ours): each online proxy against the true bias-aware DOP, and each as the
-// trigger at its own threshold, initialized with LS + NLS at that checkpoint. Same measures as the
-// PDOP triggers above, so the two tables compare.
+// trigger at its own threshold, measured as the PDOP triggers above, so the two tables compare.
 struct BiasAwareDop {
   const char* name;
   double PdopCheckpoint::*value;
@@ -117,31 +136,18 @@ void WriteBiasAware(std::ostream& md, const std::vector<PdopCheckpoint>& checkpo
         "| mean error (m) | > 1 m |\n|---|---|---|---|---|---|---|---|---|\n";
   for (const BiasAwareDop& dop : dops) {
     long finite = 0, below = 0;
-    std::map<std::pair<int, int>, const PdopCheckpoint*> first;  // (realization, anchor) -> trigger
     for (const PdopCheckpoint& c : checkpoints) {
-      const double value = c.*dop.value;
-      if (std::isfinite(value) && std::isfinite(c.bias_aware_dop)) {
+      if (std::isfinite(c.*dop.value) && std::isfinite(c.bias_aware_dop)) {
         ++finite;
-        below += value < c.bias_aware_dop;
+        below += c.*dop.value < c.bias_aware_dop;
       }
-      const auto key = std::make_pair(c.realization, c.anchor_id);
-      if (!first.count(key) && value < dop.threshold && c.nls_error_m) first[key] = &c;
     }
-    std::vector<double> times, samples, errors;
-    int bad = 0;
-    for (const auto& [key, c] : first) {
-      times.push_back(c->t_s);
-      samples.push_back(c->n);
-      errors.push_back(*c->nls_error_m);
-      bad += *c->nls_error_m > 1.0;
-    }
+    const TriggerOutcome o =
+        FireAt(checkpoints, [&dop](const PdopCheckpoint& c) { return c.*dop.value; }, dop.threshold);
     const bool oracle = dop.value == &PdopCheckpoint::bias_aware_dop;
-    const double count = static_cast<double>(first.size());
     md << "| " << dop.name << " | " << FormatNumber(dop.threshold) << " | "
-       << (oracle ? "-" : finite ? FormatFixed(100.0 * below / finite, 1) + "%" : "-") << " | " << first.size()
-       << " / " << anchors << " | " << FormatFixed(Median(times), 1) << " | " << FormatFixed(Median(samples), 0)
-       << " | " << FormatFixed(Median(errors), 3) << " | " << FormatFixed(Mean(errors), 3) << " | "
-       << (count > 0 ? FormatFixed(100.0 * bad / count, 1) + "%" : "-") << " |\n";
+       << (oracle ? "-" : finite ? FormatFixed(100.0 * below / finite, 1) + "%" : "-") << " | "
+       << OutcomeCells(o, anchors) << " |\n";
   }
 }
 
