@@ -5,6 +5,7 @@
 #include <sstream>
 
 #include "anchorbench/io/format.hpp"
+#include "anchorbench/report/paper_cells.hpp"
 
 namespace anchorbench::report {
 namespace {
@@ -27,20 +28,6 @@ std::string JsonList(const std::vector<std::string>& items) {
   return out + "]";
 }
 
-// "paper / ours (+x%)" with the verdict against the +-25% target.
-std::string Compare(double paper, const std::optional<double>& ours, int decimals, bool* within) {
-  if (!ours) {
-    *within = false;
-    return FormatFixed(paper, decimals) + " / - ";
-  }
-  const double relative = paper != 0.0 ? (*ours - paper) / paper : 0.0;
-  *within = std::abs(relative) <= 0.25 + 1e-12;
-  std::ostringstream s;
-  s << FormatFixed(paper, decimals) << " / " << FormatFixed(*ours, decimals) << " (" << (relative >= 0 ? "+" : "")
-    << FormatFixed(100.0 * relative, 0) << "%)" << (*within ? "" : " !");
-  return s.str();
-}
-
 std::string Interval(const std::optional<double>& lo, const std::optional<double>& hi, int decimals) {
   return lo ? " [" + FormatFixed(*lo, decimals) + ", " + FormatFixed(*hi, decimals) + "]" : std::string();
 }
@@ -51,50 +38,30 @@ void WriteOurTable(std::ostream& out, const std::vector<MethodSummary>& summarie
   for (const std::string& trigger : rows.front().estimator.triggers) compared += (compared.empty() ? "" : " vs ") + trigger;
   out << "# " << config.name << ": " << compared << "\n\n"
       << config.realizations << " realizations per row, seed " << config.seed
-      << ". Errors over initialized attempts; Avg [95% bootstrap interval over realizations], Ratio [95% Wilson "
-         "interval].\n\n"
+      << ". Errors over initialized attempts; Avg and Med [95% bootstrap interval over realizations], Ratio [95% "
+         "Wilson interval].\n\n"
       << "| # | Method | Avg. (m) | Med. (m) | Init. | >1m | Ratio (%) | t_init mean / median (s) |\n"
       << "|---|---|---|---|---|---|---|---|\n";
   for (const MethodSummary& s : summaries) {
     out << "| " << rows[static_cast<std::size_t>(s.row)].name << " | " << s.method << " | "
         << (s.avg_m ? FormatFixed(*s.avg_m, 3) + Interval(s.avg_lo, s.avg_hi, 3) : "-") << " | "
-        << (s.med_m ? FormatFixed(*s.med_m, 3) : "-") << " | " << s.init << " / " << s.attempts << " | " << s.gt1m << " | "
+        << (s.med_m ? FormatFixed(*s.med_m, 3) + Interval(s.med_lo, s.med_hi, 3) : "-") << " | " << s.init << " / " << s.attempts << " | " << s.gt1m << " | "
         << (s.ratio_pct ? FormatFixed(*s.ratio_pct, 2) + Interval(s.ratio_lo, s.ratio_hi, 2) : "-") << " | "
         << (s.t_init_mean_s ? FormatFixed(*s.t_init_mean_s, 1) + " / " + FormatFixed(*s.t_init_med_s, 1) : "-") << " |\n";
   }
 }
 
-// What the comparison with the paper counts.
-struct PaperScore {
-  int cells = 0;            // target cells that can miss
-  int within = 0;           // of those, within +-25%
-  int with_interval = 0;    // Avg and Ratio cells (ours have a 95% interval)
-  int inside_interval = 0;  // of those, the paper's value inside our interval
-};
-
-bool Inside(double paper, const std::optional<double>& lo, const std::optional<double>& hi) {
-  return lo && hi && paper >= *lo - 1e-12 && paper <= *hi + 1e-12;
-}
-
-// One table line per method of the paper (paper / ours), scored. The targets are Avg, Med, Init
-// and Ratio (>1m is a count that follows from Init and Ratio), except the fixed window's Init: it
-// initializes every anchor with data, so that cell matches by construction and is not counted.
-void WritePaperComparison(std::ostream& out, const MethodSummary& s, const runner::PaperCells& paper,
-                          const std::string& row_name, PaperScore* score) {
-  bool within[5];
-  out << "| " << row_name << " | " << s.method << " | " << Compare(paper.avg_m, s.avg_m, 3, &within[0]) << " | "
-      << Compare(paper.med_m, s.med_m, 3, &within[1]) << " | "
-      << Compare(paper.init, static_cast<double>(s.init), 0, &within[2]) << " | "
-      << Compare(paper.gt1m, static_cast<double>(s.gt1m), 0, &within[3]) << " | "
-      << Compare(paper.ratio_pct, s.ratio_pct, 2, &within[4]) << " |\n";
-  const bool fixed_window = s.method == runner::kFixedWindowTrigger;
-  for (int c : {0, 1, 2, 4}) {
-    if (c == 2 && fixed_window) continue;
-    ++score->cells;
-    score->within += within[c];
-  }
-  score->with_interval += 2;
-  score->inside_interval += Inside(paper.avg_m, s.avg_lo, s.avg_hi) + Inside(paper.ratio_pct, s.ratio_lo, s.ratio_hi);
+// "paper / ours (+x%)" of one cell, with the verdict against the +-25% target.
+std::string Compare(const PaperCell& cell) {
+  const int decimals = cell.column == PaperColumn::kInit || cell.column == PaperColumn::kGt1m ? 0
+                       : cell.column == PaperColumn::kRatio                                  ? 2
+                                                                                             : 3;
+  if (!cell.ours) return FormatFixed(cell.paper, decimals) + " / - ";
+  const double relative = cell.paper != 0.0 ? (*cell.ours - cell.paper) / cell.paper : 0.0;
+  std::ostringstream s;
+  s << FormatFixed(cell.paper, decimals) << " / " << FormatFixed(*cell.ours, decimals) << " ("
+    << (relative >= 0 ? "+" : "") << FormatFixed(100.0 * relative, 0) << "%)" << (WithinQuarter(cell) ? "" : " !");
+  return s.str();
 }
 
 std::string Conclusions(const RowConfig& row, const MethodSummary& fixed, const MethodSummary& gated) {
@@ -104,32 +71,36 @@ std::string Conclusions(const RowConfig& row, const MethodSummary& fixed, const 
          "; gated Ratio < fixed Ratio: " + (ratio_holds ? "yes" : "NO") + "\n";
 }
 
+const MethodSummary* Find(const std::vector<MethodSummary>& summaries, int row, const std::string& method) {
+  for (const MethodSummary& s : summaries) {
+    if (s.row == row && s.method == method) return &s;
+  }
+  return nullptr;
+}
+
+// One table line per method of the paper (paper / ours), scored by ScoreCells.
 void WriteAgainstThePaper(std::ostream& out, const std::vector<MethodSummary>& summaries,
                           const std::vector<RowConfig>& rows) {
   out << "\n## Against the paper (paper / ours, relative difference; ! = outside +-25%)\n\n"
       << "| # | Method | Avg. (m) | Med. (m) | Init. | >1m | Ratio (%) |\n|---|---|---|---|---|---|---|\n";
-  PaperScore score;
+  const std::vector<PaperCell> cells = CompareWithPaper(summaries, rows);
   std::string conclusions;
-  for (std::size_t r = 0; r < rows.size(); ++r) {
-    if (!rows[r].paper) continue;
-    // The paper's two methods, if this row ran both.
-    const MethodSummary* fixed = nullptr;
-    const MethodSummary* gated = nullptr;
-    for (const MethodSummary& s : summaries) {
-      if (s.row != static_cast<int>(r)) continue;
-      if (s.method == runner::kFixedWindowTrigger) fixed = &s;
-      if (s.method == runner::kPaperTrigger) gated = &s;
+  for (std::size_t first = 0; first < cells.size(); first += std::size(kPaperColumns)) {
+    const PaperCell& head = cells[first];
+    out << "| " << rows[static_cast<std::size_t>(head.row)].name << " | " << head.method << " |";
+    for (std::size_t c = 0; c < std::size(kPaperColumns); ++c) out << " " << Compare(cells[first + c]) << " |";
+    out << "\n";
+    if (head.method == runner::kPaperTrigger) {
+      conclusions += Conclusions(rows[static_cast<std::size_t>(head.row)],
+                                 *Find(summaries, head.row, runner::kFixedWindowTrigger),
+                                 *Find(summaries, head.row, runner::kPaperTrigger));
     }
-    if (!fixed || !gated) continue;
-    for (const MethodSummary* s : {fixed, gated}) {
-      WritePaperComparison(out, *s, *rows[r].paper->For(s->method), rows[r].name, &score);
-    }
-    conclusions += Conclusions(rows[r], *fixed, *gated);
   }
+  const PaperScore score = ScoreCells(cells);
   out << "\n" << score.within << " of " << score.cells
       << " target cells (Avg, Med, Init, Ratio; not the fixed window's Init, which matches by construction) within "
          "+-25%. The paper's value lies inside our 95% interval in "
-      << score.inside_interval << " of " << score.with_interval << " Avg and Ratio cells.\n\n"
+      << score.inside_interval << " of " << score.with_interval << " Avg, Med and Ratio cells.\n\n"
       << "The paper's conclusions, row by row:\n" << conclusions;
 }
 
@@ -162,7 +133,7 @@ std::string SummaryCsvFields(const MethodSummary& s, const std::vector<RowConfig
       << FormatOptional(s.ratio_hi);
   const eval::Credibility& c = s.position_credibility;
   out << ',' << FormatOptional(c.anees) << ',' << FormatOptional(c.bound_lo) << ',' << FormatOptional(c.bound_hi) << ','
-      << FormatOptional(c.above_95_pct);
+      << FormatOptional(c.above_95_pct) << ',' << FormatOptional(s.med_lo) << ',' << FormatOptional(s.med_hi);
   return out.str();
 }
 

@@ -13,12 +13,23 @@ static_assert(kBootstrapStream >= sim::kFirstFreeStreamId && kBootstrapStream !=
 using runner::Attempt;
 namespace {
 
-// Sums of one realization for one (row, method): enough to rebuild Avg and Ratio of any resample.
+// One realization of one (row, method): its sums rebuild Avg of any resample, its errors the median.
 struct RealizationSums {
   double error_sum_m = 0.0;
   int init = 0;
   int gt1m = 0;
+  std::vector<double> errors_m;
 };
+
+// Percentile(values, 0.5) without a copy: reorders `values`.
+double MedianInPlace(std::vector<double>& values) {
+  const std::size_t i = (values.size() - 1) / 2;
+  std::nth_element(values.begin(), values.begin() + static_cast<std::ptrdiff_t>(i), values.end());
+  const double lower = values[i];
+  if (values.size() % 2 == 1) return lower;
+  const double upper = *std::min_element(values.begin() + static_cast<std::ptrdiff_t>(i) + 1, values.end());
+  return lower + 0.5 * (upper - lower);
+}
 
 MethodSummary SummarizeOne(const std::vector<const Attempt*>& attempts, const std::vector<RealizationSums>& sums,
                            int bootstrap_resamples, sim::RandomStream rng) {
@@ -45,21 +56,27 @@ MethodSummary SummarizeOne(const std::vector<const Attempt*>& attempts, const st
   s.med_m = Percentile(errors, 0.5);
   s.ratio_pct = 100.0 * s.gt1m / s.init;
 
-  std::vector<double> avg_samples;
+  std::vector<double> avg_samples, med_samples, pooled_errors_m;
+  pooled_errors_m.reserve(2 * errors.size());
   const int realizations = static_cast<int>(sums.size());
   for (int b = 0; b < bootstrap_resamples; ++b) {
     RealizationSums resample;
+    pooled_errors_m.clear();
     for (int k = 0; k < realizations; ++k) {
       const RealizationSums& pick = sums[static_cast<std::size_t>(rng.Uniform() * realizations)];
       resample.error_sum_m += pick.error_sum_m;
       resample.init += pick.init;
       resample.gt1m += pick.gt1m;
+      pooled_errors_m.insert(pooled_errors_m.end(), pick.errors_m.begin(), pick.errors_m.end());
     }
     if (resample.init == 0) continue;
     avg_samples.push_back(resample.error_sum_m / resample.init);
+    med_samples.push_back(MedianInPlace(pooled_errors_m));
   }
   s.avg_lo = Percentile(avg_samples, 0.025);
   s.avg_hi = Percentile(avg_samples, 0.975);
+  s.med_lo = Percentile(med_samples, 0.025);
+  s.med_hi = Percentile(med_samples, 0.975);
   const Interval ratio = *WilsonInterval(s.gt1m, s.init);
   s.ratio_lo = 100.0 * ratio.lo;
   s.ratio_hi = 100.0 * ratio.hi;
@@ -114,6 +131,7 @@ std::vector<MethodSummary> Summarize(const std::vector<Attempt>& attempts, const
         r.error_sum_m += *a.evaluation->error_m;
         ++r.init;
         r.gt1m += *a.evaluation->error_m > 1.0;
+        r.errors_m.push_back(*a.evaluation->error_m);
       }
       // One bootstrap stream per (row, method), named by them rather than numbered in table order:
       // adding a trigger to a config leaves the other methods' intervals as they were.

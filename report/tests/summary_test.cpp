@@ -43,6 +43,9 @@ TEST(Summary, TableColumnsWorkedByHand) {
   // Resampling the two realizations: Avg is 0.15 (realization 0 twice), 0.65 or 1.15.
   EXPECT_NEAR(*fixed.avg_lo, 0.15, 1e-12);
   EXPECT_NEAR(*fixed.avg_hi, 1.15, 1e-12);
+  // Med from the same resamples: 0.15 (realization 0 twice), 0.25 or 1.15 (realization 1 twice).
+  EXPECT_NEAR(*fixed.med_lo, 0.15, 1e-12);
+  EXPECT_NEAR(*fixed.med_hi, 1.15, 1e-12);
   // No gated attempts at all: the cells stay empty, never NaN.
   EXPECT_EQ(summaries[1].init, 0);
   EXPECT_FALSE(summaries[1].avg_m.has_value());

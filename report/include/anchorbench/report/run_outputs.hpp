@@ -16,11 +16,11 @@ namespace anchorbench::report {
 void WriteAttempts(std::ostream& out, const std::vector<runner::Attempt>& attempts,
                    const std::vector<runner::RowConfig>& rows);
 
-// summary.csv: row,method,avg_m,med_m,init,gt1m,ratio_pct,avg_lo,avg_hi,ratio_lo,ratio_hi, then
-// the initialization times and, where rows carry the paper's values, those.
+// summary.csv: row,method,avg_m,med_m,init,gt1m,ratio_pct,avg_lo,avg_hi,ratio_lo,ratio_hi, the
+// position credibility, med_lo,med_hi, then the initialization times and, where rows carry the paper's values, those.
 constexpr const char* kSummaryColumns =
     "row,method,avg_m,med_m,init,gt1m,ratio_pct,avg_lo,avg_hi,ratio_lo,ratio_hi,anees_pos,anees_lo,anees_hi,"
-    "nees_gt95_pct";
+    "nees_gt95_pct,med_lo,med_hi";
 std::string SummaryCsvFields(const MethodSummary& summary, const std::vector<runner::RowConfig>& rows);
 void WriteSummaryCsv(std::ostream& out, const std::vector<MethodSummary>& summaries,
                      const std::vector<runner::RowConfig>& rows);

@@ -22,12 +22,13 @@ struct MethodSummary {
   int gt1m = 0;                      // initialized with error > 1 m
   std::optional<double> ratio_pct;   // 100 gt1m / init
   std::optional<double> t_init_mean_s, t_init_med_s;  // when the initialized attempts initialized
-  // Avg: the 95% percentile interval of a bootstrap over realizations (whole realizations are
-  // resampled: the anchors of one realization share a trajectory, so they are not independent),
-  // drawn from the stream (seed, row, kBootstrapStream, a hash of the method's name).
+  // Avg and Med: the 95% percentile intervals of a bootstrap over realizations (whole realizations
+  // are resampled: the anchors of one realization share a trajectory, so they are not
+  // independent), drawn from the stream (seed, row, kBootstrapStream, a hash of the method's name);
+  // both from the same resamples.
   // Ratio: the 95% Wilson score interval of gt1m out of init, which stays meaningful at 0 or init
   // failures (a bootstrap there collapses to [0, 0]). It treats the initializations as independent.
-  std::optional<double> avg_lo, avg_hi, ratio_lo, ratio_hi;
+  std::optional<double> avg_lo, avg_hi, ratio_lo, ratio_hi, med_lo, med_hi;
   // The credibility of the initialized attempts' position covariances (3-dof NEES; docs/method.md).
   eval::Credibility position_credibility;
   double compute_s = 0.0;  // summed Attempt::compute_s (timing files only)
