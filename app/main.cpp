@@ -40,13 +40,16 @@ CLI::Validator WholeNumber(long long min, long long max) {
       "INT");
 }
 
-// The options every Monte Carlo command shares (run, sweep, pdop-study).
-void AddMonteCarloOptions(CLI::App* cmd, app::MonteCarloArgs& args) {
+// The options every Monte Carlo command shares (run, sweep, pdop-study; calibrate without
+// --realizations).
+void AddMonteCarloOptions(CLI::App* cmd, app::MonteCarloArgs& args, bool realizations = true) {
   cmd->add_option("--out", args.out, "Output folder (default results/<config name>/), replaced as a whole");
   cmd->add_option("--threads", args.threads, "OpenMP threads (default: OMP_NUM_THREADS, else all cores)")
       ->check(WholeNumber(0, 1 << 20));
-  cmd->add_option("--realizations", args.realizations, "Override the realizations per row")
-      ->check(WholeNumber(1, 100000000));
+  if (realizations) {
+    cmd->add_option("--realizations", args.realizations, "Override the realizations per row")
+        ->check(WholeNumber(1, 100000000));
+  }
   cmd->add_flag("--quiet", args.quiet, "No progress output");
   cmd->add_flag("--overwrite", args.overwrite, "Replace an output folder that holds earlier results");
 }
@@ -61,12 +64,14 @@ struct CommandLine {
   app::SweepArgs sweep;
   app::PdopStudyArgs study;
   app::ConvertHanyangArgs convert;
+  app::CalibrateArgs calibrate;
   CLI::App* simulate_cmd = nullptr;
   CLI::App* replay_cmd = nullptr;
   CLI::App* run_cmd = nullptr;
   CLI::App* sweep_cmd = nullptr;
   CLI::App* study_cmd = nullptr;
   CLI::App* convert_cmd = nullptr;
+  CLI::App* calibrate_cmd = nullptr;
   CLI::App* list_cmd = nullptr;
 };
 
@@ -135,6 +140,15 @@ void AddMonteCarloCommands(CLI::App& cli, CommandLine& c) {
   c.study_cmd->add_option("--every", c.study.every, "Checkpoint every N accepted samples (default 10)")
       ->check(WholeNumber(1, 1000000));
   c.study_cmd->add_option("--bin-s", c.study.bin_s, "Summary time bins in seconds, 0.01 to 120 (default 10)");
+
+  c.calibrate_cmd = cli.add_subcommand(
+      "calibrate", "Fit scenario parameters so an experiment's table matches the published one (docs/calibration.md)");
+  c.calibrate_cmd->add_option("config", c.calibrate.config, "Calibration file (YAML): experiment, parameters, fit")
+      ->required();
+  AddMonteCarloOptions(c.calibrate_cmd, c.calibrate, false);
+  c.calibrate_cmd->add_option("--reuse", c.calibrate.reuse,
+                              "A finished calibration's evaluations.csv: its evaluations of the same experiment, seed "
+                              "and size are taken instead of recomputed");
 }
 
 int Dispatch(const CommandLine& c, const app::AppContext& context) {
@@ -143,6 +157,7 @@ int Dispatch(const CommandLine& c, const app::AppContext& context) {
   if (c.run_cmd->parsed()) return app::RunCommand(c.run, context);
   if (c.sweep_cmd->parsed()) return app::SweepCommand(c.sweep, context);
   if (c.study_cmd->parsed()) return app::PdopStudyCommand(c.study, context);
+  if (c.calibrate_cmd->parsed()) return app::CalibrateCommand(c.calibrate, context);
   if (c.convert_cmd->parsed()) return app::ConvertHanyangCommand(c.convert);
   if (c.list_cmd->parsed()) return app::ListCommand(context);
   return 1;

@@ -66,6 +66,13 @@ struct PdopStudyArgs : MonteCarloArgs {
 };
 int PdopStudyCommand(const PdopStudyArgs& args, const AppContext& app);
 
+// `config` is a calibration file (configs/calibrate_*.yaml); --realizations is not offered (the
+// file sets the fit's size, the experiment the verification's).
+struct CalibrateArgs : MonteCarloArgs {
+  std::string reuse;  // a finished calibration's evaluations.csv to take evaluations from
+};
+int CalibrateCommand(const CalibrateArgs& args, const AppContext& app);
+
 struct ConvertHanyangArgs {
   std::string case_folder;
   std::string out;

@@ -1,7 +1,11 @@
 #include "anchorbench/config/load_config.hpp"
 
+#include <algorithm>
+#include <filesystem>
+
 #include <gtest/gtest.h>
 
+#include "anchorbench/config/load_calibration.hpp"
 #include "anchorbench/eval/oracles.hpp"
 #include "anchorbench/testing/parts.hpp"
 #include "anchorbench/io/input_error.hpp"
@@ -228,6 +232,49 @@ TEST(ConfigFiles, BaseInheritanceOnlyRowsAndOverridesThatReachRows) {
   EXPECT_THROW(LoadConfig(unknown_row), InputError);
   const std::string cycle = dir.Write("cycle.yaml", "base: cycle.yaml\n");
   EXPECT_THROW(LoadConfig(cycle), InputError);
+}
+
+// The shipped Table I calibration: scenario keys only, each with bounds around the configured
+// value, verified on at least five seeds the fit does not use.
+TEST(Calibration, ShippedCalibrationLoadsAndBracketsTheConfiguredScenario) {
+  const runner::CalibrationSpec spec = LoadCalibrationSpec(std::string(ANCHORBENCH_CONFIG_DIR) + "/calibrate_table1.yaml");
+  EXPECT_EQ(std::filesystem::path(spec.experiment_path).filename(), "table1.yaml");
+  const std::string resolved = ToYaml(LoadConfig(spec.experiment_path));
+  for (const runner::FreeParameter& p : spec.parameters) {
+    EXPECT_EQ(p.key.rfind("scenario.", 0), 0u) << p.key;
+    const double configured = NumberAt(resolved, p.key, "test");
+    EXPECT_LE(p.min, configured) << p.key;
+    EXPECT_GE(p.max, configured) << p.key;
+  }
+  EXPECT_GE(spec.verify_seeds.size(), 5u);
+  EXPECT_EQ(std::count(spec.verify_seeds.begin(), spec.verify_seeds.end(), spec.seed), 0);
+  EXPECT_GT(spec.fit_weight.avg_m, 0.0);
+  EXPECT_EQ(spec.fit_weight.ratio_pct, 0.0);  // held out: predicted, not fitted
+}
+
+TEST(Calibration, ErrorsNameTheKey) {
+  testing::TempDir dir("calibration");
+  auto error_for = [&](const std::string& yaml) -> std::string {
+    try {
+      LoadCalibrationSpec(dir.Write("c.yaml", yaml));
+    } catch (const InputError& e) {
+      return e.what();
+    }
+    return "";
+  };
+  const std::string parameter = "parameters: [{key: scenario.tunnel.width_m, min: 6, max: 24, provenance: x}]\n";
+  EXPECT_EQ(error_for("experiment: e.yaml\n" + parameter), "");
+  EXPECT_NE(error_for(parameter).find("'experiment' is missing"), std::string::npos);
+  EXPECT_NE(error_for("experiment: e.yaml\nparameters: [{key: scenario.a, min: 2, max: 1, provenance: x}]\n")
+                .find("key 'parameters[0].max': must be greater than min"),
+            std::string::npos);
+  EXPECT_NE(error_for("experiment: e.yaml\nfit: {avg_m: 0, med_m: 0, init: 0}\n" + parameter).find("nothing to fit"),
+            std::string::npos);
+  EXPECT_NE(error_for("experiment: e.yaml\nlocal: {algorithm: LD_LBFGS}\n" + parameter).find("no gradient"),
+            std::string::npos);
+  EXPECT_NE(error_for("experiment: e.yaml\nverify_seeds: [2, x]\n" + parameter).find("'x' is not a seed"),
+            std::string::npos);
+  EXPECT_NE(error_for("experiment: e.yaml\nbogus: 1\n" + parameter).find("bogus"), std::string::npos);
 }
 
 }  // namespace

@@ -110,19 +110,15 @@ bool NloptSolver::IsStochastic(int algorithm) {
   }
 }
 
-namespace {
-
-// The algorithm's number, or -1. (NLopt's own nlopt_algorithm_from_string returns -1 as an
-// nlopt_algorithm, a value outside the enumeration: undefined behaviour to even load.)
-int AlgorithmNumber(const std::string& name) {
+// NLopt's own nlopt_algorithm_from_string returns -1 as an nlopt_algorithm, a value outside the
+// enumeration: undefined behaviour to even load.
+int NloptSolver::AlgorithmNumber(const std::string& name) {
   for (int a = 0; a < NLOPT_NUM_ALGORITHMS; ++a) {
     const char* known = nlopt_algorithm_to_string(static_cast<nlopt_algorithm>(a));
     if (known && name == known) return a;
   }
   return -1;
 }
-
-}  // namespace
 
 bool NloptSolver::Accepts(const std::string& algorithm, std::string* why) {
   const int a = AlgorithmNumber(algorithm);

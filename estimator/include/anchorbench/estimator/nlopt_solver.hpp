@@ -29,6 +29,8 @@ class NloptSolver : public Solver {
   static bool Accepts(const std::string& algorithm, std::string* why);
   // Whether NLopt's algorithm (an nlopt_algorithm value) draws random numbers.
   static bool IsStochastic(int algorithm);
+  // The nlopt_algorithm value of a name such as "LN_SBPLX", or -1.
+  static int AlgorithmNumber(const std::string& algorithm);
 
   SolveResult Solve(std::span<const Eigen::Vector3d> p_world_tag, std::span<const double> range_m) const override;
 
