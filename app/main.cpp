@@ -65,6 +65,7 @@ struct CommandLine {
   app::PdopStudyArgs study;
   app::ConvertHanyangArgs convert;
   app::CalibrateArgs calibrate;
+  app::MergeArgs merge;
   CLI::App* simulate_cmd = nullptr;
   CLI::App* replay_cmd = nullptr;
   CLI::App* run_cmd = nullptr;
@@ -72,6 +73,7 @@ struct CommandLine {
   CLI::App* study_cmd = nullptr;
   CLI::App* convert_cmd = nullptr;
   CLI::App* calibrate_cmd = nullptr;
+  CLI::App* merge_cmd = nullptr;
   CLI::App* list_cmd = nullptr;
 };
 
@@ -126,6 +128,16 @@ void AddMonteCarloCommands(CLI::App& cli, CommandLine& c) {
   AddMonteCarloOptions(c.run_cmd, c.run);
   c.run_cmd->add_option("--seed", c.run.seed, "Override the config's seed")->check(WholeNumber(0, kMaxSeed));
   c.run_cmd->add_option("--set", c.run.overrides, "Override a config value: KEY=VALUE, KEY a dotted path (repeatable)");
+  c.run_cmd->add_option("--shard", c.run.shard,
+                        "I/N: run only shard I of N of the (row, realization) units into a shard folder; "
+                        "`anchorbench merge` joins the N folders (docs/cluster.md)");
+
+  c.merge_cmd = cli.add_subcommand("merge", "Join the shard folders of one run into the single run's results");
+  c.merge_cmd->add_option("out", c.merge.out, "Output folder")->required();
+  c.merge_cmd->add_option("shards", c.merge.shards, "Every shard folder of the run (run --shard I/N), any order")
+      ->required();
+  c.merge_cmd->add_flag("--overwrite", c.merge.overwrite, "Replace an output folder that holds earlier results");
+  c.merge_cmd->add_flag("--quiet", c.merge.quiet, "Do not print the table");
 
   c.sweep_cmd = cli.add_subcommand("sweep", "Run a config over a grid of values and tabulate each point");
   c.sweep_cmd->add_option("config", c.sweep.config, "Experiment config (YAML); its 'sweep' section gives axes")->required();
@@ -158,6 +170,7 @@ int Dispatch(const CommandLine& c, const app::AppContext& context) {
   if (c.sweep_cmd->parsed()) return app::SweepCommand(c.sweep, context);
   if (c.study_cmd->parsed()) return app::PdopStudyCommand(c.study, context);
   if (c.calibrate_cmd->parsed()) return app::CalibrateCommand(c.calibrate, context);
+  if (c.merge_cmd->parsed()) return app::MergeCommand(c.merge, context);
   if (c.convert_cmd->parsed()) return app::ConvertHanyangCommand(c.convert);
   if (c.list_cmd->parsed()) return app::ListCommand(context);
   return 1;

@@ -507,6 +507,14 @@ def calibration_headline():
             f"(`results/calibrate_table1/`).")
 
 
+def shard_overhead():
+    """Table I as shards + merge against the plain run (results/benchmarks/shards.csv)."""
+    rows = [[r["shards"], r["plain_s"], r["shards_s"], r["merge_s"], f"{float(r['overhead_pct']):+.1f}%",
+             "yes" if r["same_bytes"] == "1" else "NO"] for r in read("benchmarks/shards.csv")]
+    return table(["shards", "plain run (s)", "shards, one after another (s)", "merge (s)", "overhead",
+                  "merged = plain, byte for byte"], rows)
+
+
 def calibration_section(title):
     """The table under '## TITLE' in results/calibrate_table1/calibration.md, as the command wrote it."""
     text = (RESULTS / "calibrate_table1" / "calibration.md").read_text()
@@ -542,6 +550,7 @@ GENERATORS = {f.__name__: f for f in (stress_triggers, stress_solvers, stress_co
                                       table1_scores, table1_holds, table1_sensitivity, amr_height_table,
                                       pdop_triggers_table, calibration_verification, calibration_parameters,
                                       calibration_objective, calibration_profiles, calibration_cells, calibration_headline,
+                                      shard_overhead,
                                       calibration_reachability)}
 MARKER = re.compile(r"(<!-- generated: (\w+) \(scripts/docs_tables.py\) -->\n)(.*?)(<!-- end generated -->)", re.S)
 

@@ -9,6 +9,7 @@
 #include "anchorbench/config/load_config.hpp"
 #include "anchorbench/io/atomic_file.hpp"
 #include "anchorbench/io/format.hpp"
+#include "anchorbench/io/hash.hpp"
 #include "anchorbench/io/input_error.hpp"
 #include "anchorbench/report/paper_cells.hpp"
 #include "anchorbench/report/summary.hpp"
@@ -68,14 +69,67 @@ std::vector<double> CheckParameters(const runner::CalibrationSpec& spec, const r
 // What decides an evaluation's cells besides the parameters: lines of a log made with anything
 // else are not reused.
 std::uint64_t Context(const runner::CalibrationSpec& spec, const runner::ExperimentConfig& experiment) {
-  return calibrate::Fnv1a64(config::ToYaml(experiment) + "\nfit seed " + std::to_string(spec.seed) +
+  return io::Fnv1a64(config::ToYaml(experiment) + "\nfit seed " + std::to_string(spec.seed) +
                             "\nfit realizations " + std::to_string(spec.realizations));
+}
+
+// The evaluation log, seeded with what --reuse and a killed run's running log already hold.
+calibrate::EvaluationLog OpenLog(const CalibrateArgs& args, const runner::CalibrationSpec& spec,
+                                 const runner::ExperimentConfig& experiment, const std::vector<PaperCell>& targets,
+                                 const std::vector<std::string>& row_names, const fs::path& running_log) {
+  std::vector<std::string> keys, cell_names;
+  for (const runner::FreeParameter& parameter : spec.parameters) keys.push_back(parameter.key);
+  for (const PaperCell& cell : targets) cell_names.push_back(calibrate::CellName(cell, row_names));
+  calibrate::EvaluationLog log(keys, cell_names, Context(spec, experiment));
+  for (const fs::path& source : {fs::path(args.reuse), running_log}) {
+    if (source.empty() || !fs::exists(source)) continue;
+    int reused = 0;
+    try {
+      reused = log.Reuse(source);
+    } catch (const InputError& e) {
+      if (source != running_log) throw;
+      throw InputError(std::string(e.what()) + "; it is the log of a killed calibration of other parameters: " +
+                       "remove it to start afresh");
+    }
+    if (!args.quiet) std::cerr << "calibrate: " << reused << " evaluations known from " << source.string() << "\n";
+  }
+  log.AppendTo(running_log);
+  return log;
+}
+
+// Our cells at the fit's seed and size, with Init and >1m (counts over all attempts) scaled up to
+// the experiment's size before they meet the paper's.
+calibrate::CellEvaluator FitEvaluator(const runner::CalibrationSpec& spec, int full_realizations, int threads,
+                                      const AppContext& app) {
+  const double count_scale = static_cast<double>(full_realizations) / spec.realizations;
+  return [&spec, count_scale, threads, &app](const std::vector<std::string>& overrides) {
+    std::vector<std::optional<double>> ours;
+    for (const PaperCell& cell : RunCells(spec, overrides, spec.seed, spec.realizations, false, threads, app)) {
+      ours.push_back(cell.ours);
+      if (ours.back() && (cell.column == report::PaperColumn::kInit || cell.column == report::PaperColumn::kGt1m)) {
+        *ours.back() *= count_scale;
+      }
+    }
+    return ours;
+  };
+}
+
+// The experiment as configured and as calibrated (`best`), full size, on the unseen seeds.
+std::vector<calibrate::Verification> Verify(const runner::CalibrationSpec& spec, const std::vector<std::string>& best,
+                                            int threads, Progress& progress, const AppContext& app) {
+  std::vector<calibrate::Verification> verification;
+  for (std::uint64_t seed : spec.verify_seeds) {
+    verification.push_back({seed, RunCells(spec, {}, seed, std::nullopt, true, threads, app),
+                            RunCells(spec, best, seed, std::nullopt, true, threads, app)});
+    progress.Update(static_cast<int>(verification.size()), static_cast<int>(spec.verify_seeds.size()));
+  }
+  return verification;
 }
 
 }  // namespace
 
 int CalibrateCommand(const CalibrateArgs& args, const AppContext& app) {
-  // Every input checked before the first evaluation.
+  // Every input checked, and every output place claimed, before the first evaluation.
   const runner::CalibrationSpec spec = config::LoadCalibrationSpec(args.config);
   const runner::ExperimentConfig experiment = config::LoadConfig(spec.experiment_path, {}, app.parts);
   const std::vector<runner::RowConfig> rows = runner::RowsOf(experiment);
@@ -86,63 +140,34 @@ int CalibrateCommand(const CalibrateArgs& args, const AppContext& app) {
   }
   const std::vector<double> hand = CheckParameters(spec, experiment, app);
   if (!args.reuse.empty() && !fs::is_regular_file(args.reuse)) throw InputError(args.reuse + ": no such file (--reuse)");
-
   const std::string name = fs::path(args.config).stem().string();
   const MonteCarloSetup setup = SetUpMonteCarlo(args, name);
   const std::unique_ptr<io::ResultFolder> out = OpenResultFolder(args, setup, 1 << 22);
   const fs::path experiment_path(spec.experiment_path);
   io::AtomicFile calibrated(experiment_path.parent_path() / (experiment_path.stem().string() + ".calibrated.yaml"),
                             args.overwrite, {args.config, spec.experiment_path});
-
-  std::vector<std::string> row_names, keys, cell_names;
+  std::vector<std::string> row_names;
   for (const runner::RowConfig& row : rows) row_names.push_back(row.name);
-  for (const runner::FreeParameter& parameter : spec.parameters) keys.push_back(parameter.key);
-  for (const PaperCell& cell : targets) cell_names.push_back(calibrate::CellName(cell, row_names));
-  calibrate::EvaluationLog log(keys, cell_names, Context(spec, experiment));
-  // The running log beside the folder: a killed calibration resumes from it.
-  const fs::path running_log = setup.out.string() + ".evaluations.csv";
-  for (const fs::path& source : {fs::path(args.reuse), running_log}) {
-    if (source.empty() || !fs::exists(source)) continue;
-    const int reused = log.Reuse(source);
-    if (!args.quiet) std::cerr << "calibrate: " << reused << " evaluations known from " << source.string() << "\n";
-  }
-  log.AppendTo(running_log);
+  const fs::path running_log = setup.out.string() + ".evaluations.csv";  // beside the folder: resumable
+  calibrate::EvaluationLog log = OpenLog(args, spec, experiment, targets, row_names, running_log);
 
-  // Init and >1m are counts over all attempts: the fit's, at fewer realizations, are scaled up to
-  // the experiment's size before they are compared with the paper's.
-  const double count_scale = static_cast<double>(experiment.realizations) / spec.realizations;
-  Progress progress("calibrate " + name, args.quiet);
-  Fit fit(
-      spec, targets, hand,
-      [&](const std::vector<std::string>& overrides) {
-        std::vector<std::optional<double>> ours;
-        for (const PaperCell& cell : RunCells(spec, overrides, spec.seed, spec.realizations, false, setup.threads, app)) {
-          ours.push_back(cell.ours);
-          if (ours.back() && (cell.column == report::PaperColumn::kInit || cell.column == report::PaperColumn::kGt1m)) {
-            *ours.back() *= count_scale;  // counts at the table's size
-          }
-        }
-        return ours;
-      },
-      &log, [&](int done, int total) { progress.Update(done, total); });
+  // The search, then the verification of its best point.
+  Progress progress("calibrate " + name, args.quiet, "evaluations");
+  Fit fit(spec, targets, hand, FitEvaluator(spec, experiment.realizations, setup.threads, app), &log,
+          [&](int done, int total) { progress.Update(done, total); });
   const calibrate::FitResult result = fit.Run();
   progress.Finish(static_cast<int>(log.evaluations().size()));
-
-  // Verification: the experiment as configured and as calibrated, full size, unseen seeds.
   std::vector<std::string> best;
   for (std::size_t p = 0; p < spec.parameters.size(); ++p) {
     best.push_back(spec.parameters[p].key + "=" + log.evaluations()[result.best].values[p]);
   }
-  calibrate::CalibrationOutcome outcome{spec, row_names, experiment.realizations, fit, result, log, {}};
-  Progress verifying("verify " + name, args.quiet);
-  for (std::uint64_t seed : spec.verify_seeds) {
-    outcome.verification.push_back({seed, RunCells(spec, {}, seed, std::nullopt, true, setup.threads, app),
-                                    RunCells(spec, best, seed, std::nullopt, true, setup.threads, app)});
-    verifying.Update(static_cast<int>(outcome.verification.size()), static_cast<int>(spec.verify_seeds.size()));
-  }
-  const double wall_time_s = progress.elapsed_s() + verifying.elapsed_s();
+  Progress verifying("verify " + name, args.quiet, "seeds");
+  const calibrate::CalibrationOutcome outcome{spec,   row_names, experiment.realizations, fit,
+                                              result, log,       Verify(spec, best, setup.threads, verifying, app)};
+  const double wall_time_s = progress.elapsed_s();  // the search and the verification
   verifying.Finish(static_cast<int>(spec.verify_seeds.size()));
 
+  // The folder, then the calibrated config; the running log goes once both are in place.
   out->Write("evaluations.csv", [&](std::ostream& file) { calibrate::WriteEvaluationsCsv(file, log); });
   out->Write("verification.csv", [&](std::ostream& file) { calibrate::WriteVerificationCsv(file, outcome); });
   out->Write("profile.csv", [&](std::ostream& file) { calibrate::WriteProfileCsv(file, outcome); });

@@ -52,6 +52,7 @@ struct MonteCarloArgs {
 struct RunArgs : MonteCarloArgs {
   std::optional<std::uint64_t> seed;
   std::vector<std::string> overrides;  // --set KEY=VALUE
+  std::string shard;                   // "I/N": this share of the units, into a shard folder
 };
 int RunCommand(const RunArgs& args, const AppContext& app);
 
@@ -65,6 +66,15 @@ struct PdopStudyArgs : MonteCarloArgs {
   double bin_s = 10.0;  // time bins of the summary
 };
 int PdopStudyCommand(const PdopStudyArgs& args, const AppContext& app);
+
+// Joins the shard folders of one run (run --shard I/N, every I) into the single run's folder.
+struct MergeArgs {
+  std::string out;
+  std::vector<std::string> shards;
+  bool overwrite = false;
+  bool quiet = false;
+};
+int MergeCommand(const MergeArgs& args, const AppContext& app);
 
 // `config` is a calibration file (configs/calibrate_*.yaml); --realizations is not offered (the
 // file sets the fit's size, the experiment the verification's).

@@ -2,8 +2,10 @@
 #include <sstream>
 
 #include "anchorbench/config/load_config.hpp"
+#include "anchorbench/io/hash.hpp"
 #include "anchorbench/io/result_folder.hpp"
 #include "anchorbench/report/run_outputs.hpp"
+#include "anchorbench/report/shard_files.hpp"
 #include "anchorbench/report/summary.hpp"
 #include "anchorbench/runner/monte_carlo.hpp"
 #include "monte_carlo_command.hpp"
@@ -30,14 +32,29 @@ int RunCommand(const RunArgs& args, const AppContext& app) {
   const std::vector<runner::RowConfig> rows = runner::RowsOf(config);
   runner::CheckWork(config);
   runner::CheckRows(rows, app.parts);
+  const std::optional<runner::Shard> shard =
+      args.shard.empty() ? std::nullopt : std::optional(runner::ParseShard(args.shard, "--shard"));
   const MonteCarloSetup setup = SetUpMonteCarlo(args, config.name);
   const std::unique_ptr<io::ResultFolder> out = OpenResultFolder(args, setup, ExpectedBytes(config));
 
   Progress progress("run " + config.name, args.quiet);
   const std::vector<runner::Attempt> attempts = runner::RunMonteCarlo(
-      config, app.parts, {setup.threads, [&](int done, int total) { progress.Update(done, total); }});
+      config, app.parts,
+      {setup.threads, [&](int done, int total) { progress.Update(done, total); }, shard.value_or(runner::Shard{})});
   const double wall_time_s = progress.elapsed_s();
-  progress.Finish(static_cast<int>(rows.size()) * config.realizations);
+  const int units = static_cast<int>(rows.size()) * config.realizations;
+  progress.Finish(shard ? shard->UnitsOf(units) : units);
+  if (shard) {  // the shard's attempts and what merge needs to check and join them; no summary
+    const std::string resolved = config::ToYaml(config);
+    out->Write("attempts.csv", [&](std::ostream& file) { report::WriteAttempts(file, attempts, rows); });
+    out->Write("compute_s.csv", [&](std::ostream& file) { report::WriteComputeCsv(file, attempts); });
+    out->Write("config.yaml", resolved);
+    out->Write("shard.csv", [&](std::ostream& file) {
+      report::WriteShardCsv(file, {*shard, shard->UnitsOf(units), config.name, io::Fingerprint(resolved), app.revision});
+    });
+    out->Commit();
+    return 0;
+  }
   const std::vector<report::MethodSummary> summaries =
       report::Summarize(attempts, rows, config.realizations, config.bootstrap_resamples, config.seed);
 

@@ -5,43 +5,12 @@
 # shellcheck source=common.sh
 source "$(dirname "$0")/common.sh"
 
-expect_refusal() {  # DESCRIPTION EXPECTED_TEXT CALIBRATION_FILE
-  local err status
-  err=$("$bin" calibrate "$3" --out "$dir/refused" --quiet 2>&1 >/dev/null)
-  status=$?
-  if [ "$status" -ne 2 ]; then
-    fail "$1: exit $status, expected 2: $err"
-  elif ! grep -qF -- "$2" <<<"$err"; then
-    fail "$1: message lacks '$2': $err"
-  elif [ "$(wc -l <<<"$err")" -ne 1 ]; then
-    fail "$1: expected one line, got: $err"
-  elif [ -e "$dir/refused" ] || [ -e "$dir/refused.evaluations.csv" ]; then
-    fail "$1: something was written"
-  else
-    echo "ok: $1"
-  fi
+expect_refusal() {  # DESCRIPTION EXPECTED_TEXT CALIBRATION_FILE: nothing written, not even the log
+  refused "$1" "$2" "$dir/refused" "$bin" calibrate "$3" --out "$dir/refused" --quiet
+  [ -e "$dir/refused.evaluations.csv" ] && fail "$1: the evaluation log was written"
 }
 
-# A small table: 2 rows of a short tunnel, 3 realizations (the paper's cells are made up).
-cat >"$dir/tiny.yaml" <<'YAML'
-seed: 1
-realizations: 3
-bootstrap_resamples: 50
-scenario:
-  tunnel: {length_m: 60, width_m: 10, num_anchors: 4}
-  trajectory: {kind: random, rate_hz: 5}
-  ranging: {sigma_range_m: 0.1, outlier_probability: 0.02}
-rows:
-  - name: "1"
-    paper:
-      fixed: {avg_m: 0.2, med_m: 0.05, init: 12, gt1m: 1, ratio_pct: 8}
-      gated: {avg_m: 0.1, med_m: 0.05, init: 6, gt1m: 0, ratio_pct: 0}
-  - name: "2"
-    scenario: {ranging: {sigma_range_m: 0.3}}
-    paper:
-      fixed: {avg_m: 0.4, med_m: 0.1, init: 12, gt1m: 2, ratio_pct: 16}
-      gated: {avg_m: 0.2, med_m: 0.1, init: 5, gt1m: 0, ratio_pct: 0}
-YAML
+small_table "$dir/tiny.yaml"
 calibration() {  # extra lines appended to a valid calibration file
   printf 'experiment: tiny.yaml\nseed: 11\nrealizations: 4\nverify_seeds: [2, 3]\n'
   printf 'global: {algorithm: GN_DIRECT_L, max_evaluations: 40}\nlocal: {algorithm: LN_SBPLX, max_evaluations: 20}\n'
@@ -100,6 +69,14 @@ rm "$dir/tiny.calibrated.yaml"
 "$bin" calibrate "$dir/cal.yaml" --out "$dir/reused" --quiet --reuse "$dir/whole/evaluations.csv" || fail "reuse"
 cmp -s "$dir/whole/evaluations.csv" "$dir/reused/evaluations.csv" || fail "reused evaluations differ"
 echo "ok: --reuse"
+
+# The log of a killed calibration of other parameters into the same folder: refused, with the way out.
+rm -f "$dir/tiny.calibrated.yaml"
+printf 'context,evaluation,stage,scenario.other,objective\n' >"$dir/refused.evaluations.csv"
+err=$("$bin" calibrate "$dir/cal.yaml" --out "$dir/refused" --quiet 2>&1 >/dev/null)
+[ $? -eq 2 ] && grep -qF "remove it to start afresh" <<<"$err" || fail "a foreign running log: $err"
+[ -e "$dir/refused" ] && fail "a foreign running log: a folder was written"
+rm -f "$dir/refused.evaluations.csv"
 
 [ "$failures" -eq 0 ] || { echo "$failures failure(s)"; exit 1; }
 echo "all calibrate cases passed"

@@ -6,3 +6,47 @@ dir=$(mktemp -d)
 trap 'rm -rf "$dir"' EXIT
 failures=0
 fail() { echo "FAIL: $*"; failures=$((failures + 1)); }
+
+# small_table FILE: a small two-row table of a short tunnel (a few seconds per run), with made-up
+# paper cells on both rows.
+small_table() {
+  cat >"$1" <<'YAML'
+seed: 5
+realizations: 5
+bootstrap_resamples: 100
+scenario:
+  tunnel: {length_m: 60, width_m: 10, num_anchors: 4}
+  trajectory: {kind: random, rate_hz: 5}
+  ranging: {sigma_range_m: 0.1, outlier_probability: 0.02}
+rows:
+  - name: "1"
+    paper:
+      fixed: {avg_m: 0.2, med_m: 0.05, init: 20, gt1m: 1, ratio_pct: 5}
+      gated: {avg_m: 0.1, med_m: 0.05, init: 8, gt1m: 0, ratio_pct: 0}
+  - name: "2"
+    scenario: {ranging: {sigma_range_m: 0.3}}
+    paper:
+      fixed: {avg_m: 0.4, med_m: 0.1, init: 20, gt1m: 2, ratio_pct: 10}
+      gated: {avg_m: 0.2, med_m: 0.1, init: 6, gt1m: 0, ratio_pct: 0}
+YAML
+}
+
+# refused DESCRIPTION EXPECTED_TEXT UNWRITTEN COMMAND...: the command exits 2 with one line holding
+# the text, and the path UNWRITTEN does not exist afterwards.
+refused() {
+  local what="$1" expected="$2" unwritten="$3" err status
+  shift 3
+  err=$("$@" 2>&1 >/dev/null)
+  status=$?
+  if [ "$status" -ne 2 ]; then
+    fail "$what: exit $status, expected 2: $err"
+  elif ! grep -qF -- "$expected" <<<"$err"; then
+    fail "$what: message lacks '$expected': $err"
+  elif [ "$(wc -l <<<"$err")" -ne 1 ]; then
+    fail "$what: expected one line, got: $err"
+  elif [ -e "$unwritten" ]; then
+    fail "$what: $unwritten was written"
+  else
+    echo "ok: $what"
+  fi
+}

@@ -9,15 +9,6 @@
 
 namespace anchorbench::calibrate {
 
-std::uint64_t Fnv1a64(const std::string& text) {
-  std::uint64_t hash = 14695981039346656037ull;
-  for (unsigned char c : text) {
-    hash ^= c;
-    hash *= 1099511628211ull;
-  }
-  return hash;
-}
-
 EvaluationLog::EvaluationLog(std::vector<std::string> keys, std::vector<std::string> cell_names, std::uint64_t context)
     : keys_(std::move(keys)), cell_names_(std::move(cell_names)) {
   char text[17];

@@ -58,7 +58,4 @@ class EvaluationLog {
   std::filesystem::path path_;
 };
 
-// FNV-1a, 64 bits: the context hash.
-std::uint64_t Fnv1a64(const std::string& text);
-
 }  // namespace anchorbench::calibrate
