@@ -12,18 +12,13 @@
 #include "anchorbench/report/run_outputs.hpp"
 #include "anchorbench/report/shard_files.hpp"
 #include "anchorbench/report/summary.hpp"
-#include "commands.hpp"
+#include "monte_carlo_command.hpp"
 
 namespace anchorbench::app {
 namespace {
 
 namespace fs = std::filesystem;
 using io::InputError;
-
-std::string ReadText(const fs::path& path) {
-  std::ifstream in = io::OpenForReading(path.string());
-  return std::string((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-}
 
 // The shards' identities: one run (config and build), every shard of it exactly once.
 std::vector<report::ShardInfo> CheckShards(const std::vector<std::string>& folders) {
@@ -63,10 +58,10 @@ std::vector<report::ShardInfo> CheckShards(const std::vector<std::string>& folde
 int MergeCommand(const MergeArgs& args, const AppContext& app) {
   const std::vector<report::ShardInfo> infos = CheckShards(args.shards);
   const fs::path first_config = fs::path(args.shards.front()) / "config.yaml";
-  const std::string config_text = ReadText(first_config);
+  const std::string config_text = io::ReadWholeFile(first_config.string());
   for (std::size_t s = 0; s < args.shards.size(); ++s) {
     const fs::path path = fs::path(args.shards[s]) / "config.yaml";
-    if (io::Fingerprint(ReadText(path)) != infos[s].config_hash) {
+    if (io::Fingerprint(io::ReadWholeFile(path.string())) != infos[s].config_hash) {
       throw InputError(path.string() + ": does not match its shard.csv's config_hash (edited after the run?)");
     }
   }
@@ -141,14 +136,8 @@ int MergeCommand(const MergeArgs& args, const AppContext& app) {
       attempts_csv << file.lines[i] << '\n';
     }
   }
-  const std::vector<report::MethodSummary> summaries =
-      report::Summarize(attempts, rows, config.realizations, config.bootstrap_resamples, config.seed);
   out.Write("attempts.csv", attempts_csv.str());
-  out.Write("summary.csv", [&](std::ostream& file) { report::WriteSummaryCsv(file, summaries, rows); });
-  std::ostringstream markdown;
-  report::WriteSummaryMarkdown(markdown, summaries, rows, config);
-  out.Write("summary.md", markdown.str());
-  out.Write("timing.csv", [&](std::ostream& file) { report::WriteTimingCsv(file, summaries, rows); });
+  const std::string markdown = WriteRunTables(out, attempts, rows, config);
   report::RunInfo info;
   info.config_path = first_config.string();
   info.revision = infos.front().revision;
@@ -156,7 +145,7 @@ int MergeCommand(const MergeArgs& args, const AppContext& app) {
   info.resolved_config_json = config::ToJson(config);
   out.Write("manifest.json", report::ManifestJson(config, info));
   out.Commit();
-  if (!args.quiet) std::cout << markdown.str();
+  if (!args.quiet) std::cout << markdown;
   return 0;
 }
 

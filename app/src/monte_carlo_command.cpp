@@ -1,6 +1,9 @@
 #include "monte_carlo_command.hpp"
 
+#include <sstream>
+
 #include "anchorbench/config/load_config.hpp"
+#include "anchorbench/report/summary.hpp"
 #include "anchorbench/runner/monte_carlo.hpp"
 
 namespace anchorbench::app {
@@ -19,6 +22,18 @@ std::unique_ptr<io::ResultFolder> OpenResultFolder(const MonteCarloArgs& args, c
   options.expected_bytes = expected_bytes;
   options.inputs = {args.config};
   return std::make_unique<io::ResultFolder>(setup.out, options);
+}
+
+std::string WriteRunTables(io::ResultFolder& out, const std::vector<runner::Attempt>& attempts,
+                           const std::vector<runner::RowConfig>& rows, const runner::ExperimentConfig& config) {
+  const std::vector<report::MethodSummary> summaries =
+      report::Summarize(attempts, rows, config.realizations, config.bootstrap_resamples, config.seed);
+  out.Write("summary.csv", [&](std::ostream& file) { report::WriteSummaryCsv(file, summaries, rows); });
+  std::ostringstream markdown;
+  report::WriteSummaryMarkdown(markdown, summaries, rows, config);
+  out.Write("summary.md", markdown.str());
+  out.Write("timing.csv", [&](std::ostream& file) { report::WriteTimingCsv(file, summaries, rows); });
+  return markdown.str();
 }
 
 report::RunInfo RunInfoOf(const MonteCarloArgs& args, const MonteCarloSetup& setup, const AppContext& app,

@@ -27,6 +27,11 @@ MonteCarloSetup SetUpMonteCarlo(const MonteCarloArgs& args, const std::string& c
 std::unique_ptr<io::ResultFolder> OpenResultFolder(const MonteCarloArgs& args, const MonteCarloSetup& setup,
                                                   std::uintmax_t expected_bytes);
 
+// A run's summary tables from its attempts (run and merge write the same): summary.csv,
+// summary.md and timing.csv into `out`; returns summary.md's text.
+std::string WriteRunTables(io::ResultFolder& out, const std::vector<runner::Attempt>& attempts,
+                           const std::vector<runner::RowConfig>& rows, const runner::ExperimentConfig& config);
+
 // The manifest's record: the command line's changes (--realizations and any `more`), threads,
 // wall time, revision and the resolved config.
 report::RunInfo RunInfoOf(const MonteCarloArgs& args, const MonteCarloSetup& setup, const AppContext& app,

@@ -55,23 +55,16 @@ int RunCommand(const RunArgs& args, const AppContext& app) {
     out->Commit();
     return 0;
   }
-  const std::vector<report::MethodSummary> summaries =
-      report::Summarize(attempts, rows, config.realizations, config.bootstrap_resamples, config.seed);
-
   std::vector<std::string> command_line;
   if (args.seed) command_line.push_back("--seed " + std::to_string(*args.seed));
   for (const std::string& assignment : args.overrides) command_line.push_back("--set " + assignment);
   // Every file into the new folder, then the folder in place: an error leaves the old results intact.
   out->Write("attempts.csv", [&](std::ostream& file) { report::WriteAttempts(file, attempts, rows); });
-  out->Write("summary.csv", [&](std::ostream& file) { report::WriteSummaryCsv(file, summaries, rows); });
-  std::ostringstream markdown;
-  report::WriteSummaryMarkdown(markdown, summaries, rows, config);
-  out->Write("summary.md", markdown.str());
-  out->Write("timing.csv", [&](std::ostream& file) { report::WriteTimingCsv(file, summaries, rows); });
+  const std::string markdown = WriteRunTables(*out, attempts, rows, config);
   out->Write("manifest.json",
              report::ManifestJson(config, RunInfoOf(args, setup, app, config, wall_time_s, command_line)));
   out->Commit();
-  if (!args.quiet) std::cout << markdown.str();
+  if (!args.quiet) std::cout << markdown;
   return 0;
 }
 

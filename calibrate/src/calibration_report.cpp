@@ -21,7 +21,7 @@ std::string ShortMethod(const std::string& method) {
 }
 
 bool Fitted(const runner::CalibrationSpec& spec, const PaperCell& cell) {
-  return WeightOf(spec.fit_weight, cell.column) > 0.0;
+  return report::ValueOf(spec.fit_weight, cell.column) > 0.0;
 }
 
 struct Counts {
@@ -59,7 +59,7 @@ std::string Spread(const std::vector<int>& values) {
 std::string Columns(const runner::CalibrationSpec& spec, bool fitted) {
   std::string text;
   for (report::PaperColumn column : report::kPaperColumns) {
-    const double w = WeightOf(spec.fit_weight, column);
+    const double w = report::ValueOf(spec.fit_weight, column);
     if ((w > 0.0) != fitted) continue;
     text += (text.empty() ? "" : ", ") + std::string(report::ToString(column)) +
             (fitted ? " (weight " + FormatNumber(w) + ")" : "");
@@ -79,14 +79,24 @@ void WriteParameters(std::ostream& out, const CalibrationOutcome& o) {
 }
 
 // "mean (min-max)" of the objective over the verification seeds, of the before or after cells.
-std::string ObjectiveSpread(const CalibrationOutcome& o, bool after, bool held_out) {
-  double sum = 0.0, lo = HUGE_VAL, hi = -HUGE_VAL;
+struct ObjectiveRange {
+  double mean = 0.0, lo = HUGE_VAL, hi = -HUGE_VAL;
+};
+// The objective over the verification seeds, of the configured (before) or calibrated cells.
+ObjectiveRange ObjectiveOverSeeds(const CalibrationOutcome& o, bool after, bool held_out) {
+  ObjectiveRange spread;
   for (const Verification& v : o.verification) {
     const double value = Objective(after ? v.after : v.before, o.spec.fit_weight, held_out, o.spec.band);
-    sum += value, lo = std::min(lo, value), hi = std::max(hi, value);
+    spread.mean += value;
+    spread.lo = std::min(spread.lo, value), spread.hi = std::max(spread.hi, value);
   }
-  return FormatFixed(sum / static_cast<double>(o.verification.size()), 4) + " (" + FormatFixed(lo, 4) + "-" +
-         FormatFixed(hi, 4) + ")";
+  spread.mean /= static_cast<double>(o.verification.size());
+  return spread;
+}
+
+std::string ObjectiveSpread(const CalibrationOutcome& o, bool after, bool held_out) {
+  const ObjectiveRange s = ObjectiveOverSeeds(o, after, held_out);
+  return FormatFixed(s.mean, 4) + " (" + FormatFixed(s.lo, 4) + "-" + FormatFixed(s.hi, 4) + ")";
 }
 
 void WriteObjective(std::ostream& out, const CalibrationOutcome& o) {
@@ -150,7 +160,7 @@ void WriteCells(std::ostream& out, const CalibrationOutcome& o) {
       before_within += report::WithinQuarter(v.before[c]);
       after_within += report::WithinQuarter(v.after[c]);
     }
-    const int decimals = head.column == report::PaperColumn::kInit ? 0 : head.column == report::PaperColumn::kRatio ? 2 : 3;
+    const int decimals = report::Decimals(head.column);
     out << "| " << CellName(head, o.row_names) << " | " << (Fitted(o.spec, head) ? "yes" : "held out") << " | "
         << FormatFixed(head.paper, decimals) << " | " << (before_n ? FormatFixed(before / before_n, decimals) : "-")
         << " | " << before_within << " / " << seeds << " | " << (after_n ? FormatFixed(after / after_n, decimals) : "-")
@@ -158,20 +168,11 @@ void WriteCells(std::ostream& out, const CalibrationOutcome& o) {
   }
 }
 
-// The spread of the calibrated objective over the verification seeds: rises below it are noise.
-double VerificationSpread(const CalibrationOutcome& o) {
-  double lo = HUGE_VAL, hi = -HUGE_VAL;
-  for (const Verification& v : o.verification) {
-    const double objective = Objective(v.after, o.spec.fit_weight, false, o.spec.band);
-    lo = std::min(lo, objective), hi = std::max(hi, objective);
-  }
-  return hi - lo;
-}
-
 void WriteProfiles(std::ostream& out, const CalibrationOutcome& o) {
   const std::vector<Evaluation>& all = o.log.evaluations();
   const double best = all[o.result.best].objective;
-  const double noise = VerificationSpread(o);
+  const ObjectiveRange calibrated = ObjectiveOverSeeds(o, true, false);
+  const double noise = calibrated.hi - calibrated.lo;  // rises below it are noise
   out << "\n## Identifiability: the objective around the calibrated point\n\n"
       << "Each parameter moved alone by +-1 and +-2.5 steps of " << FormatNumber(o.spec.profile_step)
       << " x its range (at the fit's seed and size); the rise over the calibrated objective "

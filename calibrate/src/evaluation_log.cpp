@@ -33,10 +33,19 @@ std::string EvaluationLog::Line(std::size_t index) const {
   return line;
 }
 
+namespace {
+
+// The length of the text up to its last newline: what a process killed mid-line left whole.
+std::size_t WholeLines(const std::string& text) {
+  const std::size_t end = text.find_last_of('\n');
+  return end == std::string::npos ? 0 : end + 1;
+}
+
+}  // namespace
+
 int EvaluationLog::Reuse(const std::filesystem::path& path) {
-  std::ifstream in = io::OpenForReading(path.string());
-  std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-  text.erase(text.find_last_of('\n') == std::string::npos ? 0 : text.find_last_of('\n') + 1);  // a torn line
+  std::string text = io::ReadWholeFile(path.string());
+  text.resize(WholeLines(text));  // a torn last line goes
   std::istringstream lines(text);
   std::string header;
   std::getline(lines, header);
@@ -73,10 +82,8 @@ const std::vector<std::optional<double>>* EvaluationLog::Find(const std::vector<
 void EvaluationLog::AppendTo(const std::filesystem::path& path) {
   const bool fresh = !std::filesystem::exists(path) || std::filesystem::file_size(path) == 0;
   if (!fresh) {  // cut a torn last line, so the next record starts a line of its own
-    std::ifstream in(path, std::ios::binary);
-    std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-    const std::size_t end = text.find_last_of('\n');
-    if (end + 1 != text.size()) std::filesystem::resize_file(path, end == std::string::npos ? 0 : end + 1);
+    const std::string text = io::ReadWholeFile(path.string());
+    if (WholeLines(text) != text.size()) std::filesystem::resize_file(path, WholeLines(text));
   }
   file_.open(path, std::ios::app);
   if (!file_) throw io::InputError(path.string() + ": cannot open the evaluation log for appending");

@@ -15,17 +15,6 @@ std::optional<double> LogRatio(const report::PaperCell& cell) {
   return std::log((*cell.ours + floor) / (cell.paper + floor));
 }
 
-double WeightOf(const runner::PaperCells& weight, PaperColumn column) {
-  switch (column) {
-    case PaperColumn::kAvg: return weight.avg_m;
-    case PaperColumn::kMed: return weight.med_m;
-    case PaperColumn::kInit: return weight.init;
-    case PaperColumn::kGt1m: return weight.gt1m;
-    case PaperColumn::kRatio: return weight.ratio_pct;
-  }
-  return 0.0;
-}
-
 double CellCost(const report::PaperCell& cell, double band) {
   const std::optional<double> log_ratio = LogRatio(cell);
   if (!log_ratio) return kMissingCellCost;
@@ -39,7 +28,7 @@ double Objective(const std::vector<report::PaperCell>& cells, const runner::Pape
                  double band) {
   double sum = 0.0, weights = 0.0;
   for (const report::PaperCell& cell : cells) {
-    const double w = WeightOf(weight, cell.column);
+    const double w = report::ValueOf(weight, cell.column);
     const double used = held_out ? (w > 0.0 ? 0.0 : 1.0) : w;
     if (used <= 0.0) continue;
     sum += used * CellCost(cell, band);

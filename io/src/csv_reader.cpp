@@ -1,6 +1,7 @@
 #include "anchorbench/io/csv_reader.hpp"
 
 #include <charconv>
+#include <iterator>
 #include <cmath>
 
 #include "anchorbench/io/format.hpp"
@@ -37,6 +38,11 @@ std::ifstream OpenForReading(const std::string& path) {
   std::ifstream in(path, std::ios::binary);
   if (!in) throw InputError(path + ": cannot open the file");
   return in;
+}
+
+std::string ReadWholeFile(const std::string& path) {
+  std::ifstream in = OpenForReading(path);
+  return std::string(std::istreambuf_iterator<char>(in), {});
 }
 
 CsvReader::CsvReader(std::istream& in, std::string source) : in_(in), source_(std::move(source)) {

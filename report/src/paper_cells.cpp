@@ -26,9 +26,7 @@ bool ParsePaperColumn(const std::string& name, PaperColumn* column) {
   return false;
 }
 
-namespace {
-
-double PaperValue(const runner::PaperCells& paper, PaperColumn column) {
+double ValueOf(const runner::PaperCells& paper, PaperColumn column) {
   switch (column) {
     case PaperColumn::kAvg: return paper.avg_m;
     case PaperColumn::kMed: return paper.med_m;
@@ -38,6 +36,12 @@ double PaperValue(const runner::PaperCells& paper, PaperColumn column) {
   }
   return 0.0;
 }
+
+int Decimals(PaperColumn column) {
+  return column == PaperColumn::kInit || column == PaperColumn::kGt1m ? 0 : column == PaperColumn::kRatio ? 2 : 3;
+}
+
+namespace {
 
 // Ours into a target cell of the method's summary.
 void Fill(const MethodSummary& s, PaperCell* cell) {
@@ -66,7 +70,7 @@ std::vector<PaperCell> PaperTargets(const std::vector<runner::RowConfig>& rows) 
         cell.row = static_cast<int>(r);
         cell.method = method;
         cell.column = column;
-        cell.paper = PaperValue(*rows[r].paper->For(method), column);
+        cell.paper = ValueOf(*rows[r].paper->For(method), column);
         cell.scored = column != PaperColumn::kGt1m &&
                       !(column == PaperColumn::kInit && cell.method == runner::kFixedWindowTrigger);
         cells.push_back(std::move(cell));

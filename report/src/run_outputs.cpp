@@ -53,9 +53,7 @@ void WriteOurTable(std::ostream& out, const std::vector<MethodSummary>& summarie
 
 // "paper / ours (+x%)" of one cell, with the verdict against the +-25% target.
 std::string Compare(const PaperCell& cell) {
-  const int decimals = cell.column == PaperColumn::kInit || cell.column == PaperColumn::kGt1m ? 0
-                       : cell.column == PaperColumn::kRatio                                  ? 2
-                                                                                             : 3;
+  const int decimals = Decimals(cell.column);
   if (!cell.ours) return FormatFixed(cell.paper, decimals) + " / - ";
   const double relative = cell.paper != 0.0 ? (*cell.ours - cell.paper) / cell.paper : 0.0;
   std::ostringstream s;

@@ -11,11 +11,6 @@
 namespace anchorbench::report {
 namespace {
 
-std::string ReadText(const std::string& path) {
-  std::ifstream in = io::OpenForReading(path);
-  return std::string((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-}
-
 std::vector<std::string> Lines(const std::string& text) {
   std::vector<std::string> lines;
   std::istringstream in(text);
@@ -57,7 +52,7 @@ AttemptsFile ReadAttemptsCsv(const std::string& path, const std::string& compute
                              const std::vector<runner::RowConfig>& rows) {
   std::map<std::string, int, std::less<>> row_index;
   for (std::size_t r = 0; r < rows.size(); ++r) row_index[rows[r].name] = static_cast<int>(r);
-  const std::string text = ReadText(path);
+  const std::string text = io::ReadWholeFile(path);
   AttemptsFile file;
   file.lines = Lines(text);
   if (file.lines.empty()) throw io::InputError(path + ": empty file, expected attempts.csv's header");

@@ -18,9 +18,6 @@ std::optional<double> LogRatio(const report::PaperCell& cell);
 // The cost of a cell that has no value of ours (nothing initialized): as if a factor 10 off.
 constexpr double kMissingCellCost = 5.301898110478399;  // ln(10)^2
 
-// The column's weight in `weight` (a weight per Table I column).
-double WeightOf(const runner::PaperCells& weight, report::PaperColumn column);
-
 // A cell's cost: its squared log-ratio, or with a band > 0 the squared log-distance to the band
 // [(1 - band) paper, (1 + band) paper], 0 inside it; kMissingCellCost without a value of ours.
 double CellCost(const report::PaperCell& cell, double band = 0.0);

@@ -55,5 +55,7 @@ class CsvReader {
 
 // The file, open for reading, or an InputError "PATH: cannot open the file".
 std::ifstream OpenForReading(const std::string& path);
+// The whole file as text (small files: a shard's config, a log), or the same InputError.
+std::string ReadWholeFile(const std::string& path);
 
 }  // namespace anchorbench::io

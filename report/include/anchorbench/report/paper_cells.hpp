@@ -17,6 +17,10 @@ constexpr PaperColumn kPaperColumns[] = {PaperColumn::kAvg, PaperColumn::kMed, P
                                          PaperColumn::kRatio};
 const char* ToString(PaperColumn column);  // "avg_m", "med_m", "init", "gt1m", "ratio_pct"
 bool ParsePaperColumn(const std::string& name, PaperColumn* column);
+// The column's entry of a value-per-column struct (the paper's cells, or a weight per column).
+double ValueOf(const runner::PaperCells& cells, PaperColumn column);
+// The decimals a table prints the column with: 3 (m), 0 (counts), 2 (%).
+int Decimals(PaperColumn column);
 
 struct PaperCell {
   int row = 0;         // index into the rows
