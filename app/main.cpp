@@ -10,6 +10,9 @@
 #include "anchorbench/eval/oracles.hpp"
 #include "anchorbench/io/input_error.hpp"
 #include "commands.hpp"
+#ifdef ANCHORBENCH_MPI
+#include "mpi_job.hpp"
+#endif
 
 namespace app = anchorbench::app;
 
@@ -52,6 +55,13 @@ void AddMonteCarloOptions(CLI::App* cmd, app::MonteCarloArgs& args, bool realiza
   }
   cmd->add_flag("--quiet", args.quiet, "No progress output");
   cmd->add_flag("--overwrite", args.overwrite, "Replace an output folder that holds earlier results");
+}
+
+// run and sweep keep finished chunks in <out>.chunks/ until their results are written.
+void AddResumeOption(CLI::App* cmd, app::MonteCarloArgs& args) {
+  cmd->add_flag("--resume", args.resume,
+                "Continue an interrupted run from <out>.chunks/ (its finished chunks are kept); the results are "
+                "byte-identical to an uninterrupted run's");
 }
 
 constexpr long long kMaxSeed = std::numeric_limits<long long>::max();
@@ -126,6 +136,7 @@ void AddMonteCarloCommands(CLI::App& cli, CommandLine& c) {
   c.run_cmd = cli.add_subcommand("run", "Monte Carlo: every row x realization x anchor x trigger (estimator.triggers)");
   c.run_cmd->add_option("config", c.run.config, "Experiment config (YAML) with rows")->required();
   AddMonteCarloOptions(c.run_cmd, c.run);
+  AddResumeOption(c.run_cmd, c.run);
   c.run_cmd->add_option("--seed", c.run.seed, "Override the config's seed")->check(WholeNumber(0, kMaxSeed));
   c.run_cmd->add_option("--set", c.run.overrides, "Override a config value: KEY=VALUE, KEY a dotted path (repeatable)");
   c.run_cmd->add_option("--shard", c.run.shard,
@@ -144,6 +155,7 @@ void AddMonteCarloCommands(CLI::App& cli, CommandLine& c) {
   c.sweep_cmd->add_option("--set", c.sweep.axes,
                           "An axis: KEY=VALUES, a list a,b,c or a range start:stop:step (repeatable)");
   AddMonteCarloOptions(c.sweep_cmd, c.sweep);
+  AddResumeOption(c.sweep_cmd, c.sweep);
 
   c.study_cmd = cli.add_subcommand("pdop-study",
                                    "Closest-point, LS, NLS and true PDOP side by side along random runs (Figs. 6-8)");
@@ -185,7 +197,9 @@ int UsageError(const CLI::App& cli, const CLI::ParseError& e) {
   return 2;
 }
 
-int main(int argc, char** argv) {
+// The command line parsed and run; every error reported here, as its exit code.
+int RunCommandLine(int argc, char** argv, const anchorbench::registry::Components& parts,
+                   anchorbench::work::Executor& executor) {
   CLI::App cli{"anchorbench: online initialization of unknown UWB anchors (Delama et al., IROS 2025)"};
   cli.footer(kExitCodes);
   cli.require_subcommand(1);
@@ -199,8 +213,7 @@ int main(int argc, char** argv) {
     return UsageError(cli, e);
   }
   try {
-    const anchorbench::registry::Components parts = anchorbench::eval::MakeComponentsWithOracles();
-    return Dispatch(command_line, {parts, app::BuildRevision()});
+    return Dispatch(command_line, {parts, app::BuildRevision(), executor});
   } catch (const anchorbench::io::InputError& e) {
     std::cerr << "anchorbench: error: " << e.what() << '\n';
     return 2;
@@ -208,4 +221,16 @@ int main(int argc, char** argv) {
     std::cerr << "anchorbench: internal error: " << e.what() << '\n';
     return 3;
   }
+}
+
+int main(int argc, char** argv) {
+  const anchorbench::registry::Components parts = anchorbench::eval::MakeComponentsWithOracles();
+#ifdef ANCHORBENCH_MPI
+  app::MpiJob job(argc, argv, parts);  // anchorbench-mpi: rank 0 runs the command, the others compute chunks
+  if (job.worker()) return job.Serve();
+  return job.Finish(RunCommandLine(argc, argv, parts, job.executor()));
+#else
+  anchorbench::work::LocalExecutor executor(parts);
+  return RunCommandLine(argc, argv, parts, executor);
+#endif
 }

@@ -12,6 +12,8 @@ packages=(
   libbenchmark-dev               # benchmarks
   python3-matplotlib python3-numpy  # plot_scripts/ (run with /usr/bin/python3)
   clang libclang-rt-14-dev libomp-14-dev  # scripts/sanitize.sh: ASan, UBSan, libFuzzer
+  openmpi-bin libopenmpi-dev     # anchorbench-mpi (docs/cluster.md)
+  slurm-wlm munge                # scripts/slurm/, tested against a single-node Slurm
 )
 
 missing=()

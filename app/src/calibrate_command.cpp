@@ -14,6 +14,7 @@
 #include "anchorbench/report/paper_cells.hpp"
 #include "anchorbench/report/summary.hpp"
 #include "anchorbench/runner/monte_carlo.hpp"
+#include "anchorbench/work/run_plan.hpp"
 #include "monte_carlo_command.hpp"
 
 namespace anchorbench::app {
@@ -33,7 +34,10 @@ std::vector<PaperCell> RunCells(const runner::CalibrationSpec& spec, std::vector
   if (!intervals) overrides.push_back("bootstrap_resamples=0");  // the fit needs no intervals
   const runner::ExperimentConfig config = config::LoadConfig(spec.experiment_path, overrides, app.parts);
   const std::vector<runner::RowConfig> rows = runner::RowsOf(config);
-  const std::vector<runner::Attempt> attempts = runner::RunMonteCarlo(config, app.parts, {threads, nullptr});
+  runner::CheckWork(config);
+  runner::CheckRows(rows, app.parts);
+  const work::Plan plan({config});
+  const std::vector<runner::Attempt> attempts = work::RunPlan(plan, app.executor, {threads, nullptr, nullptr}).front().attempts;
   return report::CompareWithPaper(
       report::Summarize(attempts, rows, config.realizations, config.bootstrap_resamples, config.seed), rows);
 }

@@ -10,13 +10,16 @@
 
 #include "anchorbench/io/log_policy.hpp"
 #include "anchorbench/registry/components.hpp"
+#include "anchorbench/work/executor.hpp"
 
 namespace anchorbench::app {
 
-// What every command gets from the executable: the parts it offers by name, and its revision.
+// What every command gets from the executable: the parts it offers by name, its revision, and who
+// computes Monte Carlo chunks (this process's threads, or the ranks of an MPI job).
 struct AppContext {
   const registry::Components& parts;
   std::string revision;
+  work::Executor& executor;
 };
 
 struct SimulateArgs {
@@ -47,6 +50,7 @@ struct MonteCarloArgs {
   std::optional<int> realizations;
   bool quiet = false;
   bool overwrite = false;  // replace a folder holding earlier results
+  bool resume = false;     // run, sweep: continue from <out>.chunks/ (work/chunk_store.hpp)
 };
 
 struct RunArgs : MonteCarloArgs {

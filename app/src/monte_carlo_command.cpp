@@ -24,6 +24,11 @@ std::unique_ptr<io::ResultFolder> OpenResultFolder(const MonteCarloArgs& args, c
   return std::make_unique<io::ResultFolder>(setup.out, options);
 }
 
+work::ChunkStore::Mode StoreMode(const MonteCarloArgs& args) {
+  if (args.resume) return work::ChunkStore::Mode::kResume;
+  return args.overwrite ? work::ChunkStore::Mode::kOverwrite : work::ChunkStore::Mode::kFresh;
+}
+
 std::string WriteRunTables(io::ResultFolder& out, const std::vector<runner::Attempt>& attempts,
                            const std::vector<runner::RowConfig>& rows, const runner::ExperimentConfig& config) {
   const std::vector<report::MethodSummary> summaries =

@@ -10,6 +10,7 @@
 #include "anchorbench/io/result_folder.hpp"
 #include "anchorbench/report/run_outputs.hpp"
 #include "anchorbench/runner/experiment.hpp"
+#include "anchorbench/work/chunk_store.hpp"
 #include "commands.hpp"
 #include "progress.hpp"
 
@@ -26,6 +27,10 @@ MonteCarloSetup SetUpMonteCarlo(const MonteCarloArgs& args, const std::string& c
 // checked for being writable, with `expected_bytes` reserved on its disk.
 std::unique_ptr<io::ResultFolder> OpenResultFolder(const MonteCarloArgs& args, const MonteCarloSetup& setup,
                                                   std::uintmax_t expected_bytes);
+
+// Where run and sweep keep finished chunks: --resume takes them, --overwrite discards them, and
+// otherwise an interrupted run's store is refused.
+work::ChunkStore::Mode StoreMode(const MonteCarloArgs& args);
 
 // A run's summary tables from its attempts (run and merge write the same): summary.csv,
 // summary.md and timing.csv into `out`; returns summary.md's text.

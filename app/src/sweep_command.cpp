@@ -8,6 +8,7 @@
 #include "anchorbench/report/sweep_report.hpp"
 #include "anchorbench/runner/monte_carlo.hpp"
 #include "anchorbench/runner/sweep.hpp"
+#include "anchorbench/work/run_plan.hpp"
 #include "monte_carlo_command.hpp"
 
 namespace anchorbench::app {
@@ -35,10 +36,6 @@ int SweepCommand(const SweepArgs& args, const AppContext& app) {
   if (axes.empty()) throw io::InputError(args.config + ": nothing to sweep: give --set KEY=VALUES or a 'sweep' section");
   const std::vector<runner::SweepPoint> grid = runner::SweepGrid(axes);
   const std::vector<runner::ExperimentConfig> configs = PointConfigs(args, grid, app);
-  int total_tasks = 0;
-  for (const runner::ExperimentConfig& config : configs) {
-    total_tasks += static_cast<int>(runner::RowsOf(config).size()) * config.realizations;
-  }
   const MonteCarloSetup setup = SetUpMonteCarlo(args, base.name);
   // Per point, row and trigger a line of ~200 bytes in each of three files.
   std::uintmax_t lines = 0;
@@ -46,21 +43,22 @@ int SweepCommand(const SweepArgs& args, const AppContext& app) {
     for (const runner::RowConfig& row : runner::RowsOf(config)) lines += row.estimator.triggers.size();
   }
   const std::unique_ptr<io::ResultFolder> out = OpenResultFolder(args, setup, 600 * lines + (1 << 16));
+  const work::Plan plan(configs);
+  work::ChunkStore store(setup.out, plan, StoreMode(args));
 
   Progress progress("sweep " + base.name, args.quiet);
+  std::vector<work::ExperimentAttempts> points = work::RunPlan(
+      plan, app.executor, {setup.threads, &store, [&](long long done, long long total) { progress.Update(done, total); }});
   std::vector<report::SweepPointResult> results;
-  int tasks_done = 0;
   for (std::size_t p = 0; p < configs.size(); ++p) {
     const runner::ExperimentConfig& config = configs[p];
-    const std::vector<runner::Attempt> attempts = runner::RunMonteCarlo(
-        config, app.parts, {setup.threads, [&](int done, int) { progress.Update(tasks_done + done, total_tasks); }});
-    report::SweepPointResult result{grid[p], runner::RowsOf(config), {}};
-    result.summaries = report::Summarize(attempts, result.rows, config.realizations, config.bootstrap_resamples, config.seed);
-    tasks_done += static_cast<int>(result.rows.size()) * config.realizations;
+    report::SweepPointResult result{grid[p], plan.rows(static_cast<int>(p)), {}};
+    result.summaries =
+        report::Summarize(points[p].attempts, result.rows, config.realizations, config.bootstrap_resamples, config.seed);
     results.push_back(std::move(result));
   }
   const double wall_time_s = progress.elapsed_s();
-  progress.Finish(total_tasks);
+  progress.Finish(plan.units());
 
   out->Write("sweep.csv", [&](std::ostream& file) { report::WriteSweepCsv(file, axes, results); });
   out->Write("timing.csv", [&](std::ostream& file) { report::WriteSweepTiming(file, axes, results); });
@@ -73,6 +71,7 @@ int SweepCommand(const SweepArgs& args, const AppContext& app) {
   info.sweep_axes = runner::DescribeAxes(axes);
   out->Write("manifest.json", report::ManifestJson(configs.front(), info));
   out->Commit();
+  store.Remove();
   if (!args.quiet) std::cout << md.str();
   return 0;
 }

@@ -105,8 +105,7 @@ void WriteAgainstThePaper(std::ostream& out, const std::vector<MethodSummary>& s
 }  // namespace
 
 void WriteAttempts(std::ostream& out, const std::vector<Attempt>& attempts, const std::vector<RowConfig>& rows) {
-  out << "row,realization,anchor_id,method,initialized,t_init,n_used,pdop_est,pdop_true,crlb_m,err_m,err_x,err_y,"
-         "err_z,bias_err,alpha,status,bias_aware_dop,nees_pos,nees,bias_aware_hdop,bias_aware_vdop\n";
+  out << kAttemptsColumns << '\n';
   const eval::AttemptEvaluation none;
   for (const Attempt& a : attempts) {
     const eval::AttemptEvaluation& e = a.evaluation ? *a.evaluation : none;
@@ -121,6 +120,11 @@ void WriteAttempts(std::ostream& out, const std::vector<Attempt>& attempts, cons
         << FormatOptional(e.nees) << ',' << FormatOptional(e.bias_aware_hdop) << ','
         << FormatOptional(e.bias_aware_vdop) << '\n';
   }
+}
+
+void WriteAttemptLines(std::ostream& out, const std::vector<std::string>& lines) {
+  out << kAttemptsColumns << '\n';
+  for (const std::string& line : lines) out << line << '\n';
 }
 
 std::string SummaryCsvFields(const MethodSummary& s, const std::vector<RowConfig>& rows) {

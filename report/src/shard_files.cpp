@@ -2,6 +2,7 @@
 
 #include <fstream>
 #include <map>
+#include <optional>
 #include <sstream>
 
 #include "anchorbench/io/csv_reader.hpp"
@@ -48,25 +49,34 @@ void WriteComputeCsv(std::ostream& out, const std::vector<runner::Attempt>& atte
   for (const runner::Attempt& a : attempts) out << io::FormatNumber(a.compute_s) << '\n';
 }
 
-AttemptsFile ReadAttemptsCsv(const std::string& path, const std::string& compute_path,
-                             const std::vector<runner::RowConfig>& rows) {
+AttemptsFile ParseAttempts(const std::string& text, const std::string& source,
+                           const std::vector<runner::RowConfig>& rows, std::istream* compute_in,
+                           const std::string& compute_source) {
   std::map<std::string, int, std::less<>> row_index;
   for (std::size_t r = 0; r < rows.size(); ++r) row_index[rows[r].name] = static_cast<int>(r);
-  const std::string text = io::ReadWholeFile(path);
   AttemptsFile file;
   file.lines = Lines(text);
-  if (file.lines.empty()) throw io::InputError(path + ": empty file, expected attempts.csv's header");
+  if (file.lines.empty()) throw io::InputError(source + ": empty file, expected attempts.csv's header");
   file.header = file.lines.front();
   file.lines.erase(file.lines.begin());
 
   std::istringstream in(text);
-  io::CsvReader csv(in, path);
+  io::CsvReader csv(in, source);
   const int row = csv.Column({"row"}), realization = csv.Column({"realization"}), anchor = csv.Column({"anchor_id"});
   const int method = csv.Column({"method"}), initialized = csv.Column({"initialized"}), t_init = csv.Column({"t_init"});
   const int error = csv.Column({"err_m"}), nees = csv.Column({"nees_pos"});
-  std::ifstream compute_in = io::OpenForReading(compute_path);
-  io::CsvReader compute(compute_in, compute_path);
-  const int compute_s = compute.Column({"compute_s"});
+  // compute_s: a column of its own file, or the last column of this one (a chunk).
+  std::optional<io::CsvReader> compute;
+  if (compute_in) compute.emplace(*compute_in, compute_source);
+  const int compute_s = compute ? compute->Column({"compute_s"}) : csv.Column({"compute_s"});
+  if (!compute) {
+    const std::size_t cut = file.header.rfind(',');
+    if (cut == std::string::npos || file.header.substr(cut + 1) != "compute_s") {
+      throw io::InputError(source + ":1: compute_s must be the last column");
+    }
+    file.header.erase(cut);
+  }
+  std::size_t index = 0;
   while (csv.Next()) {
     runner::Attempt a;
     const auto found = row_index.find(csv.Text(row));
@@ -82,15 +92,27 @@ AttemptsFile ReadAttemptsCsv(const std::string& path, const std::string& compute
       a.evaluation->error_m = csv.Number(error);
       if (!csv.Empty(nees)) a.evaluation->nees_position = csv.Number(nees);
     }
-    if (!compute.Next()) compute.Fail("fewer lines than " + path);
-    a.compute_s = compute.Number(compute_s);
+    if (compute) {
+      if (!compute->Next()) compute->Fail("fewer lines than " + source);
+      a.compute_s = compute->Number(compute_s);
+    } else {
+      a.compute_s = csv.Number(compute_s);
+      if (index < file.lines.size()) file.lines[index].erase(file.lines[index].rfind(','));
+    }
     file.attempts.push_back(std::move(a));
+    ++index;
   }
-  if (compute.Next()) compute.Fail("more lines than " + path);
+  if (compute && compute->Next()) compute->Fail("more lines than " + source);
   if (file.attempts.size() != file.lines.size()) {
-    throw io::InputError(path + ": blank or comment lines; expected a shard's attempts.csv as written");
+    throw io::InputError(source + ": blank or comment lines; expected attempts as written");
   }
   return file;
+}
+
+AttemptsFile ReadAttemptsCsv(const std::string& path, const std::string& compute_path,
+                             const std::vector<runner::RowConfig>& rows) {
+  std::ifstream compute_in = io::OpenForReading(compute_path);
+  return ParseAttempts(io::ReadWholeFile(path), path, rows, &compute_in, compute_path);
 }
 
 }  // namespace anchorbench::report

@@ -7,33 +7,14 @@
 
 #include "anchorbench/eval/oracles.hpp"
 #include "anchorbench/testing/parts.hpp"
+#include "anchorbench/testing/small_table.hpp"
 #include "anchorbench/io/input_error.hpp"
 
 namespace anchorbench::runner {
 namespace {
 
 using anchorbench::testing::Parts;
-
-// A small two-row table: a short tunnel, a few anchors, a mix of trajectories.
-ExperimentConfig SmallTable() {
-  ExperimentConfig config;
-  config.name = "small";
-  config.seed = 7;
-  config.realizations = 6;
-  config.bootstrap_resamples = 200;
-  config.scenario.tunnel.length_m = 60.0;
-  config.scenario.tunnel.num_anchors = 4;
-  config.scenario.trajectory.fraction_straight = 0.2;
-  config.scenario.trajectory.fraction_planar = 0.2;
-  config.scenario.ranging.outlier_probability = 0.05;
-  config.scenario.ranging.sigma_position_m = 0.02;
-  RowConfig low{"low", config.scenario, config.estimator, std::nullopt};
-  RowConfig high = low;
-  high.name = "high";
-  high.scenario.ranging.sigma_range_m = 0.4;
-  config.rows = {low, high};
-  return config;
-}
+using anchorbench::testing::SmallTable;
 
 // Every deterministic field of every attempt, doubles to the last bit.
 std::string Outputs(const ExperimentConfig& config, int threads, Shard shard = {}) {

@@ -13,8 +13,13 @@ namespace anchorbench::report {
 // attempts.csv: one row per attempt, columns
 // row,realization,anchor_id,method,initialized,t_init,n_used,pdop_est,pdop_true,crlb_m,err_m,
 // err_x,err_y,err_z,bias_err,alpha,status,bias_aware_dop (empty where not applicable; never NaN).
+constexpr const char* kAttemptsColumns =
+    "row,realization,anchor_id,method,initialized,t_init,n_used,pdop_est,pdop_true,crlb_m,err_m,err_x,err_y,err_z,"
+    "bias_err,alpha,status,bias_aware_dop,nees_pos,nees,bias_aware_hdop,bias_aware_vdop";
 void WriteAttempts(std::ostream& out, const std::vector<runner::Attempt>& attempts,
                    const std::vector<runner::RowConfig>& rows);
+// The same file from lines written before (work::ChunkResult's): the header, then the lines.
+void WriteAttemptLines(std::ostream& out, const std::vector<std::string>& lines);
 
 // summary.csv: row,method,avg_m,med_m,init,gt1m,ratio_pct,avg_lo,avg_hi,ratio_lo,ratio_hi, the
 // position credibility, med_lo,med_hi, then the initialization times and, where rows carry the paper's values, those.

@@ -4,6 +4,7 @@
 // compute_s.csv (each attempt's compute time, for the merged timing.csv), config.yaml (the
 // resolved config) and shard.csv (which share of which run, by which build).
 
+#include <istream>
 #include <ostream>
 #include <string>
 #include <vector>
@@ -39,5 +40,12 @@ struct AttemptsFile {
 // io::InputError "FILE:LINE: ..." on anything malformed.
 AttemptsFile ReadAttemptsCsv(const std::string& path, const std::string& compute_path,
                              const std::vector<runner::RowConfig>& rows);
+
+// The same from text named `source`: compute_s from `compute_in` (a compute_s.csv named
+// `compute_source`), or, if null, from the text's last column (a chunk: work/chunk.hpp), which is
+// then cut from the header and lines.
+AttemptsFile ParseAttempts(const std::string& text, const std::string& source,
+                           const std::vector<runner::RowConfig>& rows, std::istream* compute_in = nullptr,
+                           const std::string& compute_source = "");
 
 }  // namespace anchorbench::report

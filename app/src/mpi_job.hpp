@@ -1,0 +1,54 @@
+#pragma once
+// anchorbench-mpi: the same commands over the ranks of an MPI job (mpirun -n K anchorbench-mpi
+// run ...). Rank 0 runs the command as the plain binary would and hands out chunks of the plan
+// (work/plan.hpp) to the other ranks as they ask for more; the others only compute chunks, so
+// they read no file and write none. A chunk's bytes do not depend on who computed it, so the
+// results are the plain binary's, byte for byte, for any K and any thread count (docs/cluster.md).
+
+#include <string>
+#include <vector>
+
+#include "anchorbench/registry/components.hpp"
+#include "anchorbench/work/executor.hpp"
+
+namespace anchorbench::app {
+
+// Rank 0's executor: K-1 worker ranks, dynamically scheduled, each given as many chunks at a time
+// as it has threads. With no worker (-n 1) it computes on its own threads.
+class MpiExecutor final : public work::Executor {
+ public:
+  MpiExecutor(const registry::Components& components, int ranks) : local_(components), ranks_(ranks) {}
+  void Compute(const work::Plan& plan, const std::vector<int>& chunks, int threads, const work::ChunkDone& done) override;
+  // Whether workers hold chunks of a Compute that did not end (an error mid-plan).
+  bool busy() const { return busy_; }
+
+ private:
+  work::LocalExecutor local_;
+  int ranks_;
+  std::string plan_sent_;  // the plan (identity and threads) the workers hold
+  bool busy_ = false;
+};
+
+// The job around one process: MPI_Init on construction; on rank 0, Finish(exit code) ends it
+// (stops the workers, or aborts the job if they are mid-plan: an error never hangs, and no rank
+// goes on alone); on the others, Serve() computes chunks until rank 0 says stop.
+class MpiJob {
+ public:
+  MpiJob(int& argc, char**& argv, const registry::Components& components);
+  MpiJob(const MpiJob&) = delete;
+  MpiJob& operator=(const MpiJob&) = delete;
+  bool worker() const { return rank_ != 0; }
+  work::Executor& executor() { return executor_; }
+  int Serve();
+  int Finish(int exit_code);
+
+ private:
+  static int Init(int& argc, char**& argv, int& rank);  // MPI_Init; the rank count
+
+  const registry::Components& components_;
+  int rank_ = 0;
+  int ranks_ = 1;
+  MpiExecutor executor_;
+};
+
+}  // namespace anchorbench::app

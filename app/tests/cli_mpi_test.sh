@@ -1,0 +1,70 @@
+#!/usr/bin/env bash
+# MPI (issue 15): `mpirun -n K anchorbench-mpi run|sweep|calibrate` writes the plain binary's bytes for K = 2 and 3
+# and 1 or 2 threads per rank; bad input ends every rank with exit 2 (no hang); a rank killed
+# mid-run fails the job with no result folder, and --resume finishes it to the same bytes.
+# Arguments: the plain anchorbench, anchorbench-mpi, the configs folder.
+# shellcheck source=common.sh
+source "$(dirname "$0")/common.sh"
+mpi_bin="$2"
+configs="$3"
+# Oversubscribed (more ranks than this machine's cores), and allowed as root (CI runs as root).
+mpi() { timeout 120 mpirun --allow-run-as-root --oversubscribe -n "$@"; }
+
+small_table "$dir/small.yaml"
+"$bin" run "$dir/small.yaml" --out "$dir/plain" --quiet --threads 2 || fail "plain run"
+for ranks in 2 3; do
+  for threads in 1 2; do
+    mpi "$ranks" "$mpi_bin" run "$dir/small.yaml" --out "$dir/mpi$ranks-$threads" --quiet --threads "$threads" \
+      >/dev/null 2>&1 || fail "mpirun -n $ranks run"
+    for file in attempts.csv summary.csv summary.md; do
+      cmp -s "$dir/plain/$file" "$dir/mpi$ranks-$threads/$file" || fail "-n $ranks, $threads threads: $file differs"
+    done
+    echo "ok: mpirun -n $ranks, $threads threads a rank: the plain run's bytes"
+  done
+done
+
+axis="estimator.trigger.pdop_threshold=0.5,1,2"
+"$bin" sweep "$dir/small.yaml" --set "$axis" --out "$dir/sweep_plain" --quiet || fail "plain sweep"
+mpi 3 "$mpi_bin" sweep "$dir/small.yaml" --set "$axis" --out "$dir/sweep_mpi" --quiet --threads 1 >/dev/null 2>&1 ||
+  fail "mpirun sweep"
+for file in sweep.csv sweep.md; do
+  cmp -s "$dir/sweep_plain/$file" "$dir/sweep_mpi/$file" || fail "mpirun sweep: $file differs"
+done
+echo "ok: mpirun -n 3 sweep: the plain sweep's bytes"
+
+err=$(mpi 3 "$mpi_bin" run "$dir/missing.yaml" --out "$dir/never" 2>&1)
+status=$?
+[ "$status" -eq 2 ] || fail "bad input under mpirun: exit $status, expected 2"
+grep -qF "missing.yaml: cannot open" <<<"$err" || fail "bad input under mpirun: $err"
+echo "ok: bad input ends the job with exit 2"
+
+# A rank killed mid-run: the job fails, nothing is presented as complete, and --resume finishes it.
+table="$configs/table1.yaml"
+"$bin" run "$table" --realizations 40 --out "$dir/table_plain" --quiet --threads 2 || fail "plain table run"
+mpi 3 "$mpi_bin" run "$table" --realizations 40 --out "$dir/table" --quiet --threads 1 >"$dir/killed.log" 2>&1 &
+job=$!
+sleep 1.5
+# A worker rank: one of the job's processes whose environment says it is not rank 0.
+victim=""
+for pid in $(pgrep -xf "$mpi_bin run $table --realizations 40 --out $dir/table --quiet --threads 1"); do
+  tr '\0' '\n' <"/proc/$pid/environ" | grep -qx 'OMPI_COMM_WORLD_RANK=[1-9]' && victim=$pid
+done
+[ -n "$victim" ] && kill -9 "$victim" || fail "no worker rank found to kill"
+wait "$job"
+status=$?
+[ "$status" -ne 0 ] || fail "a killed rank: mpirun exited 0"
+grep -q "exited on signal 9" "$dir/killed.log" || fail "a killed rank: mpirun did not say which rank died: $(cat "$dir/killed.log")"
+[ -e "$dir/table" ] && fail "a killed rank: $dir/table exists"
+sleep 1
+left=$(pgrep -af -- "--out $dir/table ")
+[ -n "$left" ] && fail "a killed rank: processes left behind: $left"
+echo "ok: a rank killed: exit $status, no result folder, $(find "$dir/table.chunks" -name 'chunk-*' | wc -l) chunks kept"
+mpi 2 "$mpi_bin" run "$table" --realizations 40 --out "$dir/table" --quiet --threads 2 --resume >/dev/null 2>&1 ||
+  fail "mpirun --resume"
+for file in attempts.csv summary.md; do
+  cmp -s "$dir/table_plain/$file" "$dir/table/$file" || fail "resumed under MPI: $file differs"
+done
+echo "ok: resumed under MPI: the plain run's bytes"
+
+[ "$failures" -eq 0 ] || { echo "$failures failure(s)"; exit 1; }
+echo "all MPI cases passed"

@@ -1,0 +1,59 @@
+#!/usr/bin/env bash
+# Resume (issue 15): a run or sweep killed with SIGKILL at any moment keeps its finished chunks in
+# <out>.chunks/, leaves no result folder, and with --resume ends in the bytes of an uninterrupted
+# run; a store of another run, or one left without --resume, is refused with the way out.
+# Arguments: the anchorbench executable, the configs folder.
+# shellcheck source=common.sh
+source "$(dirname "$0")/common.sh"
+configs="$2"
+
+chunks_in() { find "$1" -name 'chunk-*.csv' 2>/dev/null | wc -l; }
+
+# kill_after SECONDS OUT COMMAND...: starts the command, kills it with SIGKILL after SECONDS, and
+# checks that it left no result folder but whole chunks.
+kill_after() {
+  local seconds="$1" out="$2" pid
+  shift 2
+  "$@" --quiet >/dev/null 2>&1 &
+  pid=$!
+  sleep "$seconds"
+  kill -9 "$pid" 2>/dev/null || fail "$* finished before the kill: make it longer"
+  wait "$pid" 2>/dev/null
+  [ -e "$out" ] && fail "killed, $out exists"
+  echo "ok: killed after ${seconds}s with $(chunks_in "$out.chunks") chunks kept"
+}
+
+table="$configs/table1.yaml"
+"$bin" run "$table" --realizations 60 --out "$dir/whole" --quiet --threads 2 || fail "run"
+kill_after 0.7 "$dir/run" "$bin" run "$table" --realizations 60 --out "$dir/run" --threads 2
+kill_after 0.7 "$dir/run" "$bin" run "$table" --realizations 60 --out "$dir/run" --threads 1 --resume
+"$bin" run "$table" --realizations 60 --out "$dir/run" --quiet --threads 2 --resume || fail "resumed run"
+for file in attempts.csv summary.csv summary.md; do
+  cmp -s "$dir/whole/$file" "$dir/run/$file" || fail "resumed run: $file differs from the uninterrupted run's"
+done
+[ -e "$dir/run.chunks" ] && fail "the chunk store outlived the finished run"
+echo "ok: a run killed twice and resumed writes the uninterrupted run's bytes"
+
+axis="estimator.trigger.pdop_threshold=0.5,1"
+"$bin" sweep "$table" --set "$axis" --realizations 20 --out "$dir/sweep_whole" --quiet || fail "sweep"
+kill_after 0.7 "$dir/sweep" "$bin" sweep "$table" --set "$axis" --realizations 20 --out "$dir/sweep"
+"$bin" sweep "$table" --set "$axis" --realizations 20 --out "$dir/sweep" --quiet --resume || fail "resumed sweep"
+for file in sweep.csv sweep.md; do
+  cmp -s "$dir/sweep_whole/$file" "$dir/sweep/$file" || fail "resumed sweep: $file differs"
+done
+echo "ok: a killed sweep resumed writes the uninterrupted sweep's bytes"
+
+kill_after 0.7 "$dir/left" "$bin" run "$table" --realizations 60 --out "$dir/left" --threads 2
+refused "an interrupted run's store without --resume" "finished chunks of an interrupted run: --resume" \
+  "$dir/left" "$bin" run "$table" --realizations 60 --out "$dir/left"
+refused "another run's store with --resume" "holds chunks of another run" \
+  "$dir/left" "$bin" run "$table" --realizations 60 --seed 9 --out "$dir/left" --resume
+refused "finished results without --overwrite" "--overwrite" "$dir/whole/never" \
+  "$bin" run "$table" --realizations 60 --out "$dir/whole" --resume
+refused "--resume with --shard" "a shard is redone whole" "$dir/shard" \
+  "$bin" run "$table" --shard 0/2 --out "$dir/shard" --resume
+"$bin" run "$table" --realizations 60 --seed 9 --out "$dir/left" --quiet --overwrite || fail "--overwrite"
+[ -e "$dir/left.chunks" ] && fail "--overwrite left the old store"
+
+[ "$failures" -eq 0 ] || { echo "$failures failure(s)"; exit 1; }
+echo "all resume cases passed"

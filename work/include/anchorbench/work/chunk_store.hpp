@@ -1,0 +1,44 @@
+#pragma once
+// Where a run's finished chunks wait until its results are written: the folder <out>.chunks/
+// beside the result folder, one file per chunk (written whole or not at all, so a kill -9 leaves
+// only whole chunks) and `plan.csv` naming the plan. A run killed at any moment continues from it
+// with --resume; the finished results replace it.
+
+#include <filesystem>
+#include <map>
+#include <string>
+
+#include "anchorbench/work/chunk.hpp"
+#include "anchorbench/work/plan.hpp"
+
+namespace anchorbench::work {
+
+class ChunkStore {
+ public:
+  enum class Mode { kFresh, kResume, kOverwrite };
+  // The store for the results in `out`, before any work. kFresh refuses an existing store (an
+  // interrupted run: --resume or --overwrite); kResume takes its chunks if it is `plan`'s and
+  // refuses another plan's; kOverwrite discards what is there. Errors are io::InputError naming
+  // the folder and the way out.
+  ChunkStore(const std::filesystem::path& out, const Plan& plan, Mode mode);
+
+  // The chunks finished before (kResume), read back and checked, by index.
+  std::map<int, ChunkResult> TakeFinished();
+  void Save(int chunk, const std::string& text);
+  // Once the results are in place.
+  void Remove();
+
+  const std::filesystem::path& folder() const { return folder_; }
+
+ private:
+  std::filesystem::path ChunkPath(int chunk) const;
+
+  const Plan& plan_;
+  std::filesystem::path folder_;
+  std::map<int, ChunkResult> finished_;
+};
+
+// <out>.chunks (a trailing separator of `out` ignored).
+std::filesystem::path ChunkStorePath(const std::filesystem::path& out);
+
+}  // namespace anchorbench::work

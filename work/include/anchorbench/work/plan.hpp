@@ -1,0 +1,60 @@
+#pragma once
+// The work of one command as numbered chunks. A run is one experiment, a sweep one per grid point;
+// each experiment's (row, realization) units, numbered row x realizations + realization, are cut
+// into chunks of consecutive units. Chunks are what threads, MPI ranks and the chunk store deal
+// in: a chunk's attempts depend on the plan alone, never on who computed them or when.
+
+#include <string>
+#include <vector>
+
+#include "anchorbench/registry/components.hpp"
+#include "anchorbench/runner/experiment.hpp"
+
+namespace anchorbench::work {
+
+// Units [first_unit, end_unit) of one experiment.
+struct ChunkSpan {
+  int experiment = 0;
+  int first_unit = 0;
+  int end_unit = 0;
+};
+
+// An experiment of U units is cut into chunks of ceil(U / kChunksPerExperiment) units, at most
+// kMaxChunkUnits: ~64 chunks keep two threads' last-chunk wait near 1/64 of a run, and a
+// 1e6-unit sweep still hands out chunks of seconds, not hours. The size follows from the config
+// alone, so a resumed run or another rank count cuts the same chunks.
+constexpr int kChunksPerExperiment = 64;
+constexpr int kMaxChunkUnits = 64;
+
+class Plan {
+ public:
+  // `experiments` must have passed runner::CheckWork and CheckRows.
+  explicit Plan(std::vector<runner::ExperimentConfig> experiments);
+
+  const std::vector<runner::ExperimentConfig>& experiments() const { return experiments_; }
+  const std::vector<runner::RowConfig>& rows(int experiment) const {
+    return rows_[static_cast<std::size_t>(experiment)];
+  }
+  const std::vector<ChunkSpan>& chunks() const { return chunks_; }
+  long long units() const { return units_; }
+  // Every experiment's resolved config (config::ToYaml), in order: what a worker rank rebuilds
+  // the plan from (config::LoadConfigText) ...
+  const std::vector<std::string>& texts() const { return texts_; }
+  // ... and their fingerprint (io::Fingerprint): what a chunk store and a worker check.
+  const std::string& identity() const { return identity_; }
+
+ private:
+  std::vector<runner::ExperimentConfig> experiments_;
+  std::vector<std::vector<runner::RowConfig>> rows_;
+  std::vector<ChunkSpan> chunks_;
+  long long units_ = 0;
+  std::vector<std::string> texts_;
+  std::string identity_;
+};
+
+// A plan from the texts of another plan (a worker rank's copy); refuses (io::InputError) texts
+// whose configs do not write back to the same identity.
+Plan PlanFromTexts(const std::vector<std::string>& texts, const std::string& identity,
+                   const registry::Components& components);
+
+}  // namespace anchorbench::work

@@ -1,0 +1,98 @@
+#include "anchorbench/work/chunk_store.hpp"
+
+#include <cstdio>
+#include <fstream>
+#include <system_error>
+
+#include "anchorbench/io/atomic_file.hpp"
+#include "anchorbench/io/csv_reader.hpp"
+#include "anchorbench/io/input_error.hpp"
+
+namespace anchorbench::work {
+namespace fs = std::filesystem;
+using io::InputError;
+
+namespace {
+
+constexpr const char* kPlanFile = "plan.csv";
+
+void WritePlanFile(const fs::path& folder, const Plan& plan) {
+  io::AtomicFile file(folder / kPlanFile, false);
+  file.stream() << "identity,chunks,units\n" << plan.identity() << ',' << plan.chunks().size() << ','
+                << plan.units() << '\n';
+  file.Commit();
+}
+
+std::string IdentityIn(const fs::path& folder) {
+  const fs::path path = folder / kPlanFile;
+  std::ifstream in = io::OpenForReading(path.string());
+  io::CsvReader csv(in, path.string());
+  if (!csv.Next()) csv.Fail("no plan line");
+  return std::string(csv.Text(csv.Column({"identity"})));
+}
+
+int CountChunkFiles(const fs::path& folder) {
+  int count = 0;
+  for (const fs::directory_entry& entry : fs::directory_iterator(folder)) {
+    if (entry.path().filename().string().rfind("chunk-", 0) == 0) ++count;
+  }
+  return count;
+}
+
+}  // namespace
+
+fs::path ChunkStorePath(const fs::path& out) {
+  fs::path base = out;
+  if (!base.has_filename()) base = base.parent_path();
+  return base.parent_path() / (base.filename().string() + ".chunks");
+}
+
+ChunkStore::ChunkStore(const fs::path& out, const Plan& plan, Mode mode) : plan_(plan), folder_(ChunkStorePath(out)) {
+  std::error_code error;
+  // Killed before its plan file was in place, a store holds nothing to keep.
+  if (fs::exists(folder_, error) && (mode == Mode::kOverwrite || !fs::exists(folder_ / kPlanFile, error))) {
+    fs::remove_all(folder_, error);
+  }
+  if (fs::exists(folder_, error)) {
+    if (mode == Mode::kFresh) {
+      throw InputError(folder_.string() + ": holds " + std::to_string(CountChunkFiles(folder_)) +
+                       " finished chunks of an interrupted run: --resume continues it, --overwrite discards it");
+    }
+    const std::string identity = IdentityIn(folder_);
+    if (identity != plan.identity()) {
+      throw InputError(folder_.string() + ": holds chunks of another run (plan " + identity + ", this run's " +
+                       plan.identity() + "): --overwrite discards them");
+    }
+    for (int chunk = 0; chunk < static_cast<int>(plan.chunks().size()); ++chunk) {
+      const fs::path path = ChunkPath(chunk);
+      if (fs::exists(path, error)) {
+        finished_.emplace(chunk, ParseChunk(plan, chunk, io::ReadWholeFile(path.string()), path.string()));
+      }
+    }
+    return;
+  }
+  fs::create_directories(folder_, error);
+  if (error) throw InputError(folder_.string() + ": cannot create: " + error.message());
+  WritePlanFile(folder_, plan);
+}
+
+std::map<int, ChunkResult> ChunkStore::TakeFinished() { return std::move(finished_); }
+
+void ChunkStore::Save(int chunk, const std::string& text) {
+  io::AtomicFile file(ChunkPath(chunk), true);
+  file.stream() << text;
+  file.Commit();
+}
+
+void ChunkStore::Remove() {
+  std::error_code error;
+  fs::remove_all(folder_, error);  // the results are in place; a leftover is refused next time
+}
+
+fs::path ChunkStore::ChunkPath(int chunk) const {
+  char name[32];
+  std::snprintf(name, sizeof(name), "chunk-%06d.csv", chunk);
+  return folder_ / name;
+}
+
+}  // namespace anchorbench::work

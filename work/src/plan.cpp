@@ -1,0 +1,41 @@
+#include "anchorbench/work/plan.hpp"
+
+#include <algorithm>
+
+#include "anchorbench/config/load_config.hpp"
+#include "anchorbench/io/hash.hpp"
+#include "anchorbench/io/input_error.hpp"
+
+namespace anchorbench::work {
+
+Plan::Plan(std::vector<runner::ExperimentConfig> experiments) : experiments_(std::move(experiments)) {
+  std::string all_texts;
+  for (std::size_t e = 0; e < experiments_.size(); ++e) {
+    rows_.push_back(runner::RowsOf(experiments_[e]));
+    const int units = static_cast<int>(rows_.back().size()) * experiments_[e].realizations;
+    const int size = std::clamp((units + kChunksPerExperiment - 1) / kChunksPerExperiment, 1, kMaxChunkUnits);
+    for (int first = 0; first < units; first += size) {
+      chunks_.push_back({static_cast<int>(e), first, std::min(first + size, units)});
+    }
+    units_ += units;
+    texts_.push_back(config::ToYaml(experiments_[e]));
+    all_texts += texts_.back() + '\0';
+  }
+  identity_ = io::Fingerprint(all_texts);
+}
+
+Plan PlanFromTexts(const std::vector<std::string>& texts, const std::string& identity,
+                   const registry::Components& components) {
+  std::vector<runner::ExperimentConfig> experiments;
+  for (std::size_t e = 0; e < texts.size(); ++e) {
+    experiments.push_back(config::LoadConfigText(texts[e], "experiment " + std::to_string(e), {}, components));
+  }
+  Plan plan(std::move(experiments));
+  if (plan.identity() != identity) {
+    throw io::InputError("the plan's configs read back as " + plan.identity() + ", not " + identity +
+                         ": a config that does not survive its own YAML");
+  }
+  return plan;
+}
+
+}  // namespace anchorbench::work

@@ -1,0 +1,86 @@
+#include "anchorbench/work/chunk_store.hpp"
+
+#include <gtest/gtest.h>
+
+#include "anchorbench/io/input_error.hpp"
+#include "anchorbench/testing/parts.hpp"
+#include "anchorbench/testing/small_table.hpp"
+#include "anchorbench/testing/temp_dir.hpp"
+#include "anchorbench/work/run_plan.hpp"
+
+namespace anchorbench::work {
+namespace {
+
+using testing::Parts;
+using testing::SmallTable;
+using Mode = ChunkStore::Mode;
+
+// Computes only the listed chunks of a plan (what a run killed part way leaves behind).
+class SomeChunks final : public Executor {
+ public:
+  explicit SomeChunks(std::vector<int> only) : only_(std::move(only)) {}
+  void Compute(const Plan& plan, const std::vector<int>&, int threads, const ChunkDone& done) override {
+    LocalExecutor(Parts()).Compute(plan, only_, threads, done);
+  }
+
+ private:
+  std::vector<int> only_;
+};
+
+TEST(ChunkStore, ResumesItsOwnPlanAndRefusesAnother) {
+  const testing::TempDir dir("chunk_store");
+  const std::filesystem::path out = dir.path() / "results";
+  const Plan plan({SmallTable()});
+  {
+    ChunkStore store(out, plan, Mode::kFresh);
+    SomeChunks killed({0, 5});
+    RunPlan(plan, killed, {2, &store, nullptr});
+  }
+  EXPECT_TRUE(std::filesystem::exists(dir.path() / "results.chunks" / "chunk-000005.csv"));
+  EXPECT_THROW(ChunkStore(out, plan, Mode::kFresh), io::InputError);  // an interrupted run
+  runner::ExperimentConfig other = SmallTable();
+  other.seed = 99;
+  const Plan other_plan({other});
+  EXPECT_THROW(ChunkStore(out, other_plan, Mode::kResume), io::InputError);
+
+  ChunkStore store(out, plan, Mode::kResume);
+  LocalExecutor executor(Parts());
+  std::vector<int> computed;
+  class Recording final : public Executor {
+   public:
+    Recording(Executor& inner, std::vector<int>& seen) : inner_(inner), seen_(seen) {}
+    void Compute(const Plan& p, const std::vector<int>& chunks, int threads, const ChunkDone& done) override {
+      seen_ = chunks;
+      inner_.Compute(p, chunks, threads, done);
+    }
+
+   private:
+    Executor& inner_;
+    std::vector<int>& seen_;
+  } recording(executor, computed);
+  const ExperimentAttempts resumed = RunPlan(plan, recording, {2, &store, nullptr}).front();
+  EXPECT_EQ(computed.size(), plan.chunks().size() - 2);
+  EXPECT_EQ(std::count(computed.begin(), computed.end(), 5), 0);
+  EXPECT_EQ(resumed.lines, RunPlan(plan, executor, {1, nullptr, nullptr}).front().lines);
+  store.Remove();
+  EXPECT_FALSE(std::filesystem::exists(dir.path() / "results.chunks"));
+}
+
+TEST(ChunkStore, OverwriteDiscardsAndATornStartIsNoStore) {
+  const testing::TempDir dir("chunk_store_overwrite");
+  const std::filesystem::path out = dir.path() / "results";
+  const Plan plan({SmallTable()});
+  {
+    ChunkStore store(out, plan, Mode::kFresh);
+    store.Save(1, "not a chunk");
+  }
+  EXPECT_THROW(ChunkStore(out, plan, Mode::kResume), io::InputError);  // the bad chunk, named
+  ChunkStore(out, plan, Mode::kOverwrite);
+  EXPECT_FALSE(std::filesystem::exists(dir.path() / "results.chunks" / "chunk-000001.csv"));
+  // Killed between creating the folder and writing its plan: nothing to keep, a fresh start.
+  std::filesystem::remove(dir.path() / "results.chunks" / "plan.csv");
+  EXPECT_NO_THROW(ChunkStore(out, plan, Mode::kFresh));
+}
+
+}  // namespace
+}  // namespace anchorbench::work

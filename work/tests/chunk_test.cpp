@@ -1,0 +1,81 @@
+#include "anchorbench/work/chunk.hpp"
+
+#include <sstream>
+
+#include <gtest/gtest.h>
+
+#include "anchorbench/io/input_error.hpp"
+#include "anchorbench/report/run_outputs.hpp"
+#include "anchorbench/runner/monte_carlo.hpp"
+#include "anchorbench/testing/parts.hpp"
+#include "anchorbench/testing/small_table.hpp"
+#include "anchorbench/work/run_plan.hpp"
+
+namespace anchorbench::work {
+namespace {
+
+using testing::Parts;
+using testing::SmallTable;
+
+std::string AttemptsCsv(const std::vector<runner::Attempt>& attempts, const std::vector<runner::RowConfig>& rows) {
+  std::ostringstream csv;
+  report::WriteAttempts(csv, attempts, rows);
+  return csv.str();
+}
+
+// Chunk by chunk on any thread count, the run is the runner's whole run, byte for byte.
+TEST(RunPlan, IsTheWholeRunForAnyThreadCount) {
+  const runner::ExperimentConfig config = SmallTable();
+  const std::vector<runner::RowConfig> rows = runner::RowsOf(config);
+  const std::string whole = AttemptsCsv(runner::RunMonteCarlo(config, Parts(), {1, nullptr, {}}), rows);
+  const Plan plan({config});
+  LocalExecutor executor(Parts());
+  for (int threads : {1, 2, 3}) {
+    long long last_done = -1;
+    const ExperimentAttempts run =
+        RunPlan(plan, executor, {threads, nullptr, [&](long long done, long long total) {
+                                   EXPECT_GT(done, last_done);
+                                   EXPECT_EQ(total, plan.units());
+                                   last_done = done;
+                                 }})
+            .front();
+    EXPECT_EQ(last_done, plan.units());
+    EXPECT_EQ(AttemptsCsv(run.attempts, rows), whole) << threads << " threads";
+    std::ostringstream from_lines;
+    report::WriteAttemptLines(from_lines, run.lines);
+    EXPECT_EQ(from_lines.str(), whole);
+  }
+}
+
+// A chunk's text reads back to its lines and what the summaries use, compute_s included.
+TEST(Chunk, ItsTextReadsBackToTheSameLines) {
+  const Plan plan({SmallTable()});
+  std::vector<estimator::RangeSample> samples;
+  const ChunkResult computed = ComputeChunk(plan, 3, Parts(), samples);
+  ASSERT_FALSE(computed.attempts.empty());
+  const ChunkResult read = ParseChunk(plan, 3, ChunkText(computed), "chunk 3");
+  EXPECT_EQ(read.lines, computed.lines);
+  ASSERT_EQ(read.attempts.size(), computed.attempts.size());
+  for (std::size_t i = 0; i < read.attempts.size(); ++i) {
+    EXPECT_EQ(read.attempts[i].row, computed.attempts[i].row);
+    EXPECT_EQ(read.attempts[i].realization, computed.attempts[i].realization);
+    EXPECT_EQ(read.attempts[i].compute_s, computed.attempts[i].compute_s);
+    EXPECT_EQ(read.attempts[i].t_init_s, computed.attempts[i].t_init_s);
+  }
+}
+
+// A chunk cut short, one given for another, or one with a line too many is refused.
+TEST(Chunk, ACutForeignOrLongChunkIsRefused) {
+  const Plan plan({SmallTable()});
+  std::vector<estimator::RangeSample> samples;
+  const std::string text = ChunkText(ComputeChunk(plan, 3, Parts(), samples));
+  const std::string cut = text.substr(0, text.rfind('\n', text.size() - 2) + 1);
+  EXPECT_THROW(ParseChunk(plan, 3, cut, "cut"), io::InputError);
+  EXPECT_THROW(ParseChunk(plan, 4, text, "foreign"), io::InputError);
+  const std::string last_line = text.substr(cut.size());
+  EXPECT_THROW(ParseChunk(plan, 3, text + last_line, "long"), io::InputError);
+  EXPECT_NO_THROW(ParseChunk(plan, 3, text, "whole"));
+}
+
+}  // namespace
+}  // namespace anchorbench::work
