@@ -57,11 +57,14 @@ void AddMonteCarloOptions(CLI::App* cmd, app::MonteCarloArgs& args, bool realiza
   cmd->add_flag("--overwrite", args.overwrite, "Replace an output folder that holds earlier results");
 }
 
-// run and sweep keep finished chunks in <out>.chunks/ until their results are written.
-void AddResumeOption(CLI::App* cmd, app::MonteCarloArgs& args) {
+// run and sweep: finished chunks kept in <out>.chunks/ until the results are written, and shards.
+void AddChunkOptions(CLI::App* cmd, app::MonteCarloArgs& args) {
   cmd->add_flag("--resume", args.resume,
                 "Continue an interrupted run from <out>.chunks/ (its finished chunks are kept); the results are "
                 "byte-identical to an uninterrupted run's");
+  cmd->add_option("--shard", args.shard,
+                  "I/N: compute only shard I of N of the chunks into a shard folder; `anchorbench merge` joins the N "
+                  "folders (docs/cluster.md)");
 }
 
 constexpr long long kMaxSeed = std::numeric_limits<long long>::max();
@@ -136,16 +139,13 @@ void AddMonteCarloCommands(CLI::App& cli, CommandLine& c) {
   c.run_cmd = cli.add_subcommand("run", "Monte Carlo: every row x realization x anchor x trigger (estimator.triggers)");
   c.run_cmd->add_option("config", c.run.config, "Experiment config (YAML) with rows")->required();
   AddMonteCarloOptions(c.run_cmd, c.run);
-  AddResumeOption(c.run_cmd, c.run);
+  AddChunkOptions(c.run_cmd, c.run);
   c.run_cmd->add_option("--seed", c.run.seed, "Override the config's seed")->check(WholeNumber(0, kMaxSeed));
   c.run_cmd->add_option("--set", c.run.overrides, "Override a config value: KEY=VALUE, KEY a dotted path (repeatable)");
-  c.run_cmd->add_option("--shard", c.run.shard,
-                        "I/N: run only shard I of N of the (row, realization) units into a shard folder; "
-                        "`anchorbench merge` joins the N folders (docs/cluster.md)");
 
-  c.merge_cmd = cli.add_subcommand("merge", "Join the shard folders of one run into the single run's results");
+  c.merge_cmd = cli.add_subcommand("merge", "Join the shard folders of one run or sweep into its single results");
   c.merge_cmd->add_option("out", c.merge.out, "Output folder")->required();
-  c.merge_cmd->add_option("shards", c.merge.shards, "Every shard folder of the run (run --shard I/N), any order")
+  c.merge_cmd->add_option("shards", c.merge.shards, "Every shard folder of the run or sweep (--shard I/N), any order")
       ->required();
   c.merge_cmd->add_flag("--overwrite", c.merge.overwrite, "Replace an output folder that holds earlier results");
   c.merge_cmd->add_flag("--quiet", c.merge.quiet, "Do not print the table");
@@ -155,7 +155,7 @@ void AddMonteCarloCommands(CLI::App& cli, CommandLine& c) {
   c.sweep_cmd->add_option("--set", c.sweep.axes,
                           "An axis: KEY=VALUES, a list a,b,c or a range start:stop:step (repeatable)");
   AddMonteCarloOptions(c.sweep_cmd, c.sweep);
-  AddResumeOption(c.sweep_cmd, c.sweep);
+  AddChunkOptions(c.sweep_cmd, c.sweep);
 
   c.study_cmd = cli.add_subcommand("pdop-study",
                                    "Closest-point, LS, NLS and true PDOP side by side along random runs (Figs. 6-8)");

@@ -37,7 +37,7 @@ std::vector<PaperCell> RunCells(const runner::CalibrationSpec& spec, std::vector
   runner::CheckWork(config);
   runner::CheckRows(rows, app.parts);
   const work::Plan plan({config});
-  const std::vector<runner::Attempt> attempts = work::RunPlan(plan, app.executor, {threads, nullptr, nullptr}).front().attempts;
+  const std::vector<runner::Attempt> attempts = work::RunWholePlan(plan, app.executor, threads).front().attempts;
   return report::CompareWithPaper(
       report::Summarize(attempts, rows, config.realizations, config.bootstrap_resamples, config.seed), rows);
 }

@@ -51,12 +51,12 @@ struct MonteCarloArgs {
   bool quiet = false;
   bool overwrite = false;  // replace a folder holding earlier results
   bool resume = false;     // run, sweep: continue from <out>.chunks/ (work/chunk_store.hpp)
+  std::string shard;       // run, sweep: "I/N", this share of the chunks into a shard folder
 };
 
 struct RunArgs : MonteCarloArgs {
   std::optional<std::uint64_t> seed;
   std::vector<std::string> overrides;  // --set KEY=VALUE
-  std::string shard;                   // "I/N": this share of the units, into a shard folder
 };
 int RunCommand(const RunArgs& args, const AppContext& app);
 
@@ -71,7 +71,7 @@ struct PdopStudyArgs : MonteCarloArgs {
 };
 int PdopStudyCommand(const PdopStudyArgs& args, const AppContext& app);
 
-// Joins the shard folders of one run (run --shard I/N, every I) into the single run's folder.
+// Joins the shard folders of one run or sweep (--shard I/N, every I) into its single folder.
 struct MergeArgs {
   std::string out;
   std::vector<std::string> shards;

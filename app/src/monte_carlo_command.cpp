@@ -1,9 +1,11 @@
 #include "monte_carlo_command.hpp"
 
+#include <filesystem>
 #include <sstream>
 
 #include "anchorbench/config/load_config.hpp"
 #include "anchorbench/report/summary.hpp"
+#include "anchorbench/report/sweep_report.hpp"
 #include "anchorbench/runner/monte_carlo.hpp"
 
 namespace anchorbench::app {
@@ -24,21 +26,86 @@ std::unique_ptr<io::ResultFolder> OpenResultFolder(const MonteCarloArgs& args, c
   return std::make_unique<io::ResultFolder>(setup.out, options);
 }
 
+namespace {
+
 work::ChunkStore::Mode StoreMode(const MonteCarloArgs& args) {
   if (args.resume) return work::ChunkStore::Mode::kResume;
   return args.overwrite ? work::ChunkStore::Mode::kOverwrite : work::ChunkStore::Mode::kFresh;
 }
 
-std::string WriteRunTables(io::ResultFolder& out, const std::vector<runner::Attempt>& attempts,
-                           const std::vector<runner::RowConfig>& rows, const runner::ExperimentConfig& config) {
+}  // namespace
+
+std::optional<std::vector<work::ExperimentAttempts>> ComputePlan(const MonteCarloArgs& args, const MonteCarloSetup& setup,
+                                                                 const PlanJob& job, const AppContext& app,
+                                                                 io::ResultFolder& out, double& wall_time_s) {
+  const std::optional<work::Shard> shard =
+      job.shard.empty() ? std::nullopt : std::optional(work::ParseShard(job.shard, "--shard"));
+  work::ChunkStore store(out.target(), job.plan, StoreMode(args));
+  Progress progress(job.label, args.quiet);
+  long long units = 0;
+  std::map<int, work::ChunkResult> chunks =
+      work::RunPlan(job.plan, app.executor,
+                    {setup.threads, &store, [&](long long done, long long total) { progress.Update(done, units = total); },
+                     shard.value_or(work::Shard{})});
+  wall_time_s = progress.elapsed_s();
+  progress.Finish(units);
+  if (!shard) return work::Join(job.plan, chunks);
+  work::ShardInfo info = job.shard_info;
+  info.shard = *shard;
+  info.chunks = static_cast<int>(chunks.size());
+  info.plan = job.plan.identity();
+  info.revision = app.revision;
+  work::WriteShardFolder([&](const std::string& name, const std::string& text) { out.Write(name, text); }, info,
+                         job.shard_inputs, chunks);
+  out.Commit();
+  store.Remove();
+  return std::nullopt;
+}
+
+void RemoveStore(const io::ResultFolder& out) {
+  std::error_code error;
+  std::filesystem::remove_all(work::ChunkStorePath(out.target()), error);
+}
+
+std::string CommitRun(io::ResultFolder& out, const runner::ExperimentConfig& config,
+                      const work::ExperimentAttempts& run, const report::RunInfo& info) {
+  const std::vector<runner::RowConfig> rows = runner::RowsOf(config);
+  // Every file into the new folder, then the folder in place: an error leaves the old results intact.
+  out.Write("attempts.csv", [&](std::ostream& file) { report::WriteAttemptLines(file, run.lines); });
   const std::vector<report::MethodSummary> summaries =
-      report::Summarize(attempts, rows, config.realizations, config.bootstrap_resamples, config.seed);
+      report::Summarize(run.attempts, rows, config.realizations, config.bootstrap_resamples, config.seed);
   out.Write("summary.csv", [&](std::ostream& file) { report::WriteSummaryCsv(file, summaries, rows); });
   std::ostringstream markdown;
   report::WriteSummaryMarkdown(markdown, summaries, rows, config);
   out.Write("summary.md", markdown.str());
   out.Write("timing.csv", [&](std::ostream& file) { report::WriteTimingCsv(file, summaries, rows); });
+  out.Write("manifest.json", report::ManifestJson(config, info));
+  out.Commit();
   return markdown.str();
+}
+
+std::string CommitSweep(io::ResultFolder& out, const std::string& name, const std::vector<runner::SweepAxis>& axes,
+                        const work::Plan& plan, const std::vector<work::ExperimentAttempts>& points,
+                        report::RunInfo info) {
+  const std::vector<runner::SweepPoint> grid = runner::SweepGrid(axes);
+  std::vector<report::SweepPointResult> results;
+  for (std::size_t p = 0; p < grid.size(); ++p) {
+    const runner::ExperimentConfig& config = plan.experiments()[p];
+    report::SweepPointResult result{grid[p], plan.rows(static_cast<int>(p)), {}};
+    result.summaries =
+        report::Summarize(points[p].attempts, result.rows, config.realizations, config.bootstrap_resamples, config.seed);
+    results.push_back(std::move(result));
+  }
+  const runner::ExperimentConfig& first = plan.experiments().front();
+  out.Write("sweep.csv", [&](std::ostream& file) { report::WriteSweepCsv(file, axes, results); });
+  out.Write("timing.csv", [&](std::ostream& file) { report::WriteSweepTiming(file, axes, results); });
+  std::ostringstream md;
+  report::WriteSweepMarkdown(md, name, first.realizations, first.seed, axes, results);
+  out.Write("sweep.md", md.str());
+  info.sweep_axes = runner::DescribeAxes(axes);
+  out.Write("manifest.json", report::ManifestJson(first, info));
+  out.Commit();
+  return md.str();
 }
 
 report::RunInfo RunInfoOf(const MonteCarloArgs& args, const MonteCarloSetup& setup, const AppContext& app,

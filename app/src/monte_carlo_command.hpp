@@ -4,13 +4,16 @@
 
 #include <filesystem>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "anchorbench/io/result_folder.hpp"
 #include "anchorbench/report/run_outputs.hpp"
 #include "anchorbench/runner/experiment.hpp"
-#include "anchorbench/work/chunk_store.hpp"
+#include "anchorbench/runner/sweep.hpp"
+#include "anchorbench/work/run_plan.hpp"
+#include "anchorbench/work/shard_folder.hpp"
 #include "commands.hpp"
 #include "progress.hpp"
 
@@ -28,14 +31,34 @@ MonteCarloSetup SetUpMonteCarlo(const MonteCarloArgs& args, const std::string& c
 std::unique_ptr<io::ResultFolder> OpenResultFolder(const MonteCarloArgs& args, const MonteCarloSetup& setup,
                                                   std::uintmax_t expected_bytes);
 
-// Where run and sweep keep finished chunks: --resume takes them, --overwrite discards them, and
-// otherwise an interrupted run's store is refused.
-work::ChunkStore::Mode StoreMode(const MonteCarloArgs& args);
+// What run and sweep share once their plan is made. `shard` ("I/N" or empty) and the inputs a
+// shard folder records; `label` names the progress line.
+struct PlanJob {
+  const work::Plan& plan;
+  std::string label;
+  std::string shard;
+  work::ShardInfo shard_info;  // command and name; the rest is filled in
+  work::ShardInputs shard_inputs;
+};
+// Computes the job's chunks (all, or the shard's) into the chunk store beside `out` (--resume
+// takes its chunks, --overwrite discards them, an interrupted store is otherwise refused), with
+// progress. A shard's chunks become its shard folder, committed here (returns nothing); a whole
+// plan's are returned joined for the command to commit, after which RemoveStore(out).
+std::optional<std::vector<work::ExperimentAttempts>> ComputePlan(const MonteCarloArgs& args, const MonteCarloSetup& setup,
+                                                                 const PlanJob& job, const AppContext& app,
+                                                                 io::ResultFolder& out, double& wall_time_s);
+void RemoveStore(const io::ResultFolder& out);
 
-// A run's summary tables from its attempts (run and merge write the same): summary.csv,
-// summary.md and timing.csv into `out`; returns summary.md's text.
-std::string WriteRunTables(io::ResultFolder& out, const std::vector<runner::Attempt>& attempts,
-                           const std::vector<runner::RowConfig>& rows, const runner::ExperimentConfig& config);
+// A run's results from its attempts (run and merge write the same): attempts.csv, summary.csv,
+// summary.md, timing.csv and manifest.json into `out`, committed; returns summary.md's text.
+std::string CommitRun(io::ResultFolder& out, const runner::ExperimentConfig& config,
+                      const work::ExperimentAttempts& run, const report::RunInfo& info);
+
+// A sweep's results (sweep and merge): sweep.csv, timing.csv, sweep.md and manifest.json, committed;
+// returns sweep.md's text. `plan` holds one experiment per grid point of `axes`.
+std::string CommitSweep(io::ResultFolder& out, const std::string& name, const std::vector<runner::SweepAxis>& axes,
+                        const work::Plan& plan, const std::vector<work::ExperimentAttempts>& points,
+                        report::RunInfo info);
 
 // The manifest's record: the command line's changes (--realizations and any `more`), threads,
 // wall time, revision and the resolved config.

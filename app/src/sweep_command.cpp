@@ -1,14 +1,10 @@
 #include <iostream>
-#include <sstream>
 
 #include "anchorbench/config/load_config.hpp"
 #include "anchorbench/io/result_folder.hpp"
 #include "anchorbench/io/input_error.hpp"
-#include "anchorbench/report/summary.hpp"
-#include "anchorbench/report/sweep_report.hpp"
 #include "anchorbench/runner/monte_carlo.hpp"
 #include "anchorbench/runner/sweep.hpp"
-#include "anchorbench/work/run_plan.hpp"
 #include "monte_carlo_command.hpp"
 
 namespace anchorbench::app {
@@ -44,35 +40,24 @@ int SweepCommand(const SweepArgs& args, const AppContext& app) {
   }
   const std::unique_ptr<io::ResultFolder> out = OpenResultFolder(args, setup, 600 * lines + (1 << 16));
   const work::Plan plan(configs);
-  work::ChunkStore store(setup.out, plan, StoreMode(args));
-
-  Progress progress("sweep " + base.name, args.quiet);
-  std::vector<work::ExperimentAttempts> points = work::RunPlan(
-      plan, app.executor, {setup.threads, &store, [&](long long done, long long total) { progress.Update(done, total); }});
-  std::vector<report::SweepPointResult> results;
-  for (std::size_t p = 0; p < configs.size(); ++p) {
-    const runner::ExperimentConfig& config = configs[p];
-    report::SweepPointResult result{grid[p], plan.rows(static_cast<int>(p)), {}};
-    result.summaries =
-        report::Summarize(points[p].attempts, result.rows, config.realizations, config.bootstrap_resamples, config.seed);
-    results.push_back(std::move(result));
+  runner::ExperimentConfig resolved = base;
+  if (args.realizations) resolved.realizations = *args.realizations;
+  const work::ShardInputs inputs{config::ToYaml(resolved), axes};
+  if (!args.shard.empty() && work::RebuildPlan(inputs, app.parts).identity() != plan.identity()) {
+    throw io::InputError(args.config + ": this sweep does not rebuild from its config and axes (an axis on "
+                         "'realizations' with --realizations?): it cannot be sharded");
   }
-  const double wall_time_s = progress.elapsed_s();
-  progress.Finish(plan.units());
 
-  out->Write("sweep.csv", [&](std::ostream& file) { report::WriteSweepCsv(file, axes, results); });
-  out->Write("timing.csv", [&](std::ostream& file) { report::WriteSweepTiming(file, axes, results); });
-  std::ostringstream md;
-  report::WriteSweepMarkdown(md, base.name, configs.front().realizations, configs.front().seed, axes, results);
-  out->Write("sweep.md", md.str());
+  double wall_time_s = 0.0;
+  const PlanJob job{plan, "sweep " + base.name, args.shard, {{}, 0, "sweep", base.name, "", ""}, inputs};
+  const auto points = ComputePlan(args, setup, job, app, *out, wall_time_s);
+  if (!points) return 0;  // a shard: its folder is written
   std::vector<std::string> command_line;
   for (const std::string& axis : args.axes) command_line.push_back("--set " + axis);
-  report::RunInfo info = RunInfoOf(args, setup, app, base, wall_time_s, command_line);
-  info.sweep_axes = runner::DescribeAxes(axes);
-  out->Write("manifest.json", report::ManifestJson(configs.front(), info));
-  out->Commit();
-  store.Remove();
-  if (!args.quiet) std::cout << md.str();
+  const std::string markdown =
+      CommitSweep(*out, base.name, axes, plan, *points, RunInfoOf(args, setup, app, base, wall_time_s, command_line));
+  RemoveStore(*out);
+  if (!args.quiet) std::cout << markdown;
   return 0;
 }
 

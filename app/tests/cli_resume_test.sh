@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Resume (issue 15): a run or sweep killed with SIGKILL at any moment keeps its finished chunks in
+# Resume (issue 15): a run, sweep or shard killed with SIGKILL at any moment keeps its finished chunks in
 # <out>.chunks/, leaves no result folder, and with --resume ends in the bytes of an uninterrupted
 # run; a store of another run, or one left without --resume, is refused with the way out.
 # Arguments: the anchorbench executable, the configs folder.
@@ -50,10 +50,16 @@ refused "another run's store with --resume" "holds chunks of another run" \
   "$dir/left" "$bin" run "$table" --realizations 60 --seed 9 --out "$dir/left" --resume
 refused "finished results without --overwrite" "--overwrite" "$dir/whole/never" \
   "$bin" run "$table" --realizations 60 --out "$dir/whole" --resume
-refused "--resume with --shard" "a shard is redone whole" "$dir/shard" \
-  "$bin" run "$table" --shard 0/2 --out "$dir/shard" --resume
 "$bin" run "$table" --realizations 60 --seed 9 --out "$dir/left" --quiet --overwrite || fail "--overwrite"
 [ -e "$dir/left.chunks" ] && fail "--overwrite left the old store"
+
+# A shard resumes like a run: killed, resumed, merged with its sibling, the whole run's bytes.
+kill_after 0.5 "$dir/shard0" "$bin" run "$table" --realizations 60 --shard 0/2 --out "$dir/shard0" --threads 2
+"$bin" run "$table" --realizations 60 --shard 0/2 --out "$dir/shard0" --quiet --resume || fail "resumed shard"
+"$bin" run "$table" --realizations 60 --shard 1/2 --out "$dir/shard1" --quiet || fail "shard 1/2"
+"$bin" merge "$dir/merged" "$dir/shard1" "$dir/shard0" --quiet || fail "merge"
+cmp -s "$dir/whole/attempts.csv" "$dir/merged/attempts.csv" || fail "a resumed shard merged: attempts.csv differs"
+echo "ok: a killed shard resumed merges to the whole run's bytes"
 
 [ "$failures" -eq 0 ] || { echo "$failures failure(s)"; exit 1; }
 echo "all resume cases passed"

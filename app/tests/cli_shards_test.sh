@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
-# Shards and merge (issue 15): `run --shard I/N` for every I, then `merge`, writes the bytes of the
-# single-process run, for any N and thread count; missing, duplicated or mismatched shards are one
-# clear error with nothing written.
+# Shards and merge (issue 15): `run|sweep --shard I/N` for every I, then `merge`, writes the bytes
+# of the single-process run or sweep, for any N and thread count; missing, duplicated or
+# mismatched shards are one clear error with nothing written.
 # shellcheck source=common.sh
 source "$(dirname "$0")/common.sh"
 
@@ -35,12 +35,31 @@ expect_refusal "a duplicated shard" "is given twice" "$dir/s3-0" "$dir/s3-0" "$d
 expect_refusal "shards of different splits" "is of another run" "$dir/s3-0" "$dir/s5-1" "$dir/s3-2"
 "$bin" run "$dir/small.yaml" --shard 1/3 --seed 6 --out "$dir/other_seed" --quiet || fail "run seed 6"
 expect_refusal "a shard of another config" "is of another run" "$dir/s3-0" "$dir/other_seed" "$dir/s3-2"
-printf '# edited\n' >>"$dir/s3-1/config.yaml"
-expect_refusal "an edited config" "does not match its shard.csv's config_hash" "$dir/s3-0" "$dir/s3-1" "$dir/s3-2"
-for file in attempts.csv compute_s.csv; do  # a unit's lines cut off, as by hand
-  head -n 3 "$dir/s5-2/$file" >"$dir/cut.csv" && mv "$dir/cut.csv" "$dir/s5-2/$file"
+sed -i 's/^seed: 5$/seed: 6/' "$dir/s3-0/config.yaml"
+expect_refusal "an edited config" "(edited after the run?)" "$dir/s3-0" "$dir/s3-1" "$dir/s3-2"
+rm "$dir/s5-2/chunk-000002.csv"
+expect_refusal "a shard with a chunk missing" "chunk-000002.csv: missing; shard 2/5 holds it" \
+  "$dir/s5-0" "$dir/s5-1" "$dir/s5-2" "$dir/s5-3" "$dir/s5-4"
+head -n 3 "$dir/s5-3/chunk-000003.csv" >"$dir/cut.csv" && mv "$dir/cut.csv" "$dir/s5-3/chunk-000003.csv"
+expect_refusal "a chunk cut short" "chunk-000003.csv: ends within unit" \
+  "$dir/s5-0" "$dir/s5-1" "$dir/s5-3" "$dir/s5-2" "$dir/s5-4"
+# A sweep's shards merge to the sweep's bytes.
+axis="estimator.trigger.pdop_threshold=0.5,1,2"
+"$bin" sweep "$dir/small.yaml" --set "$axis" --out "$dir/sweep" --quiet || fail "sweep"
+for n in 3 7; do
+  shards=()
+  for ((i = 0; i < n; i++)); do
+    "$bin" sweep "$dir/small.yaml" --set "$axis" --shard "$i/$n" --out "$dir/w$n-$i" --quiet || fail "sweep shard $i/$n"
+    shards+=("$dir/w$n-$i")
+  done
+  "$bin" merge "$dir/sweep_merged$n" "${shards[@]}" --quiet || fail "merge of $n sweep shards"
+  for file in sweep.csv sweep.md; do
+    cmp -s "$dir/sweep/$file" "$dir/sweep_merged$n/$file" || fail "$n sweep shards: merged $file differs"
+  done
+  echo "ok: $n sweep shards merge to the sweep's bytes"
 done
-expect_refusal "a shard with units missing" "units, shard.csv says" "$dir/s5-0" "$dir/s5-1" "$dir/s5-2" "$dir/s5-3" "$dir/s5-4"
+expect_refusal "a run's and a sweep's shards" "is of another run" "$dir/w3-0" "$dir/s3-1" "$dir/s3-2"
+
 refused "a shard index out of range" "'3/3' is not a shard I/N" "$dir/bad" "$bin" run "$dir/small.yaml" --shard 3/3 --out "$dir/bad"
 refused "a shard that is not I/N" "'x' is not a shard I/N" "$dir/bad" "$bin" run "$dir/small.yaml" --shard x --out "$dir/bad"
 

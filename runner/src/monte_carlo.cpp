@@ -142,11 +142,7 @@ std::vector<Attempt> RunMonteCarlo(const ExperimentConfig& config, const registr
   CheckWork(config);
   CheckRows(rows, components);
   const int realizations = config.realizations;
-  std::vector<int> units;  // this shard's (row, realization) units, in order
-  for (int unit = 0; unit < static_cast<int>(rows.size()) * realizations; ++unit) {
-    if (options.shard.Holds(unit)) units.push_back(unit);
-  }
-  const int tasks = static_cast<int>(units.size());
+  const int tasks = static_cast<int>(rows.size()) * realizations;
   std::vector<std::vector<Attempt>> per_task(static_cast<std::size_t>(tasks));
   std::vector<std::exception_ptr> errors(static_cast<std::size_t>(tasks));
   int done = 0;
@@ -158,11 +154,10 @@ std::vector<Attempt> RunMonteCarlo(const ExperimentConfig& config, const registr
     std::vector<estimator::RangeSample> samples;
 #pragma omp for schedule(dynamic, 1)
     for (int task = 0; task < tasks; ++task) {
-      const int unit = units[static_cast<std::size_t>(task)];
-      const int row = unit / realizations;
+      const int row = task / realizations;
       try {  // an exception must not leave the parallel region (std::terminate)
         per_task[static_cast<std::size_t>(task)] = RunRealization(rows[static_cast<std::size_t>(row)], row, config.seed,
-                                                                  unit % realizations, components, samples);
+                                                                  task % realizations, components, samples);
       } catch (...) {
         errors[static_cast<std::size_t>(task)] = std::current_exception();
       }

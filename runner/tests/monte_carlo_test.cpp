@@ -17,10 +17,10 @@ using anchorbench::testing::Parts;
 using anchorbench::testing::SmallTable;
 
 // Every deterministic field of every attempt, doubles to the last bit.
-std::string Outputs(const ExperimentConfig& config, int threads, Shard shard = {}) {
+std::string Outputs(const ExperimentConfig& config, int threads) {
   std::ostringstream out;
   out << std::hexfloat;
-  for (const Attempt& a : RunMonteCarlo(config, Parts(), {threads, nullptr, shard})) {
+  for (const Attempt& a : RunMonteCarlo(config, Parts(), {threads, nullptr})) {
     out << a.row << ' ' << a.realization << ' ' << a.anchor_id << ' ' << a.method << ' ' << a.initialized << ' '
         << a.t_init_s.value_or(-1.0) << ' ' << a.n_used << ' ' << a.pdop_estimate << ' ' << a.status;
     if (a.solve) out << ' ' << a.solve->p_world_anchor.transpose() << ' ' << a.solve->bias_m << ' ' << a.solve->alpha;
@@ -40,42 +40,6 @@ TEST(MonteCarlo, BitIdenticalForAnyThreadCount) {
   EXPECT_EQ(one, Outputs(config, 3));  // more threads than cores, uneven split
 }
 
-// The shards of a run hold its units round robin; their attempts, put back in unit order, are the
-// whole run's to the last bit (the merge command relies on it).
-TEST(MonteCarlo, ShardsHoldEveryUnitOnceAndRepeatTheWholeRun) {
-  const ExperimentConfig config = SmallTable();  // 2 rows x 6 realizations = 12 units
-  std::istringstream whole(Outputs(config, 2));
-  std::vector<std::string> lines;
-  for (std::string line; std::getline(whole, line);) lines.push_back(line);
-  const std::size_t per_unit = lines.size() / 12;
-  for (int count : {1, 5, 12, 13}) {
-    std::vector<std::string> joined(lines.size());
-    int units = 0;
-    for (int index = 0; index < count; ++index) {
-      const Shard shard{index, count};
-      units += shard.UnitsOf(12);
-      std::istringstream part(Outputs(config, 1 + index % 2, shard));
-      std::string line;
-      for (int unit = 0; unit < 12; ++unit) {
-        if (!shard.Holds(unit)) continue;
-        for (std::size_t k = 0; k < per_unit && std::getline(part, line); ++k) joined[unit * per_unit + k] = line;
-      }
-      EXPECT_FALSE(std::getline(part, line)) << "shard " << index << "/" << count << " ran more than its units";
-    }
-    EXPECT_EQ(units, 12);
-    EXPECT_EQ(joined, lines) << count << " shards";
-  }
-}
-
-TEST(MonteCarlo, ShardsAreParsedStrictly) {
-  EXPECT_EQ(ParseShard("2/5", "--shard").index, 2);
-  EXPECT_EQ(ParseShard("2/5", "--shard").count, 5);
-  for (const char* bad : {"5/5", "-1/3", "1/0", "x", "1/", "/2", "1/2/3", "1 /2"}) {
-    EXPECT_THROW(ParseShard(bad, "--shard"), io::InputError) << bad;
-  }
-}
-
-// Every trigger and filter on the same trials, with RANSAC and a stochastic part seeded per anchor.
 TEST(MonteCarlo, AllTriggersAndFiltersAreBitIdenticalForAnyThreadCount) {
   ExperimentConfig config = SmallTable();
   config.realizations = 3;

@@ -1,11 +1,12 @@
 #include "anchorbench/work/chunk.hpp"
 
+#include <cstdio>
 #include <sstream>
 
 #include "anchorbench/io/format.hpp"
 #include "anchorbench/io/input_error.hpp"
 #include "anchorbench/report/run_outputs.hpp"
-#include "anchorbench/report/shard_files.hpp"
+#include "anchorbench/report/attempts_file.hpp"
 #include "anchorbench/runner/monte_carlo.hpp"
 
 namespace anchorbench::work {
@@ -38,6 +39,12 @@ ChunkResult ComputeChunk(const Plan& plan, int chunk, const registry::Components
   std::getline(lines, line);  // the header
   while (std::getline(lines, line)) result.lines.push_back(line);
   return result;
+}
+
+std::string ChunkFileName(int chunk) {
+  char name[32];
+  std::snprintf(name, sizeof(name), "chunk-%06d.csv", chunk);
+  return name;
 }
 
 std::string ChunkText(const ChunkResult& result) {

@@ -1,6 +1,5 @@
 #include "anchorbench/work/chunk_store.hpp"
 
-#include <cstdio>
 #include <fstream>
 #include <system_error>
 
@@ -90,9 +89,7 @@ void ChunkStore::Remove() {
 }
 
 fs::path ChunkStore::ChunkPath(int chunk) const {
-  char name[32];
-  std::snprintf(name, sizeof(name), "chunk-%06d.csv", chunk);
-  return folder_ / name;
+  return folder_ / ChunkFileName(chunk);
 }
 
 }  // namespace anchorbench::work

@@ -58,10 +58,11 @@ TEST(ChunkStore, ResumesItsOwnPlanAndRefusesAnother) {
     Executor& inner_;
     std::vector<int>& seen_;
   } recording(executor, computed);
-  const ExperimentAttempts resumed = RunPlan(plan, recording, {2, &store, nullptr}).front();
+  std::map<int, ChunkResult> chunks = RunPlan(plan, recording, {2, &store, nullptr});
+  const ExperimentAttempts resumed = Join(plan, chunks).front();
   EXPECT_EQ(computed.size(), plan.chunks().size() - 2);
   EXPECT_EQ(std::count(computed.begin(), computed.end(), 5), 0);
-  EXPECT_EQ(resumed.lines, RunPlan(plan, executor, {1, nullptr, nullptr}).front().lines);
+  EXPECT_EQ(resumed.lines, RunWholePlan(plan, executor, 1).front().lines);
   store.Remove();
   EXPECT_FALSE(std::filesystem::exists(dir.path() / "results.chunks"));
 }

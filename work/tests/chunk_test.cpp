@@ -27,18 +27,18 @@ std::string AttemptsCsv(const std::vector<runner::Attempt>& attempts, const std:
 TEST(RunPlan, IsTheWholeRunForAnyThreadCount) {
   const runner::ExperimentConfig config = SmallTable();
   const std::vector<runner::RowConfig> rows = runner::RowsOf(config);
-  const std::string whole = AttemptsCsv(runner::RunMonteCarlo(config, Parts(), {1, nullptr, {}}), rows);
+  const std::string whole = AttemptsCsv(runner::RunMonteCarlo(config, Parts(), {1, nullptr}), rows);
   const Plan plan({config});
   LocalExecutor executor(Parts());
   for (int threads : {1, 2, 3}) {
     long long last_done = -1;
-    const ExperimentAttempts run =
+    std::map<int, ChunkResult> chunks =
         RunPlan(plan, executor, {threads, nullptr, [&](long long done, long long total) {
                                    EXPECT_GT(done, last_done);
                                    EXPECT_EQ(total, plan.units());
                                    last_done = done;
-                                 }})
-            .front();
+                                 }});
+    const ExperimentAttempts run = Join(plan, chunks).front();
     EXPECT_EQ(last_done, plan.units());
     EXPECT_EQ(AttemptsCsv(run.attempts, rows), whole) << threads << " threads";
     std::ostringstream from_lines;
@@ -75,6 +75,33 @@ TEST(Chunk, ACutForeignOrLongChunkIsRefused) {
   const std::string last_line = text.substr(cut.size());
   EXPECT_THROW(ParseChunk(plan, 3, text + last_line, "long"), io::InputError);
   EXPECT_NO_THROW(ParseChunk(plan, 3, text, "whole"));
+}
+
+// The shards of a plan hold its chunks round robin; joined, they are the whole run to the last
+// byte (the merge command relies on it), for more shards than chunks too.
+TEST(RunPlan, ShardsHoldEveryChunkOnceAndJoinToTheWholeRun) {
+  const Plan plan({SmallTable()});  // 12 units, 12 chunks
+  LocalExecutor executor(Parts());
+  const std::vector<std::string> whole = RunWholePlan(plan, executor, 2).front().lines;
+  for (int count : {1, 5, 12, 13}) {
+    std::map<int, ChunkResult> joined;
+    for (int index = 0; index < count; ++index) {
+      const Shard shard{index, count};
+      std::map<int, ChunkResult> part = RunPlan(plan, executor, {1 + index % 2, nullptr, nullptr, shard});
+      EXPECT_EQ(static_cast<int>(part.size()), shard.ChunksOf(static_cast<int>(plan.chunks().size())));
+      for (const auto& [chunk, result] : part) EXPECT_TRUE(shard.Holds(chunk));
+      joined.merge(part);
+    }
+    EXPECT_EQ(Join(plan, joined).front().lines, whole) << count << " shards";
+  }
+}
+
+TEST(Shard, IsParsedStrictly) {
+  EXPECT_EQ(ParseShard("2/5", "--shard").index, 2);
+  EXPECT_EQ(ParseShard("2/5", "--shard").count, 5);
+  for (const char* bad : {"5/5", "-1/3", "1/0", "x", "1/", "/2", "1/2/3", "1 /2"}) {
+    EXPECT_THROW(ParseShard(bad, "--shard"), io::InputError) << bad;
+  }
 }
 
 }  // namespace

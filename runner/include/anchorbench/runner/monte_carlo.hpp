@@ -8,7 +8,6 @@
 #include "anchorbench/registry/components.hpp"
 #include "anchorbench/runner/attempt.hpp"
 #include "anchorbench/runner/experiment.hpp"
-#include "anchorbench/runner/shard.hpp"
 
 namespace anchorbench::runner {
 
@@ -28,8 +27,6 @@ struct MonteCarloOptions {
   int threads = 1;
   // Called from one thread at a time with (tasks done, tasks total); tasks are (row, realization).
   std::function<void(int, int)> progress;
-  // Run only this shard's (row, realization) units (default: all).
-  Shard shard{};
 };
 
 // Builds every row's initializers once, on a stand-in anchor, so that what a realization would
@@ -40,8 +37,7 @@ void CheckRows(const std::vector<RowConfig>& rows, const registry::Components& c
 // Runs every row's realizations (parallel over (row, realization) with OpenMP; realization k of
 // every row uses the random streams keyed (seed, k), so rows differ only by their parameters).
 // Parts are built from `components` (the caller's registries). The result is ordered by row,
-// realization, anchor, method: identical for any thread count (and, with a shard, exactly that
-// shard's units of the whole run's attempts). An error in any task ends the run
+// realization, anchor, method: identical for any thread count. An error in any task ends the run
 // with that error (the first task's, in task order), thrown after the parallel region.
 std::vector<Attempt> RunMonteCarlo(const ExperimentConfig& config, const registry::Components& components,
                                    const MonteCarloOptions& options);

@@ -27,6 +27,9 @@ ChunkResult ComputeChunk(const Plan& plan, int chunk, const registry::Components
 // The chunk's text: attempts.csv's header and lines, each with compute_s as its last column.
 std::string ChunkText(const ChunkResult& result);
 
+// The file a chunk rests in (a chunk store's, a shard folder's): chunk-000012.csv.
+std::string ChunkFileName(int chunk);
+
 // A chunk's text read back; `source` names it in errors. Refuses (io::InputError) a text that is
 // not every attempt of exactly the chunk's units, in order (one per anchor and trigger).
 ChunkResult ParseChunk(const Plan& plan, int chunk, const std::string& text, const std::string& source);

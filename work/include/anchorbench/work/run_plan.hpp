@@ -1,8 +1,9 @@
 #pragma once
-// A plan from start to end: the chunks a store already holds, the rest computed by an executor
-// (and saved as they come), then every experiment's attempts joined in unit order.
+// A plan (or a shard of it) from start to end: the chunks a store already holds, the rest computed
+// by an executor (and saved as they come); then every experiment's attempts joined in unit order.
 
 #include <functional>
+#include <map>
 #include <string>
 #include <vector>
 
@@ -10,6 +11,7 @@
 #include "anchorbench/work/chunk_store.hpp"
 #include "anchorbench/work/executor.hpp"
 #include "anchorbench/work/plan.hpp"
+#include "anchorbench/work/shard.hpp"
 
 namespace anchorbench::work {
 
@@ -24,8 +26,16 @@ struct RunPlanOptions {
   ChunkStore* store = nullptr;      // keeps finished chunks (none: in memory only)
   // (units done, units in the plan), from one thread at a time; resumed units count as done.
   std::function<void(long long, long long)> progress;
+  Shard shard{};  // only this shard's chunks (default: all)
 };
 
-std::vector<ExperimentAttempts> RunPlan(const Plan& plan, Executor& executor, const RunPlanOptions& options);
+// The shard's chunks, by index.
+std::map<int, ChunkResult> RunPlan(const Plan& plan, Executor& executor, const RunPlanOptions& options);
+
+// Every chunk of the plan, joined per experiment (moved out of `chunks`).
+std::vector<ExperimentAttempts> Join(const Plan& plan, std::map<int, ChunkResult>& chunks);
+
+// The whole plan in memory, joined: RunPlan without a store or a shard, then Join.
+std::vector<ExperimentAttempts> RunWholePlan(const Plan& plan, Executor& executor, int threads);
 
 }  // namespace anchorbench::work

@@ -1,10 +1,10 @@
-#include "anchorbench/runner/shard.hpp"
+#include "anchorbench/work/shard.hpp"
 
 #include <charconv>
 
 #include "anchorbench/io/input_error.hpp"
 
-namespace anchorbench::runner {
+namespace anchorbench::work {
 
 Shard ParseShard(const std::string& text, const std::string& what) {
   const std::size_t slash = text.find('/');
@@ -20,4 +20,4 @@ Shard ParseShard(const std::string& text, const std::string& what) {
   return shard;
 }
 
-}  // namespace anchorbench::runner
+}  // namespace anchorbench::work

@@ -1,0 +1,29 @@
+#pragma once
+// attempts.csv read back (report::WriteAttempts' twin): what the summaries use, and each line as
+// written, so that results joined from read-back attempts (a resumed run, a merge, an MPI rank's
+// chunks) are byte for byte those of one process.
+
+#include <istream>
+#include <string>
+#include <vector>
+
+#include "anchorbench/runner/attempt.hpp"
+#include "anchorbench/runner/experiment.hpp"
+
+namespace anchorbench::report {
+
+// Each attempt with what the summaries use (row, realization, method, initialized, t_init, error,
+// position NEES, compute_s) and its line as written.
+struct AttemptsFile {
+  std::string header;
+  std::vector<runner::Attempt> attempts;
+  std::vector<std::string> lines;
+};
+
+// attempts.csv's text, named `source` in errors, with compute_s as a last column (a chunk:
+// work/chunk.hpp), which is cut from the header and the lines. Rows are named as in `rows`.
+// Throws io::InputError "SOURCE:LINE: ..." on anything malformed.
+AttemptsFile ParseAttempts(const std::string& text, const std::string& source,
+                           const std::vector<runner::RowConfig>& rows);
+
+}  // namespace anchorbench::report

@@ -1,0 +1,69 @@
+#include "anchorbench/report/attempts_file.hpp"
+
+#include <map>
+#include <sstream>
+
+#include "anchorbench/io/csv_reader.hpp"
+#include "anchorbench/io/input_error.hpp"
+
+namespace anchorbench::report {
+namespace {
+
+std::vector<std::string> Lines(const std::string& text) {
+  std::vector<std::string> lines;
+  std::istringstream in(text);
+  for (std::string line; std::getline(in, line);) lines.push_back(line);
+  return lines;
+}
+
+}  // namespace
+
+AttemptsFile ParseAttempts(const std::string& text, const std::string& source,
+                           const std::vector<runner::RowConfig>& rows) {
+  std::map<std::string, int, std::less<>> row_index;
+  for (std::size_t r = 0; r < rows.size(); ++r) row_index[rows[r].name] = static_cast<int>(r);
+  AttemptsFile file;
+  file.lines = Lines(text);
+  if (file.lines.empty()) throw io::InputError(source + ": empty file, expected attempts.csv's header");
+  file.header = file.lines.front();
+  file.lines.erase(file.lines.begin());
+
+  std::istringstream in(text);
+  io::CsvReader csv(in, source);
+  const int row = csv.Column({"row"}), realization = csv.Column({"realization"}), anchor = csv.Column({"anchor_id"});
+  const int method = csv.Column({"method"}), initialized = csv.Column({"initialized"}), t_init = csv.Column({"t_init"});
+  const int error = csv.Column({"err_m"}), nees = csv.Column({"nees_pos"});
+  const int compute_s = csv.Column({"compute_s"});
+  const std::size_t cut = file.header.rfind(',');
+  if (cut == std::string::npos || file.header.substr(cut + 1) != "compute_s") {
+    throw io::InputError(source + ":1: compute_s must be the last column");
+  }
+  file.header.erase(cut);
+  std::size_t index = 0;
+  while (csv.Next()) {
+    runner::Attempt a;
+    const auto found = row_index.find(csv.Text(row));
+    if (found == row_index.end()) csv.Fail("row '" + std::string(csv.Text(row)) + "' is not a row of the config");
+    a.row = found->second;
+    a.realization = csv.Integer(realization);
+    a.anchor_id = csv.Integer(anchor);
+    a.method = std::string(csv.Text(method));
+    a.initialized = csv.Integer(initialized) == 1;
+    if (a.initialized) {
+      a.t_init_s = csv.Number(t_init);
+      a.evaluation.emplace();
+      a.evaluation->error_m = csv.Number(error);
+      if (!csv.Empty(nees)) a.evaluation->nees_position = csv.Number(nees);
+    }
+    a.compute_s = csv.Number(compute_s);
+    if (index < file.lines.size()) file.lines[index].erase(file.lines[index].rfind(','));
+    file.attempts.push_back(std::move(a));
+    ++index;
+  }
+  if (file.attempts.size() != file.lines.size()) {
+    throw io::InputError(source + ": blank or comment lines; expected attempts as written");
+  }
+  return file;
+}
+
+}  // namespace anchorbench::report
