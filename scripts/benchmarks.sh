@@ -2,8 +2,8 @@
 # Runs the Google Benchmark programs and Table I on 1 and 2 threads, and writes results/benchmarks/
 # (or --out DIR): solvers.csv/.md (every registered solver and a plain Eigen dense LS on the same
 # samples, as ratios), micro.csv (the per-sample costs), table1_threads.csv (speed-up),
-# replay.csv (replay throughput and peak memory on logs of 1e6 and 1e7 ranges), shards.csv (Table I
-# as 2, 4, 8 shards + merge against the plain run) and machine.md
+# replay.csv (replay throughput and peak memory on logs of 1e6 and 1e7 ranges), cluster.csv (Table I
+# as 2, 4, 8 shards + merge and as MPI jobs, against the plain run) and machine.md
 # (where it ran). Timings, not bytes: they differ from run to run, the ratios much less.
 #   bash scripts/benchmarks.sh [--out DIR] [--quick] [--build DIR]
 # --quick: a smoke run (numbers meaningless); --build DIR: use the programs built there, build nothing.
@@ -45,7 +45,7 @@ done
 # shellcheck disable=SC2086  # $replay_sizes is a list
 /usr/bin/python3 scripts/replay_throughput.py "$build/app/anchorbench" "$staging" $replay_sizes
 # shellcheck disable=SC2086  # $realizations is empty or two words
-/usr/bin/python3 scripts/shard_overhead.py "$build/app/anchorbench" "$staging" $realizations
+/usr/bin/python3 scripts/cluster_overhead.py "$build/app/anchorbench" "$staging" $realizations
 /usr/bin/python3 scripts/benchmark_tables.py "$staging"
 rm -rf "$staging"/*.json "$staging"/table1_threads_*
 chmod 755 "$staging"  # mktemp -d makes it private

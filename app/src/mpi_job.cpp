@@ -1,6 +1,7 @@
 #include "mpi_job.hpp"
 
 #include <mpi.h>
+#include <omp.h>
 
 #include <chrono>
 #include <iostream>
@@ -14,19 +15,22 @@
 namespace anchorbench::app {
 namespace {
 
-// Rank 0 -> worker: kPlan (threads, identity, the experiments' texts), kWork (chunk indices),
-// kStop. Worker -> rank 0: kResult (chunk index, chunk text), kError (exit code, message).
-enum Tag : int { kPlan = 1, kWork, kStop, kResult, kError };
+// Rank 0 -> worker: kPlan (the experiments' texts and their identity), kStart (a Compute begins:
+// the worker's threads, each on its own, ask for chunks), kStop. A worker thread -> rank 0: kReady
+// (its thread number) or kResult (thread, chunk index, chunk text: also a request for the next),
+// kError (exit code and message). Rank 0 -> a worker thread: kChunkFor + thread (a chunk index,
+// or empty: no more for this Compute).
+enum Tag : int { kPlan = 1, kStart, kStop, kReady, kResult, kError, kChunkFor = 100 };
 
 void Send(int rank, Tag tag, const std::string& text) {
   MPI_Send(text.data(), static_cast<int>(text.size()), MPI_CHAR, rank, tag, MPI_COMM_WORLD);
 }
 
-// The next message from `source` (or any), waited for by polling: a blocking receive would spin a
-// core that the ranks computing beside it need.
-std::string Receive(int source, MPI_Status& status) {
+// The next message from `source` (or any) with `tag` (or any), waited for by polling: a blocking
+// receive would spin a core that the threads computing beside it need.
+std::string Receive(int source, int tag, MPI_Status& status) {
   for (int arrived = 0;;) {
-    MPI_Iprobe(source, MPI_ANY_TAG, MPI_COMM_WORLD, &arrived, &status);
+    MPI_Iprobe(source, tag, MPI_COMM_WORLD, &arrived, &status);
     if (arrived) break;
     std::this_thread::sleep_for(std::chrono::microseconds(500));
   }
@@ -61,49 +65,51 @@ void MpiExecutor::Compute(const work::Plan& plan, const std::vector<int>& chunks
                           const work::ChunkDone& done) {
   if (ranks_ == 1 || chunks.empty()) return local_.Compute(plan, chunks, threads, done);
   busy_ = true;
-  std::vector<std::string> message = {std::to_string(threads), plan.identity()};
+  std::vector<std::string> message = {plan.identity()};
   message.insert(message.end(), plan.texts().begin(), plan.texts().end());
   const std::string packed = Pack(message);
-  if (packed != plan_sent_) {
-    for (int rank = 1; rank < ranks_; ++rank) Send(rank, kPlan, packed);
-    plan_sent_ = packed;
+  for (int rank = 1; rank < ranks_; ++rank) {
+    if (packed != plan_sent_) Send(rank, kPlan, packed);
+    Send(rank, kStart, std::to_string(threads));
   }
-  std::size_t next = 0;
-  std::vector<int> outstanding(static_cast<std::size_t>(ranks_), 0);
-  const auto hand_out = [&](int rank) {  // as many chunks as the rank has threads
-    std::vector<std::string> batch;
-    for (; next < chunks.size() && static_cast<int>(batch.size()) < threads; ++next) {
-      batch.push_back(std::to_string(chunks[next]));
-    }
-    outstanding[static_cast<std::size_t>(rank)] = static_cast<int>(batch.size());
-    if (!batch.empty()) Send(rank, kWork, Pack(batch));
-  };
-  for (int rank = 1; rank < ranks_; ++rank) hand_out(rank);
-  for (std::size_t received = 0; received < chunks.size(); ++received) {
+  plan_sent_ = packed;
+  // Every worker thread asks for a chunk, and for the next with each result, until told no more.
+  std::size_t next = 0, received = 0;
+  int told_no_more = 0;
+  const int asking = (ranks_ - 1) * threads;
+  while (received < chunks.size() || told_no_more < asking) {
     MPI_Status status;
-    const std::string text = Receive(MPI_ANY_SOURCE, status);
+    const std::string text = Receive(MPI_ANY_SOURCE, MPI_ANY_TAG, status);
     const std::string rank = "rank " + std::to_string(status.MPI_SOURCE);
     if (status.MPI_TAG == kError) {
       if (text.rfind("2", 0) == 0) throw io::InputError(rank + ": " + text.substr(1));
       throw std::runtime_error(rank + ": " + text.substr(1));
     }
-    const std::size_t newline = text.find('\n');
-    const int chunk = std::stoi(text.substr(0, newline));
-    const std::string chunk_text = text.substr(newline + 1);
-    done(chunk, work::ParseChunk(plan, chunk, chunk_text, rank + "'s chunk " + std::to_string(chunk)), chunk_text);
-    if (--outstanding[static_cast<std::size_t>(status.MPI_SOURCE)] == 0) hand_out(status.MPI_SOURCE);
+    const std::vector<std::string> fields = Unpack(text);  // thread [, chunk, chunk text]
+    if (status.MPI_TAG == kResult) {
+      const int chunk = std::stoi(fields[1]);
+      done(chunk, work::ParseChunk(plan, chunk, fields[2], rank + "'s chunk " + std::to_string(chunk)), fields[2]);
+      ++received;
+    }
+    const int reply_tag = kChunkFor + std::stoi(fields[0]);
+    if (next < chunks.size()) {
+      Send(status.MPI_SOURCE, static_cast<Tag>(reply_tag), std::to_string(chunks[next++]));
+    } else {
+      Send(status.MPI_SOURCE, static_cast<Tag>(reply_tag), "");
+      ++told_no_more;
+    }
   }
   busy_ = false;
 }
 
 int MpiJob::Init(int& argc, char**& argv, int& rank) {
   int provided = 0;
-  // Worker threads send their finished chunks one at a time (an OpenMP critical section).
-  MPI_Init_thread(&argc, &argv, MPI_THREAD_SERIALIZED, &provided);
+  // A worker's threads each ask rank 0 for chunks and send results on their own.
+  MPI_Init_thread(&argc, &argv, MPI_THREAD_MULTIPLE, &provided);
   int ranks = 1;
   MPI_Comm_rank(MPI_COMM_WORLD, &rank);
   MPI_Comm_size(MPI_COMM_WORLD, &ranks);
-  if (provided < MPI_THREAD_SERIALIZED) {
+  if (provided < MPI_THREAD_MULTIPLE) {
     if (rank == 0) std::cerr << "anchorbench: error: this MPI library cannot send from OpenMP threads\n";
     MPI_Abort(MPI_COMM_WORLD, 3);
   }
@@ -113,39 +119,56 @@ int MpiJob::Init(int& argc, char**& argv, int& rank) {
 MpiJob::MpiJob(int& argc, char**& argv, const registry::Components& components)
     : components_(components), ranks_(Init(argc, argv, rank_)), executor_(components, ranks_) {}
 
+// One worker thread: asks for a chunk, computes it, sends it (asking for the next), until rank 0
+// says no more. Errors go to rank 0, which ends the job.
+void ServeThread(const work::Plan* plan, const std::string& plan_error, int thread,
+                 const registry::Components& components) {
+  std::vector<estimator::RangeSample> samples;
+  std::string request = Pack({std::to_string(thread)});
+  Tag tag = kReady;
+  for (;;) {
+    Send(0, tag, request);
+    MPI_Status status;
+    const std::string chunk_text = Receive(0, kChunkFor + thread, status);
+    if (chunk_text.empty()) return;
+    const int chunk = std::stoi(chunk_text);
+    try {
+      if (!plan) throw io::InputError(plan_error);
+      const work::ChunkResult result = work::ComputeChunk(*plan, chunk, components, samples);
+      request = Pack({std::to_string(thread), chunk_text, work::ChunkText(result)});
+      tag = kResult;
+    } catch (const io::InputError& e) {
+      request = std::string("2") + e.what();
+      tag = kError;
+    } catch (const std::exception& e) {
+      request = std::string("3") + e.what();
+      tag = kError;
+    }
+  }
+}
+
 int MpiJob::Serve() {
-  work::LocalExecutor local(components_);
   std::optional<work::Plan> plan;
   std::string plan_error;
-  int threads = 1;
   for (;;) {
     MPI_Status status;
-    const std::string text = Receive(0, status);
+    const std::string text = Receive(0, MPI_ANY_TAG, status);
     if (status.MPI_TAG == kStop) break;
-    try {
-      if (status.MPI_TAG == kPlan) {
-        const std::vector<std::string> message = Unpack(text);
-        threads = std::stoi(message[0]);
-        plan.reset();
-        plan_error.clear();
-        try {
-          plan.emplace(work::PlanFromTexts({message.begin() + 2, message.end()}, message[1], components_));
-        } catch (const io::InputError& e) {
-          plan_error = e.what();  // reported for the first chunk asked of it
-        }
-        continue;
+    if (status.MPI_TAG == kPlan) {
+      const std::vector<std::string> message = Unpack(text);
+      plan.reset();
+      plan_error = "no plan";
+      try {
+        plan.emplace(work::PlanFromTexts({message.begin() + 1, message.end()}, message[0], components_));
+      } catch (const std::exception& e) {
+        plan_error = e.what();  // reported for the first chunk asked of it
       }
-      if (!plan) throw io::InputError(plan_error.empty() ? "chunks asked before a plan" : plan_error);
-      std::vector<int> chunks;
-      for (const std::string& chunk : Unpack(text)) chunks.push_back(std::stoi(chunk));
-      local.Compute(*plan, chunks, threads, [](int chunk, work::ChunkResult&&, const std::string& chunk_text) {
-        Send(0, kResult, std::to_string(chunk) + '\n' + chunk_text);
-      });
-    } catch (const io::InputError& e) {
-      Send(0, kError, std::string("2") + e.what());
-    } catch (const std::exception& e) {
-      Send(0, kError, std::string("3") + e.what());
+      continue;
     }
+    const int threads = std::stoi(text);  // kStart
+    const work::Plan* computing = plan ? &*plan : nullptr;
+#pragma omp parallel num_threads(threads)
+    ServeThread(computing, plan_error, omp_get_thread_num(), components_);
   }
   MPI_Finalize();
   return 0;

@@ -13,8 +13,9 @@
 
 namespace anchorbench::app {
 
-// Rank 0's executor: K-1 worker ranks, dynamically scheduled, each given as many chunks at a time
-// as it has threads. With no worker (-n 1) it computes on its own threads.
+// Rank 0's executor: K-1 worker ranks of `threads` threads each; every thread asks rank 0 for one
+// chunk at a time (the next with each result), so a slow rank or thread holds only its own chunk.
+// With no worker (-n 1) it computes on its own threads.
 class MpiExecutor final : public work::Executor {
  public:
   MpiExecutor(const registry::Components& components, int ranks) : local_(components), ranks_(ranks) {}
@@ -25,7 +26,7 @@ class MpiExecutor final : public work::Executor {
  private:
   work::LocalExecutor local_;
   int ranks_;
-  std::string plan_sent_;  // the plan (identity and threads) the workers hold
+  std::string plan_sent_;  // the plan the workers hold
   bool busy_ = false;
 };
 

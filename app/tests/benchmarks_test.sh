@@ -16,7 +16,9 @@ for solver in "eigen_dense_ls (baseline)" ls_single ls_double lm_l2 lm_huber lm_
 done
 grep -q "^bench_pdop,BM_ClosestPointPdopPerSample/1000000," "$work/benchmarks/micro.csv" || { echo "no PDOP row"; exit 1; }
 [ "$(wc -l <"$work/benchmarks/table1_threads.csv")" = 3 ] || { echo "table1_threads.csv: expected 2 rows"; exit 1; }
-[ "$(grep -c ',1$' "$work/benchmarks/shards.csv")" = 3 ] || { echo "shards.csv: merged bytes differ"; exit 1; }
+csv="$work/benchmarks/cluster.csv"
+[ "$(grep -c '^shards,' "$csv")" = 3 ] || { echo "cluster.csv: not 3 shard rows"; exit 1; }
+grep -q ',0$' "$csv" && { echo "cluster.csv: results differ from the plain run's"; exit 1; }
 # A bad option stops it before any work, with exit 2 and nothing written.
 status=0
 bash "$source_dir/scripts/benchmarks.sh" --bogus --out "$work/never" 2>/dev/null || status=$?

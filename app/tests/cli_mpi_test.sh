@@ -7,8 +7,9 @@
 source "$(dirname "$0")/common.sh"
 mpi_bin="$2"
 configs="$3"
-# Oversubscribed (more ranks than this machine's cores), and allowed as root (CI runs as root).
-mpi() { timeout 120 mpirun --allow-run-as-root --oversubscribe -n "$@"; }
+# Oversubscribed (more ranks than this machine's cores), unbound (a rank's threads may use any core),
+# and allowed as root (CI runs as root).
+mpi() { timeout 120 mpirun --allow-run-as-root --oversubscribe --bind-to none -n "$@"; }
 
 small_table "$dir/small.yaml"
 "$bin" run "$dir/small.yaml" --out "$dir/plain" --quiet --threads 2 || fail "plain run"
