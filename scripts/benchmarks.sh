@@ -26,7 +26,7 @@ done
 benches="bench_compare bench_solver bench_pdop bench_filters bench_triggers bench_front_end"
 if [ -z "$build" ]; then
   build=build
-  bash scripts/build.sh anchorbench $benches
+  bash scripts/build.sh anchorbench anchorbench-mpi $benches  # anchorbench-mpi: cluster.csv
 fi
 mkdir -p "$(dirname "$out")"
 staging=$(mktemp -d "$(dirname "$out")/.$(basename "$out").partial-XXXXXX")

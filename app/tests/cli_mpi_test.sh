@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
-# MPI (issue 15): `mpirun -n K anchorbench-mpi run|sweep|calibrate` writes the plain binary's bytes for K = 2 and 3
-# and 1 or 2 threads per rank; bad input ends every rank with exit 2 (no hang); a rank killed
-# mid-run fails the job with no result folder, and --resume finishes it to the same bytes.
+# MPI (issue 15): `mpirun -n K anchorbench-mpi run|sweep|calibrate` writes the plain binary's
+# bytes (run for K = 2 and 3 and 1 or 2 threads a rank, sweep and calibrate for K = 3); bad input
+# ends every rank with exit 2 (no hang); a rank killed mid-run fails the job with no result
+# folder, and --resume finishes it to the same bytes.
 # Arguments: the plain anchorbench, anchorbench-mpi, the configs folder.
 # shellcheck source=common.sh
 source "$(dirname "$0")/common.sh"
@@ -32,6 +33,26 @@ for file in sweep.csv sweep.md; do
   cmp -s "$dir/sweep_plain/$file" "$dir/sweep_mpi/$file" || fail "mpirun sweep: $file differs"
 done
 echo "ok: mpirun -n 3 sweep: the plain sweep's bytes"
+
+# A calibration: every evaluation a plan of its own, sent to the workers.
+for way in plain mpi; do
+  mkdir -p "$dir/cal_$way"
+  small_table "$dir/cal_$way/tiny.yaml"
+  {
+    printf 'experiment: tiny.yaml\nseed: 11\nrealizations: 3\nverify_seeds: [2]\n'
+    printf 'global: {algorithm: GN_DIRECT_L, max_evaluations: 8}\nlocal: {algorithm: LN_SBPLX, max_evaluations: 4}\n'
+    printf 'parameters:\n  - {key: scenario.tunnel.width_m, min: 6, max: 20, provenance: "a test"}\n'
+  } >"$dir/cal_$way/cal.yaml"
+done
+"$bin" calibrate "$dir/cal_plain/cal.yaml" --out "$dir/cal_plain/out" --quiet --threads 2 || fail "plain calibrate"
+mpi 3 "$mpi_bin" calibrate "$dir/cal_mpi/cal.yaml" --out "$dir/cal_mpi/out" --quiet --threads 1 >/dev/null 2>&1 ||
+  fail "mpirun calibrate"
+for file in out/evaluations.csv out/verification.csv out/calibration.md tiny.calibrated.yaml; do
+  # The two name their own folder: the rest must be the same bytes.
+  cmp -s <(sed "s#$dir/cal_plain#CAL#g" "$dir/cal_plain/$file") <(sed "s#$dir/cal_mpi#CAL#g" "$dir/cal_mpi/$file") ||
+    fail "mpirun calibrate: $file differs"
+done
+echo "ok: mpirun -n 3 calibrate: the plain calibration's bytes"
 
 err=$(mpi 3 "$mpi_bin" run "$dir/missing.yaml" --out "$dir/never" 2>&1)
 status=$?
