@@ -35,31 +35,31 @@ work::ChunkStore::Mode StoreMode(const MonteCarloArgs& args) {
 
 }  // namespace
 
-std::optional<std::vector<work::ExperimentAttempts>> ComputePlan(const MonteCarloArgs& args, const MonteCarloSetup& setup,
-                                                                 const PlanJob& job, const AppContext& app,
-                                                                 io::ResultFolder& out, double& wall_time_s) {
+PlanOutcome ComputePlan(const MonteCarloArgs& args, const MonteCarloSetup& setup, const PlanJob& job,
+                        const AppContext& app, io::ResultFolder& out) {
   const std::optional<work::Shard> shard =
-      job.shard.empty() ? std::nullopt : std::optional(work::ParseShard(job.shard, "--shard"));
+      args.shard.empty() ? std::nullopt : std::optional(work::ParseShard(args.shard, "--shard"));
   work::ChunkStore store(out.target(), job.plan, StoreMode(args));
-  Progress progress(job.label, args.quiet);
+  Progress progress(job.command + " " + job.name, args.quiet);
   long long units = 0;
   std::map<int, work::ChunkResult> chunks =
       work::RunPlan(job.plan, app.executor,
                     {setup.threads, &store, [&](long long done, long long total) { progress.Update(done, units = total); },
                      shard.value_or(work::Shard{})});
-  wall_time_s = progress.elapsed_s();
+  PlanOutcome outcome;
+  outcome.wall_time_s = progress.elapsed_s();
   progress.Finish(units);
-  if (!shard) return work::Join(job.plan, chunks);
-  work::ShardInfo info = job.shard_info;
-  info.shard = *shard;
-  info.chunks = static_cast<int>(chunks.size());
-  info.plan = job.plan.identity();
-  info.revision = app.revision;
+  if (!shard) {
+    outcome.experiments = work::Join(job.plan, chunks);
+    return outcome;
+  }
+  const work::ShardInfo info{*shard, static_cast<int>(chunks.size()), job.command, job.name, job.plan.identity(),
+                             app.revision};
   work::WriteShardFolder([&](const std::string& name, const std::string& text) { out.Write(name, text); }, info,
-                         job.shard_inputs, chunks);
+                         job.inputs, chunks);
   out.Commit();
   store.Remove();
-  return std::nullopt;
+  return outcome;
 }
 
 void RemoveStore(const io::ResultFolder& out) {

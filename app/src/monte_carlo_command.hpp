@@ -31,22 +31,24 @@ MonteCarloSetup SetUpMonteCarlo(const MonteCarloArgs& args, const std::string& c
 std::unique_ptr<io::ResultFolder> OpenResultFolder(const MonteCarloArgs& args, const MonteCarloSetup& setup,
                                                   std::uintmax_t expected_bytes);
 
-// What run and sweep share once their plan is made. `shard` ("I/N" or empty) and the inputs a
-// shard folder records; `label` names the progress line.
+// What run and sweep share once their plan is made: which command on which experiment, and what
+// a shard folder records to rebuild the plan.
 struct PlanJob {
   const work::Plan& plan;
-  std::string label;
-  std::string shard;
-  work::ShardInfo shard_info;  // command and name; the rest is filled in
-  work::ShardInputs shard_inputs;
+  std::string command;  // "run" or "sweep"
+  std::string name;     // the experiment's
+  work::ShardInputs inputs;
 };
-// Computes the job's chunks (all, or the shard's) into the chunk store beside `out` (--resume
-// takes its chunks, --overwrite discards them, an interrupted store is otherwise refused), with
-// progress. A shard's chunks become its shard folder, committed here (returns nothing); a whole
-// plan's are returned joined for the command to commit, after which RemoveStore(out).
-std::optional<std::vector<work::ExperimentAttempts>> ComputePlan(const MonteCarloArgs& args, const MonteCarloSetup& setup,
-                                                                 const PlanJob& job, const AppContext& app,
-                                                                 io::ResultFolder& out, double& wall_time_s);
+struct PlanOutcome {
+  std::optional<std::vector<work::ExperimentAttempts>> experiments;  // none for a shard: its folder is written
+  double wall_time_s = 0.0;
+};
+// Computes the job's chunks (all, or --shard's) into the chunk store beside `out` (--resume takes
+// its chunks, --overwrite discards them, an interrupted store is otherwise refused), with
+// progress. A shard's chunks become its shard folder, committed here; a whole plan's come back
+// joined for the command to commit, after which RemoveStore(out).
+PlanOutcome ComputePlan(const MonteCarloArgs& args, const MonteCarloSetup& setup, const PlanJob& job,
+                        const AppContext& app, io::ResultFolder& out);
 void RemoveStore(const io::ResultFolder& out);
 
 // A run's results from its attempts (run and merge write the same): attempts.csv, summary.csv,

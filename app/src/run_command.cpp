@@ -30,15 +30,13 @@ int RunCommand(const RunArgs& args, const AppContext& app) {
   const std::unique_ptr<io::ResultFolder> out = OpenResultFolder(args, setup, ExpectedBytes(config));
   const work::Plan plan({config});
 
-  double wall_time_s = 0.0;
-  const PlanJob job{plan, "run " + config.name, args.shard, {{}, 0, "run", config.name, "", ""}, {config::ToYaml(config), {}}};
-  const auto run = ComputePlan(args, setup, job, app, *out, wall_time_s);
-  if (!run) return 0;  // a shard: its folder is written
+  const PlanOutcome run = ComputePlan(args, setup, {plan, "run", config.name, {config::ToYaml(config), {}}}, app, *out);
+  if (!run.experiments) return 0;  // a shard: its folder is written
   std::vector<std::string> command_line;
   if (args.seed) command_line.push_back("--seed " + std::to_string(*args.seed));
   for (const std::string& assignment : args.overrides) command_line.push_back("--set " + assignment);
   const std::string markdown =
-      CommitRun(*out, config, run->front(), RunInfoOf(args, setup, app, config, wall_time_s, command_line));
+      CommitRun(*out, config, run.experiments->front(), RunInfoOf(args, setup, app, config, run.wall_time_s, command_line));
   RemoveStore(*out);
   if (!args.quiet) std::cout << markdown;
   return 0;

@@ -48,14 +48,13 @@ int SweepCommand(const SweepArgs& args, const AppContext& app) {
                          "'realizations' with --realizations?): it cannot be sharded");
   }
 
-  double wall_time_s = 0.0;
-  const PlanJob job{plan, "sweep " + base.name, args.shard, {{}, 0, "sweep", base.name, "", ""}, inputs};
-  const auto points = ComputePlan(args, setup, job, app, *out, wall_time_s);
-  if (!points) return 0;  // a shard: its folder is written
+  const PlanOutcome points = ComputePlan(args, setup, {plan, "sweep", base.name, inputs}, app, *out);
+  if (!points.experiments) return 0;  // a shard: its folder is written
   std::vector<std::string> command_line;
   for (const std::string& axis : args.axes) command_line.push_back("--set " + axis);
   const std::string markdown =
-      CommitSweep(*out, base.name, axes, plan, *points, RunInfoOf(args, setup, app, base, wall_time_s, command_line));
+      CommitSweep(*out, base.name, axes, plan, *points.experiments,
+                  RunInfoOf(args, setup, app, base, points.wall_time_s, command_line));
   RemoveStore(*out);
   if (!args.quiet) std::cout << markdown;
   return 0;
