@@ -4,6 +4,7 @@ library only; the main command runs it last). A table lives between the markers
 and NAME picks the function below. Text around the markers is written by hand and quotes numbers
 of these tables or of the result files it names."""
 import csv
+import json
 import pathlib
 import re
 import sys
@@ -507,12 +508,84 @@ def calibration_headline():
             f"(`results/calibrate_table1/`).")
 
 
-def shard_overhead():
-    """Table I as shards + merge against the plain run (results/benchmarks/shards.csv)."""
-    rows = [[r["shards"], r["plain_s"], r["shards_s"], r["merge_s"], f"{float(r['overhead_pct']):+.1f}%",
-             "yes" if r["same_bytes"] == "1" else "NO"] for r in read("benchmarks/shards.csv")]
-    return table(["shards", "plain run (s)", "shards, one after another (s)", "merge (s)", "overhead",
-                  "merged = plain, byte for byte"], rows)
+def cluster_overhead():
+    """Table I as shards + merge and as MPI jobs against the plain run (results/benchmarks/cluster.csv)."""
+    ways = {"shards": "shards, one after another, + merge", "mpi": "anchorbench-mpi (rank 0 coordinates)"}
+    rows = [[ways[r["way"]], r["processes"], r["threads"], r["plain_s"], r["wall_s"],
+             r["merge_s"] if r["way"] == "shards" else "-", f"{float(r['overhead_pct']):+.1f}%",
+             "yes" if r["same_bytes"] == "1" else "NO"] for r in read("benchmarks/cluster.csv")]
+    return table(["way", "processes", "threads each", "plain run (s)", "wall (s)", "merge (s)", "overhead",
+                  "same bytes as plain"], rows)
+
+
+def cluster_costs():
+    """The cost model's inputs, from Table I as 8 shards (results/benchmarks/cluster.csv)."""
+    r = next(r for r in read("benchmarks/cluster.csv") if r["way"] == "shards" and r["processes"] == "8")
+    units = int(r["units"])
+    compute = float(r["plain_s"]) * int(r["threads"]) / units
+    ingest = float(r["merge_s"]) / units
+    return compute, ingest, int(r["attempts_bytes"]) / units
+
+
+def chunks_of(units):
+    """The chunks of an experiment of `units` units (work/plan.hpp: 256 an experiment, at most 64 units each)."""
+    size = min(64, max(1, -(-units // 256)))
+    return -(-units // size)
+
+
+def committed_workloads():
+    """(name, units, chunks, core-seconds a unit) of Table I and every committed sweep, from their manifests."""
+    workloads = []
+    for name in ("table1", "sweep_pdop_threshold", "sweep_tau", "sweep_noise_outliers", "sweep_bias_aware",
+                 "stress", "stress_ransac"):
+        manifest = json.loads((RESULTS / name / "manifest.json").read_text())
+        axes = len(manifest.get("sweep_axes", []))
+        rows = read(f"{name}/{'sweep' if axes else 'summary'}.csv")
+        points = {tuple(list(row.values())[:axes]) for row in rows}
+        rows_a_point = len({row["row"] for row in rows})
+        units = len(points) * rows_a_point * manifest["realizations"]
+        chunks = len(points) * chunks_of(rows_a_point * manifest["realizations"])
+        workloads.append((name, units, chunks, manifest["wall_time_s"] * manifest["threads"] / units))
+    return workloads
+
+
+def cluster_cost_model():
+    """Estimated wall time on N nodes of C cores: max(ceil(K / (N C)) U c / K, U r); see docs/cluster.md."""
+    _, ingest, unit_bytes = cluster_costs()
+    table1_unit = committed_workloads()[0][3]
+    workloads = committed_workloads() + [("Table I at 1e6 realizations a row", 4_000_000, 4 * chunks_of(1_000_000),
+                                          table1_unit)]
+    shapes = [(1, 2), (4, 32), (16, 32), (64, 32)]
+
+    def duration(seconds):
+        if seconds < 10:
+            return f"{seconds:.1f} s"
+        if seconds < 120:
+            return f"{seconds:.0f} s"
+        return f"{seconds / 60:.0f} min" if seconds < 7200 else f"{seconds / 3600:.1f} h"
+
+    rows = []
+    for name, units, chunks, unit_s in workloads:
+        cells = [duration(max(-(-chunks // (n * c)) * units / chunks * unit_s, units * ingest)) for n, c in shapes]
+        floor = units * ingest
+        rows.append([f"`{name}`" if not name.startswith("Table I at") else name, f"{units:,}", f"{chunks:,}",
+                     f"{unit_s:.3f}"] + cells +
+                     [duration(floor), f"{units * unit_bytes / 1e9:.2f} GB"])
+    return table(["workload", "units", "chunks", "core-s a unit"] + [f"{n} x {c} cores" for n, c in shapes] +
+                 ["rank 0 / merge floor", f"attempts held (at {unit_bytes / 1e3:.1f} kB a unit)"], rows)
+
+
+def cluster_bullets():
+    """The model's constants in words (results/benchmarks/cluster.csv)."""
+    compute, ingest, unit_bytes = cluster_costs()
+    return (f"- c = {compute:.4f} core-seconds a unit: Table I's plain run on 2 threads, times 2, over its units.\n"
+            f"- r = {ingest * 1e3:.2f} ms a unit: the 8-shard merge over the units. Merge reads every attempt back, "
+            f"then bootstraps the summaries and writes the results; rank 0 of an MPI job does the reading as chunks "
+            f"arrive, one at a time, and the rest once at the end. So r is an upper bound on rank 0's share.\n"
+            f"- {unit_bytes / 1e3:.1f} kB of attempts a unit (Table I's attempts.csv over its units), held in memory "
+            f"until the results are written.\n"
+            f"- The compute stops paying at N x C = c / r = {compute / ingest:.0f} cores: beyond, the job waits on "
+            f"one process reading the attempts back.")
 
 
 def calibration_section(title):
@@ -550,7 +623,7 @@ GENERATORS = {f.__name__: f for f in (stress_triggers, stress_solvers, stress_co
                                       table1_scores, table1_holds, table1_sensitivity, amr_height_table,
                                       pdop_triggers_table, calibration_verification, calibration_parameters,
                                       calibration_objective, calibration_profiles, calibration_cells, calibration_headline,
-                                      shard_overhead,
+                                      cluster_overhead, cluster_cost_model, cluster_bullets,
                                       calibration_reachability)}
 MARKER = re.compile(r"(<!-- generated: (\w+) \(scripts/docs_tables.py\) -->\n)(.*?)(<!-- end generated -->)", re.S)
 
