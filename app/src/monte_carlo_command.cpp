@@ -1,6 +1,7 @@
 #include "monte_carlo_command.hpp"
 
 #include <filesystem>
+#include <iostream>
 #include <sstream>
 
 #include "anchorbench/config/load_config.hpp"
@@ -40,6 +41,10 @@ PlanOutcome ComputePlan(const MonteCarloArgs& args, const MonteCarloSetup& setup
   const std::optional<work::Shard> shard =
       args.shard.empty() ? std::nullopt : std::optional(work::ParseShard(args.shard, "--shard"));
   work::ChunkStore store(out.target(), job.plan, StoreMode(args));
+  if (store.unreadable() > 0 && !args.quiet) {
+    std::cerr << "anchorbench: " << store.folder().string() << ": " << store.unreadable()
+              << " chunk file(s) do not read back (torn by a crash?); computing them again\n";
+  }
   Progress progress(job.command + " " + job.name, args.quiet);
   long long units = 0;
   std::map<int, work::ChunkResult> chunks =

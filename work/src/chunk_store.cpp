@@ -1,5 +1,7 @@
 #include "anchorbench/work/chunk_store.hpp"
 
+#include <cerrno>
+#include <cstring>
 #include <fstream>
 #include <system_error>
 
@@ -64,8 +66,11 @@ ChunkStore::ChunkStore(const fs::path& out, const Plan& plan, Mode mode) : plan_
     }
     for (int chunk = 0; chunk < static_cast<int>(plan.chunks().size()); ++chunk) {
       const fs::path path = ChunkPath(chunk);
-      if (fs::exists(path, error)) {
+      if (!fs::exists(path, error)) continue;
+      try {
         finished_.emplace(chunk, ParseChunk(plan, chunk, io::ReadWholeFile(path.string()), path.string()));
+      } catch (const InputError&) {
+        ++unreadable_;  // torn by a crash of the machine (chunks are not flushed): computed again
       }
     }
     return;
@@ -78,9 +83,19 @@ ChunkStore::ChunkStore(const fs::path& out, const Plan& plan, Mode mode) : plan_
 std::map<int, ChunkResult> ChunkStore::TakeFinished() { return std::move(finished_); }
 
 void ChunkStore::Save(int chunk, const std::string& text) {
-  io::AtomicFile file(ChunkPath(chunk), true);
-  file.stream() << text;
-  file.Commit();
+  // Whole or absent for a killed process: the text goes to a temporary, renamed into place. Not
+  // flushed to the disk (fsync made the flush, not the work, rank 0's bound): after a crash of the
+  // machine a chunk may read back torn, and is then computed again.
+  const fs::path path = ChunkPath(chunk);
+  const fs::path temporary = path.string() + ".partial";
+  std::ofstream out(temporary, std::ios::binary | std::ios::trunc);
+  out << text;
+  out.close();
+  std::error_code error;
+  if (out) fs::rename(temporary, path, error);
+  if (!out || error) {
+    throw InputError(path.string() + ": cannot write the chunk: " + (error ? error.message() : std::strerror(errno)));
+  }
 }
 
 void ChunkStore::Remove() {

@@ -1,8 +1,9 @@
 #pragma once
 // Where a run's finished chunks wait until its results are written: the folder <out>.chunks/
-// beside the result folder, one file per chunk (written whole or not at all, so a kill -9 leaves
-// only whole chunks) and `plan.csv` naming the plan. A run killed at any moment continues from it
-// with --resume; the finished results replace it.
+// beside the result folder, one file per chunk (renamed into place whole, so a kill -9 leaves only
+// whole chunks) and `plan.csv` naming the plan. A run killed at any moment continues from it with
+// --resume; the finished results replace it. The store is a cache of deterministic work: a chunk
+// that does not read back (a crash of the machine) is computed again, never trusted.
 
 #include <filesystem>
 #include <map>
@@ -24,6 +25,8 @@ class ChunkStore {
 
   // The chunks finished before (kResume), read back and checked, by index.
   std::map<int, ChunkResult> TakeFinished();
+  // Chunk files found but not readable as their chunk (they are left out of TakeFinished).
+  int unreadable() const { return unreadable_; }
   void Save(int chunk, const std::string& text);
   // Once the results are in place.
   void Remove();
@@ -36,6 +39,7 @@ class ChunkStore {
   const Plan& plan_;
   std::filesystem::path folder_;
   std::map<int, ChunkResult> finished_;
+  int unreadable_ = 0;
 };
 
 // <out>.chunks (a trailing separator of `out` ignored).
