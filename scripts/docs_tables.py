@@ -519,12 +519,15 @@ def cluster_overhead():
 
 
 def cluster_costs():
-    """The cost model's inputs, from Table I as 8 shards (results/benchmarks/cluster.csv)."""
+    """The cost model's inputs (results/benchmarks/cluster.csv and micro.csv): c, core-seconds a unit
+    (Table I's plain run); r0, seconds a unit rank 0 spends reading a chunk back and storing it
+    (bench_ingest); rm, seconds a unit of the 8-shard merge; the bytes of attempts a unit."""
     r = next(r for r in read("benchmarks/cluster.csv") if r["way"] == "shards" and r["processes"] == "8")
     units = int(r["units"])
-    compute = float(r["plain_s"]) * int(r["threads"]) / units
-    ingest = float(r["merge_s"]) / units
-    return compute, ingest, int(r["attempts_bytes"]) / units
+    ingest = next(m for m in read("benchmarks/micro.csv") if m["benchmark"].startswith("BM_ParseAndStoreChunkPerUnit"))
+    rate = float(re.search(r"items_per_second=([0-9.e+]+)", ingest["counters"])[1])
+    return (float(r["plain_s"]) * int(r["threads"]) / units, 1.0 / rate, float(r["merge_s"]) / units,
+            int(r["attempts_bytes"]) / units)
 
 
 def chunks_of(units):
@@ -550,8 +553,8 @@ def committed_workloads():
 
 
 def cluster_cost_model():
-    """Estimated wall time on N nodes of C cores: max(ceil(K / (N C)) U c / K, U r); see docs/cluster.md."""
-    _, ingest, unit_bytes = cluster_costs()
+    """Estimated wall time of an MPI job on N nodes of C cores: max(ceil(K / (N C)) U c / K, U r0)."""
+    _, rank0, merge, unit_bytes = cluster_costs()
     table1_unit = committed_workloads()[0][3]
     workloads = committed_workloads() + [("Table I at 1e6 realizations a row", 4_000_000, 4 * chunks_of(1_000_000),
                                           table1_unit)]
@@ -566,26 +569,29 @@ def cluster_cost_model():
 
     rows = []
     for name, units, chunks, unit_s in workloads:
-        cells = [duration(max(-(-chunks // (n * c)) * units / chunks * unit_s, units * ingest)) for n, c in shapes]
-        floor = units * ingest
+        cells = [duration(max(-(-chunks // (n * c)) * units / chunks * unit_s, units * rank0)) for n, c in shapes]
         rows.append([f"`{name}`" if not name.startswith("Table I at") else name, f"{units:,}", f"{chunks:,}",
                      f"{unit_s:.3f}"] + cells +
-                     [duration(floor), f"{units * unit_bytes / 1e9:.2f} GB"])
+                    [duration(units * rank0), duration(units * merge), f"{units * unit_bytes / 1e9:.2f} GB"])
     return table(["workload", "units", "chunks", "core-s a unit"] + [f"{n} x {c} cores" for n, c in shapes] +
-                 ["rank 0 / merge floor", f"attempts held (at {unit_bytes / 1e3:.1f} kB a unit)"], rows)
+                 ["rank 0 floor", "a merge after shards", f"attempts held (at {unit_bytes / 1e3:.1f} kB a unit)"],
+                 rows)
 
 
 def cluster_bullets():
-    """The model's constants in words (results/benchmarks/cluster.csv)."""
-    compute, ingest, unit_bytes = cluster_costs()
-    return (f"- c = {compute:.4f} core-seconds a unit: Table I's plain run on 2 threads, times 2, over its units.\n"
-            f"- r = {ingest * 1e3:.2f} ms a unit: the 8-shard merge over the units. Merge reads every attempt back, "
-            f"then bootstraps the summaries and writes the results; rank 0 of an MPI job does the reading as chunks "
-            f"arrive, one at a time, and the rest once at the end. So r is an upper bound on rank 0's share.\n"
+    """The model's constants in words (results/benchmarks/cluster.csv and micro.csv)."""
+    compute, rank0, merge, unit_bytes = cluster_costs()
+    return (f"- c = {compute:.4f} core-seconds a unit: Table I's plain run on 2 threads, times 2, over its "
+            f"units (`cluster.csv`).\n"
+            f"- r0 = {rank0 * 1e3:.3f} ms a unit: what rank 0 does with every chunk it receives, one at a time "
+            f"(reads it back and writes it to the store; `bench_ingest`'s BM_ParseAndStoreChunkPerUnit in "
+            f"`micro.csv`).\n"
+            f"- rm = {merge * 1e3:.2f} ms a unit: the 8-shard merge over Table I's units (`cluster.csv`): it reads "
+            f"every attempt back, bootstraps the summaries and writes the results, after the shards.\n"
             f"- {unit_bytes / 1e3:.1f} kB of attempts a unit (Table I's attempts.csv over its units), held in memory "
             f"until the results are written.\n"
-            f"- The compute stops paying at N x C = c / r = {compute / ingest:.0f} cores: beyond, the job waits on "
-            f"one process reading the attempts back.")
+            f"- An MPI job stops gaining at N x C = c / r0 = {compute / rank0:.0f} cores: beyond, it waits on rank "
+            f"0. Shards have no such floor while they run, but their merge adds U rm at the end.")
 
 
 def calibration_section(title):
