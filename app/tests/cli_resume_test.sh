@@ -24,10 +24,10 @@ kill_after() {
 }
 
 table="$configs/table1.yaml"
-"$bin" run "$table" --realizations 60 --out "$dir/whole" --quiet --threads 2 || fail "run"
-kill_after 0.7 "$dir/run" "$bin" run "$table" --realizations 60 --out "$dir/run" --threads 2
-kill_after 0.7 "$dir/run" "$bin" run "$table" --realizations 60 --out "$dir/run" --threads 1 --resume
-"$bin" run "$table" --realizations 60 --out "$dir/run" --quiet --threads 2 --resume || fail "resumed run"
+"$bin" run "$table" --realizations 40 --out "$dir/whole" --quiet --threads 2 || fail "run"
+kill_after 0.7 "$dir/run" "$bin" run "$table" --realizations 40 --out "$dir/run" --threads 2
+kill_after 0.7 "$dir/run" "$bin" run "$table" --realizations 40 --out "$dir/run" --threads 1 --resume
+"$bin" run "$table" --realizations 40 --out "$dir/run" --quiet --threads 2 --resume || fail "resumed run"
 for file in attempts.csv summary.csv summary.md; do
   cmp -s "$dir/whole/$file" "$dir/run/$file" || fail "resumed run: $file differs from the uninterrupted run's"
 done
@@ -43,20 +43,20 @@ for file in sweep.csv sweep.md; do
 done
 echo "ok: a killed sweep resumed writes the uninterrupted sweep's bytes"
 
-kill_after 0.7 "$dir/left" "$bin" run "$table" --realizations 60 --out "$dir/left" --threads 2
+kill_after 0.7 "$dir/left" "$bin" run "$table" --realizations 40 --out "$dir/left" --threads 2
 refused "an interrupted run's store without --resume" "finished chunks of an interrupted run: --resume" \
-  "$dir/left" "$bin" run "$table" --realizations 60 --out "$dir/left"
+  "$dir/left" "$bin" run "$table" --realizations 40 --out "$dir/left"
 refused "another run's store with --resume" "holds chunks of another run" \
-  "$dir/left" "$bin" run "$table" --realizations 60 --seed 9 --out "$dir/left" --resume
+  "$dir/left" "$bin" run "$table" --realizations 40 --seed 9 --out "$dir/left" --resume
 refused "finished results without --overwrite" "--overwrite" "$dir/whole/never" \
-  "$bin" run "$table" --realizations 60 --out "$dir/whole" --resume
-"$bin" run "$table" --realizations 60 --seed 9 --out "$dir/left" --quiet --overwrite || fail "--overwrite"
+  "$bin" run "$table" --realizations 40 --out "$dir/whole" --resume
+"$bin" run "$table" --realizations 40 --seed 9 --out "$dir/left" --quiet --overwrite || fail "--overwrite"
 [ -e "$dir/left.chunks" ] && fail "--overwrite left the old store"
 
 # A shard resumes like a run: killed, resumed, merged with its sibling, the whole run's bytes.
-kill_after 0.5 "$dir/shard0" "$bin" run "$table" --realizations 60 --shard 0/2 --out "$dir/shard0" --threads 2
-"$bin" run "$table" --realizations 60 --shard 0/2 --out "$dir/shard0" --quiet --resume || fail "resumed shard"
-"$bin" run "$table" --realizations 60 --shard 1/2 --out "$dir/shard1" --quiet || fail "shard 1/2"
+kill_after 0.5 "$dir/shard0" "$bin" run "$table" --realizations 40 --shard 0/2 --out "$dir/shard0" --threads 2
+"$bin" run "$table" --realizations 40 --shard 0/2 --out "$dir/shard0" --quiet --resume || fail "resumed shard"
+"$bin" run "$table" --realizations 40 --shard 1/2 --out "$dir/shard1" --quiet || fail "shard 1/2"
 "$bin" merge "$dir/merged" "$dir/shard1" "$dir/shard0" --quiet || fail "merge"
 cmp -s "$dir/whole/attempts.csv" "$dir/merged/attempts.csv" || fail "a resumed shard merged: attempts.csv differs"
 echo "ok: a killed shard resumed merges to the whole run's bytes"

@@ -32,10 +32,12 @@ std::string IdentityIn(const fs::path& folder) {
   return std::string(csv.Text(csv.Column({"identity"})));
 }
 
+// Whole chunk files (chunk-N.csv), not the temporaries a kill left (chunk-N.csv.partial).
 int CountChunkFiles(const fs::path& folder) {
   int count = 0;
   for (const fs::directory_entry& entry : fs::directory_iterator(folder)) {
-    if (entry.path().filename().string().rfind("chunk-", 0) == 0) ++count;
+    const std::string name = entry.path().filename().string();
+    if (name.rfind("chunk-", 0) == 0 && entry.path().extension() == ".csv") ++count;
   }
   return count;
 }
@@ -48,7 +50,7 @@ fs::path ChunkStorePath(const fs::path& out) {
   return base.parent_path() / (base.filename().string() + ".chunks");
 }
 
-ChunkStore::ChunkStore(const fs::path& out, const Plan& plan, Mode mode) : plan_(plan), folder_(ChunkStorePath(out)) {
+ChunkStore::ChunkStore(const fs::path& out, const Plan& plan, Mode mode) : folder_(ChunkStorePath(out)) {
   std::error_code error;
   // Killed before its plan file was in place, a store holds nothing to keep.
   if (fs::exists(folder_, error) && (mode == Mode::kOverwrite || !fs::exists(folder_ / kPlanFile, error))) {

@@ -36,7 +36,6 @@ class ChunkStore {
  private:
   std::filesystem::path ChunkPath(int chunk) const;
 
-  const Plan& plan_;
   std::filesystem::path folder_;
   std::map<int, ChunkResult> finished_;
   int unreadable_ = 0;
