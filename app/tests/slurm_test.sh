@@ -16,8 +16,17 @@ for tool in munged slurmctld slurmd sbatch sinfo scontrol; do
   command -v "$tool" >/dev/null || skip "$tool is not installed (scripts/setup.sh installs slurm-wlm and munge)"
 done
 pids=()
+# Lets the jobs end first (a batch step reports to slurmctld after its files are written), then
+# stops the daemons the test started, and any step daemon of this test's jobs (run in its folder).
 stop_daemons() {
+  for _ in $(seq 60); do
+    [ -z "$(squeue -h 2>/dev/null)" ] && break
+    sleep 0.5
+  done
   for pid in "${pids[@]}"; do kill "$pid" 2>/dev/null; done
+  for pid in $(pgrep -x slurmstepd); do
+    [[ "$(readlink "/proc/$pid/cwd")" == "$dir"* ]] && kill -9 "$pid" 2>/dev/null  # it ignores SIGTERM
+  done
   rm -rf "$dir"
 }
 trap stop_daemons EXIT
