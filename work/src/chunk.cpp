@@ -3,6 +3,7 @@
 #include <cstdio>
 #include <sstream>
 
+#include "anchorbench/io/csv_reader.hpp"
 #include "anchorbench/io/format.hpp"
 #include "anchorbench/io/input_error.hpp"
 #include "anchorbench/report/run_outputs.hpp"
@@ -81,6 +82,10 @@ ChunkResult ParseChunk(const Plan& plan, int chunk, const std::string& text, con
     throw io::InputError(source + ":" + std::to_string(next + 2) + ": attempts beyond the chunk's units");
   }
   return {std::move(file.attempts), std::move(file.lines)};
+}
+
+ChunkResult ReadChunkFile(const Plan& plan, int chunk, const std::string& path) {
+  return ParseChunk(plan, chunk, io::ReadWholeFile(path), path);
 }
 
 }  // namespace anchorbench::work

@@ -70,7 +70,7 @@ ChunkStore::ChunkStore(const fs::path& out, const Plan& plan, Mode mode) : folde
       const fs::path path = ChunkPath(chunk);
       if (!fs::exists(path, error)) continue;
       try {
-        finished_.emplace(chunk, ParseChunk(plan, chunk, io::ReadWholeFile(path.string()), path.string()));
+        finished_.emplace(chunk, ReadChunkFile(plan, chunk, path.string()));
       } catch (const InputError&) {
         ++unreadable_;  // torn by a crash of the machine (chunks are not flushed): computed again
       }

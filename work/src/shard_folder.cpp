@@ -73,7 +73,7 @@ std::map<int, ChunkResult> ReadShardChunks(const fs::path& folder, const ShardIn
       throw io::InputError(path.string() + ": missing; shard " + std::to_string(info.shard.index) + "/" +
                            std::to_string(info.shard.count) + " holds it (a folder edited after the run?)");
     }
-    chunks.emplace(chunk, ParseChunk(plan, chunk, io::ReadWholeFile(path.string()), path.string()));
+    chunks.emplace(chunk, ReadChunkFile(plan, chunk, path.string()));
   }
   if (static_cast<int>(chunks.size()) != info.chunks) {
     throw io::InputError((folder / "shard.csv").string() + ": says " + std::to_string(info.chunks) +

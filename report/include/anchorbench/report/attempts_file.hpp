@@ -15,7 +15,6 @@ namespace anchorbench::report {
 // Each attempt with what the summaries use (row, realization, method, initialized, t_init, error,
 // position NEES, compute_s) and its line as written.
 struct AttemptsFile {
-  std::string header;
   std::vector<runner::Attempt> attempts;
   std::vector<std::string> lines;
 };

@@ -33,5 +33,7 @@ std::string ChunkFileName(int chunk);
 // A chunk's text read back; `source` names it in errors. Refuses (io::InputError) a text that is
 // not every attempt of exactly the chunk's units, in order (one per anchor and trigger).
 ChunkResult ParseChunk(const Plan& plan, int chunk, const std::string& text, const std::string& source);
+// The same from a chunk file (a store's, a shard folder's), named in errors.
+ChunkResult ReadChunkFile(const Plan& plan, int chunk, const std::string& path);
 
 }  // namespace anchorbench::work
