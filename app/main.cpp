@@ -8,6 +8,7 @@
 #include <CLI/CLI.hpp>
 
 #include "anchorbench/eval/oracles.hpp"
+#include "anchorbench/io/format.hpp"
 #include "anchorbench/io/input_error.hpp"
 #include "commands.hpp"
 #ifdef ANCHORBENCH_MPI
@@ -41,6 +42,23 @@ CLI::Validator WholeNumber(long long min, long long max) {
         return "";
       },
       "INT");
+}
+
+// A number in [min, max], checked on the text: CLI::Range lets "nan" through (every comparison
+// with it is false), and "inf" must not stand for "no limit".
+CLI::Validator FiniteNumber(double min, double max) {
+  return CLI::Validator(
+      [min, max](std::string& text) -> std::string {
+        double value = 0.0;
+        const char* end = text.data() + text.size();
+        const auto [ptr, ec] = std::from_chars(text.data(), end, value);
+        if (text.empty() || ec != std::errc() || ptr != end || !(value >= min && value <= max)) {
+          return "expected a finite number from " + anchorbench::io::FormatNumber(min) + " to " +
+                 anchorbench::io::FormatNumber(max) + ", got '" + text + "'";
+        }
+        return "";
+      },
+      "NUMBER");
 }
 
 // The options every Monte Carlo command shares (run, sweep, pdop-study; calibrate without
@@ -115,7 +133,7 @@ void AddRecordingCommands(CLI::App& cli, CommandLine& c) {
   c.replay_cmd->add_flag("--overwrite", c.replay.overwrite, "Replace an existing --out folder or --trace file");
   c.replay_cmd->add_option("--max-range-m", c.replay.policy.max_range_m,
                            "Drop ranges above this as implausible (default 1000)")
-      ->check(CLI::Range(1e-3, 1e7));
+      ->check(FiniteNumber(1e-3, 1e7));
   c.replay_cmd->add_option("--repeated-poses", c.replay.repeated_poses,
                            "Two poses of a tag at one time, different positions: error (default), first, average")
       ->check(CLI::IsMember({"error", "first", "average"}));
@@ -124,7 +142,11 @@ void AddRecordingCommands(CLI::App& cli, CommandLine& c) {
       ->check(CLI::IsMember({"error", "drop", "sort"}));
   c.replay_cmd->add_option("--sort-window-s", c.replay.policy.sort_window_s,
                            "With --out-of-order sort: how late a row may come (default 1 s)")
-      ->check(CLI::Range(0.0, 3600.0));
+      ->check(FiniteNumber(0.0, 3600.0));
+  c.replay_cmd->add_option("--max-speed-mps", c.replay.policy.max_speed_mps,
+                           "Drop a pose farther from its tag's last one than this speed allows, unless the next "
+                           "agrees with it (default 50 m/s)")
+      ->check(FiniteNumber(1e-3, 1e6));
   c.replay_cmd->add_flag("--strict", c.replay.policy.strict, "Every row that would be dropped is an error instead");
   c.replay_cmd->add_flag("--quiet", c.replay.quiet, "No progress line and no drop summary on stderr");
 

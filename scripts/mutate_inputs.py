@@ -1,9 +1,17 @@
 """Mutated inputs against an anchorbench binary (the sanitizer build in CI): configs, CSV files
-and command lines, each a small random change of a valid one. Every case must end in exit 0 or
-exit 2 with one line on stderr; a crash, a sanitizer report, exit 3 (internal error) or a hang
-fails. Deterministic for a seed. Usage: mutate_inputs.py ANCHORBENCH CASES [SEED]"""
+and command lines, each a small random change of a valid one, and hostile shapes (seeds near the
+integer limits, row names with line breaks and commas, alias bombs, tampered chunk stores and
+evaluation logs, inputs inside outputs). Every case must end in exit 0 or exit 2 with one line on
+stderr; a crash, a sanitizer report, exit 3 (internal error) or a hang fails; a hostile case that
+exits 0 must also keep its promise (the seed written back exactly, a resumed or reused run's
+bytes those of a clean one, the inputs untouched). Deterministic for a seed.
+Usage: mutate_inputs.py ANCHORBENCH CASES [SEED]"""
+import filecmp
+import glob
+import json
 import os
 import random
+import shutil
 import subprocess
 import sys
 import tempfile
@@ -59,8 +67,7 @@ def case(folder, n):
     target = [config, poses, ranges, anchors][kind if kind < 3 else rng.randrange(4)]
     files[target] = mutate(files[target])
     for path, text in files.items():
-        with open(path, "w", encoding="utf-8", errors="surrogateescape") as f:
-            f.write(text)
+        write(path, text)
     out = os.path.join(folder, f"{n}_out")
     if target == config and rng.random() < 0.5:
         args = ["run", config, "--out", out, "--quiet", "--threads", "1"]
@@ -77,11 +84,115 @@ def case(folder, n):
     return args
 
 
+SEEDS = ["0", "2147483647", "2147483648", "4294967295", "4294967296", "4294967301", "9223372036854775807",
+         "9223372036854775808", "18446744073709551615", "-1", "1e3", "0x10"]
+ROW_NAMES = ['"b\\nc"', '"a,b"', '"q\\"x"', '"p|q"', '"\\t"', '""', '"ok"', '"\\r"', "'x,y'"]
+
+
+def write(path, text):
+    with open(path, "w", encoding="utf-8", errors="surrogateescape") as f:
+        f.write(text)
+
+
+def references(folder):
+    """A clean run, its chunks as a shard, and a small calibration's log: what tampering is judged against."""
+    config = os.path.join(folder, "ref.yaml")
+    write(config, CONFIG)
+    run = lambda *a: subprocess.run([BIN, *a], capture_output=True, timeout=300, check=True)
+    run("run", config, "--out", os.path.join(folder, "ref_run"), "--quiet", "--threads", "1")
+    run("run", config, "--shard", "0/1", "--out", os.path.join(folder, "ref_shard"), "--quiet", "--threads", "1")
+    write(os.path.join(folder, "table.yaml"), "base: ref.yaml\nrows:\n  - name: a\n    paper:\n"
+          "      fixed: {avg_m: 0.2, med_m: 0.05, init: 6, gt1m: 1, ratio_pct: 5}\n"
+          "      gated: {avg_m: 0.1, med_m: 0.05, init: 3, gt1m: 0, ratio_pct: 0}\n")
+    write(os.path.join(folder, "cal.yaml"), "experiment: table.yaml\nseed: 11\nrealizations: 2\nverify_seeds: [3]\n"
+          "global: {algorithm: GN_DIRECT_L, max_evaluations: 5}\nlocal: {algorithm: LN_SBPLX, max_evaluations: 2}\n"
+          "parameters:\n  - {key: scenario.tunnel.width_m, min: 6, max: 14, provenance: a test}\n")
+    run("calibrate", os.path.join(folder, "cal.yaml"), "--out", os.path.join(folder, "ref_cal"), "--quiet", "--threads", "1")
+    os.remove(os.path.join(folder, "table.calibrated.yaml"))
+
+
+def hostile(folder, n):
+    """(args, check): a hostile case, and what must hold if it exits 0 (None: nothing more)."""
+    config = os.path.join(folder, "ref.yaml")
+    out = os.path.join(folder, f"{n}_out")
+    kind = rng.randrange(6)
+    if kind == 0:  # seeds near the integer limits, on the command line or in the file
+        seed = rng.choice(SEEDS)
+        if rng.random() < 0.5:
+            args = ["run", config, "--seed", seed, "--realizations", "1", "--out", out, "--quiet"]
+        else:
+            path = os.path.join(folder, f"{n}_seed.yaml")
+            write(path, f"base: ref.yaml\nrealizations: 1\nseed: {seed}\n")
+            args = ["run", path, "--out", out, "--quiet"]
+        def check():
+            manifest = json.load(open(os.path.join(out, "manifest.json")))
+            return str(manifest["seed"]) == seed and str(manifest["resolved_config"]["seed"]) == seed
+        return args, check
+    if kind == 1:  # row names that would break a CSV line or a Markdown table
+        path = os.path.join(folder, f"{n}_rows.yaml")
+        write(path, f"base: ref.yaml\nrealizations: 1\nrows:\n  - name: {rng.choice(ROW_NAMES)}\n")
+        return ["run", path, "--out", out, "--quiet"], None
+    if kind == 2:  # an alias bomb, of unknown keys or inside a known section
+        depth, width = rng.randint(4, 12), rng.randint(2, 9)
+        text = "a0: &a0 [" + ", ".join(["x"] * width) + "]\n"
+        for i in range(1, depth + 1):
+            text += f"a{i}: &a{i} [" + ", ".join([f"*a{i - 1}"] * width) + "]\n"
+        if rng.random() < 0.5:
+            text += f"scenario: {{tag_offsets_m: *a{depth}}}\n"
+        path = os.path.join(folder, f"{n}_bomb.yaml")
+        write(path, text)
+        return ["run", path, "--out", out, "--quiet"], None
+    if kind == 3:  # a tampered chunk store, resumed: recomputed to the clean run's bytes
+        store = out + ".chunks"
+        os.makedirs(store)
+        for chunk in glob.glob(os.path.join(folder, "ref_shard", "chunk-*.csv")):
+            shutil.copy(chunk, store)
+        plan = open(os.path.join(folder, "ref_shard", "shard.csv")).read().split("\n")[1].split(",")[5]
+        write(os.path.join(store, "plan.csv"), f"identity,chunks,units\n{plan},0,0\n")
+        victim = rng.choice(sorted(glob.glob(os.path.join(store, "chunk-*.csv"))))
+        write(victim, mutate(open(victim).read()))
+        check = lambda: all(filecmp.cmp(os.path.join(out, f), os.path.join(folder, "ref_run", f), shallow=False)
+                            for f in ("attempts.csv", "summary.csv"))
+        return ["run", config, "--out", out, "--resume", "--quiet", "--threads", "1"], check
+    if kind == 4:  # a tampered evaluation log, reused: refused, or the clean calibration's bytes
+        log = os.path.join(folder, f"{n}_log.csv")
+        write(log, mutate(open(os.path.join(folder, "ref_cal", "evaluations.csv")).read()))
+        calibrated = os.path.join(folder, "table.calibrated.yaml")
+        if os.path.exists(calibrated):
+            os.remove(calibrated)
+        check = lambda: filecmp.cmp(os.path.join(out, "evaluations.csv"),
+                                    os.path.join(folder, "ref_cal", "evaluations.csv"), shallow=False)
+        return ["calibrate", os.path.join(folder, "cal.yaml"), "--out", out, "--reuse", log, "--quiet"], check
+    # an input inside the output: refused, and the input still there
+    os.makedirs(out, exist_ok=True)
+    inside = os.path.join(out, "in.yaml")
+    write(inside, "base: ../ref.yaml\nrealizations: 1\n")
+    choice = rng.randrange(3)
+    if choice == 0:
+        args = ["run", inside, "--out", out, "--overwrite", "--quiet"]
+    elif choice == 1:
+        outer = os.path.join(folder, f"{n}_outer.yaml")
+        write(outer, f"base: {n}_out/in.yaml\n")
+        args = ["run", outer, "--out", out, "--overwrite", "--quiet"]
+    else:
+        log = os.path.join(folder, "log_for_trace")
+        args = ["replay", "--poses", os.path.join(log, "poses.csv"), "--ranges", os.path.join(log, "ranges.csv"),
+                "--out", out, "--trace", os.path.join(out, "in.yaml"), "--overwrite", "--quiet"]
+    return args, lambda: os.path.exists(inside) and "ref.yaml" in open(inside).read()
+
+
 failures = crashes = 0
 counts = {0: 0, 2: 0}
 with tempfile.TemporaryDirectory() as folder:
+    references(folder)
+    subprocess.run([BIN, "simulate", os.path.join(folder, "ref.yaml"), "--out", os.path.join(folder, "log_for_trace")],
+                   capture_output=True, check=True)
     for n in range(CASES):
-        args = case(folder, n)
+        check = None
+        if rng.random() < 0.4:
+            args, check = hostile(folder, n)
+        else:
+            args = case(folder, n)
         try:
             done = subprocess.run([BIN] + args, capture_output=True, timeout=60)
         except subprocess.TimeoutExpired:
@@ -92,6 +203,9 @@ with tempfile.TemporaryDirectory() as folder:
         ok = done.returncode in (0, 2) and "Sanitizer" not in err and "runtime error" not in err
         if done.returncode == 2:
             ok = ok and err.count("\n") == 1
+        if ok and done.returncode == 0 and check is not None and not check():
+            ok = False
+            err += "\n(exit 0, but the promise of the case does not hold)"
         if ok:
             counts[done.returncode] += 1
         else:

@@ -5,6 +5,7 @@
 #include "anchorbench/calibrate/calibration_report.hpp"
 #include "anchorbench/calibrate/evaluation_log.hpp"
 #include "anchorbench/calibrate/fit.hpp"
+#include "anchorbench/config/config_yaml.hpp"
 #include "anchorbench/config/load_calibration.hpp"
 #include "anchorbench/config/load_config.hpp"
 #include "anchorbench/io/atomic_file.hpp"
@@ -91,9 +92,9 @@ calibrate::EvaluationLog OpenLog(const CalibrateArgs& args, const runner::Calibr
     try {
       reused = log.Reuse(source);
     } catch (const InputError& e) {
-      if (source != running_log) throw;
-      throw InputError(std::string(e.what()) + "; it is the log of a killed calibration of other parameters: " +
-                       "remove it to start afresh");
+      const std::string what = e.what();
+      if (source != running_log || what.find(":1: ") == std::string::npos) throw;  // a line of it: cut that line
+      throw InputError(what + "; it is the log of a killed calibration of other parameters: remove it to start afresh");
     }
     if (!args.quiet) std::cerr << "calibrate: " << reused << " evaluations known from " << source.string() << "\n";
   }
@@ -130,6 +131,27 @@ std::vector<calibrate::Verification> Verify(const runner::CalibrationSpec& spec,
   return verification;
 }
 
+// A calibrated config is a few lines per parameter; claimed before the first evaluation.
+constexpr std::uintmax_t kCalibratedConfigBytes = 1 << 16;
+
+// Every file the calibration reads (never replaced or removed): the calibration file, the
+// experiment and its bases, the reused log.
+std::vector<fs::path> Inputs(const CalibrateArgs& args, const runner::CalibrationSpec& spec) {
+  std::vector<fs::path> inputs;
+  for (const std::string& file : config::ConfigFiles(args.config)) inputs.emplace_back(file);
+  for (const std::string& file : config::ConfigFiles(spec.experiment_path)) inputs.emplace_back(file);
+  if (!args.reuse.empty()) inputs.emplace_back(args.reuse);
+  return inputs;
+}
+
+void CheckReuse(const std::string& reuse) {
+  if (reuse.empty()) return;
+  std::error_code error;
+  if (!fs::exists(reuse, error)) throw InputError("--reuse " + reuse + ": no such file");
+  if (fs::is_directory(reuse, error)) throw InputError("--reuse " + reuse + ": is a folder, not an evaluation log");
+  if (!fs::is_regular_file(reuse, error)) throw InputError("--reuse " + reuse + ": is not a regular file");
+}
+
 }  // namespace
 
 int CalibrateCommand(const CalibrateArgs& args, const AppContext& app) {
@@ -143,16 +165,26 @@ int CalibrateCommand(const CalibrateArgs& args, const AppContext& app) {
                      runner::kFixedWindowTrigger + " and " + runner::kPaperTrigger + ": nothing to calibrate to");
   }
   const std::vector<double> hand = CheckParameters(spec, experiment, app);
-  if (!args.reuse.empty() && !fs::is_regular_file(args.reuse)) throw InputError(args.reuse + ": no such file (--reuse)");
+  CheckReuse(args.reuse);
   const std::string name = fs::path(args.config).stem().string();
   const MonteCarloSetup setup = SetUpMonteCarlo(args, name);
-  const std::unique_ptr<io::ResultFolder> out = OpenResultFolder(args, setup, 1 << 22);
+  const std::vector<fs::path> inputs = Inputs(args, spec);
+  io::ResultFolder::Options options;
+  options.overwrite = args.overwrite;
+  options.expected_bytes = 1 << 22;
+  options.inputs = inputs;
+  io::ResultFolder out(setup.out, options);
   const fs::path experiment_path(spec.experiment_path);
   io::AtomicFile calibrated(experiment_path.parent_path() / (experiment_path.stem().string() + ".calibrated.yaml"),
-                            args.overwrite, {args.config, spec.experiment_path});
+                            args.overwrite, inputs, kCalibratedConfigBytes);
   std::vector<std::string> row_names;
   for (const runner::RowConfig& row : rows) row_names.push_back(row.name);
   const fs::path running_log = setup.out.string() + ".evaluations.csv";  // beside the folder: resumable
+  std::error_code error;
+  if (fs::exists(running_log, error) && !fs::is_regular_file(running_log, error)) {
+    throw InputError(running_log.string() + ": is a folder (or not a regular file), not the evaluation log of a " +
+                     "killed calibration; move it away");
+  }
   calibrate::EvaluationLog log = OpenLog(args, spec, experiment, targets, row_names, running_log);
 
   // The search, then the verification of its best point.
@@ -172,20 +204,20 @@ int CalibrateCommand(const CalibrateArgs& args, const AppContext& app) {
   verifying.Finish(static_cast<int>(spec.verify_seeds.size()));
 
   // The folder, then the calibrated config; the running log goes once both are in place.
-  out->Write("evaluations.csv", [&](std::ostream& file) { calibrate::WriteEvaluationsCsv(file, log); });
-  out->Write("verification.csv", [&](std::ostream& file) { calibrate::WriteVerificationCsv(file, outcome); });
-  out->Write("profile.csv", [&](std::ostream& file) { calibrate::WriteProfileCsv(file, outcome); });
+  out.Write("evaluations.csv", [&](std::ostream& file) { calibrate::WriteEvaluationsCsv(file, log); });
+  out.Write("verification.csv", [&](std::ostream& file) { calibrate::WriteVerificationCsv(file, outcome); });
+  out.Write("profile.csv", [&](std::ostream& file) { calibrate::WriteProfileCsv(file, outcome); });
   std::ostringstream markdown;
   calibrate::WriteCalibrationMarkdown(markdown, outcome);
-  out->Write("calibration.md", markdown.str());
+  out.Write("calibration.md", markdown.str());
   const runner::ExperimentConfig calibrated_experiment = config::LoadConfig(spec.experiment_path, best, app.parts);
   std::vector<std::string> command_line{"calibrate " + args.config};
   if (!args.reuse.empty()) command_line.push_back("--reuse " + args.reuse);
-  out->Write("manifest.json", report::ManifestJson(calibrated_experiment,
+  out.Write("manifest.json", report::ManifestJson(calibrated_experiment,
                                                    RunInfoOf(args, setup, app, calibrated_experiment, wall_time_s,
                                                              command_line)));
   calibrated.stream() << calibrate::CalibratedConfigYaml(outcome, experiment_path.filename().string());
-  out->Commit();
+  out.Commit();
   calibrated.Commit();
   fs::remove(running_log);
   if (!args.quiet) std::cout << markdown.str();

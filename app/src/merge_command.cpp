@@ -1,6 +1,7 @@
 #include <filesystem>
 #include <iostream>
 #include <map>
+#include <memory>
 
 #include "anchorbench/config/load_config.hpp"
 #include "anchorbench/io/input_error.hpp"
@@ -47,27 +48,57 @@ std::vector<work::ShardInfo> CheckShards(const std::vector<std::string>& folders
   return infos;
 }
 
+// Every folder's config.yaml and axes.txt, each the first folder's (a shard of one run holds the
+// same): the plan they rebuild, checked against shard.csv's.
+work::Plan CheckInputs(const std::vector<std::string>& folders, const work::ShardInfo& info,
+                       const registry::Components& parts, work::ShardInputs& inputs) {
+  const fs::path first(folders.front());
+  inputs = work::ReadShardInputs(first);
+  const work::Plan plan = work::RebuildPlan(inputs, parts);
+  if (plan.identity() != info.plan) {
+    throw InputError((first / "config.yaml").string() + ": with axes.txt gives plan " + plan.identity() +
+                     ", shard.csv says " + info.plan + " (edited after the run?)");
+  }
+  for (std::size_t s = 1; s < folders.size(); ++s) {
+    const work::ShardInputs other = work::ReadShardInputs(folders[s]);
+    if (other.config_yaml != inputs.config_yaml || runner::DescribeAxes(other.axes) != runner::DescribeAxes(inputs.axes)) {
+      throw InputError((fs::path(folders[s]) / "config.yaml").string() + ": with axes.txt differs from " +
+                       (first / "config.yaml").string() + "'s: shards of one run hold the same (edited after the run?)");
+    }
+  }
+  return plan;
+}
+
+// The merged results' folder, claimed before any chunk is read: about the size of the chunks.
+std::unique_ptr<io::ResultFolder> OpenMerged(const MergeArgs& args, const std::string& name) {
+  io::ResultFolder::Options options;
+  options.overwrite = args.overwrite;
+  options.expected_bytes = 1 << 16;
+  std::error_code error;
+  for (const std::string& shard : args.shards) {
+    options.inputs.push_back(fs::path(shard) / "shard.csv");
+    options.input_folders.emplace_back(shard);
+    for (const fs::directory_entry& entry : fs::directory_iterator(shard, error)) {
+      if (entry.is_regular_file(error)) options.expected_bytes += entry.file_size(error);
+    }
+  }
+  return std::make_unique<io::ResultFolder>(io::ResultFolderPath(args.out, name), options);
+}
+
 }  // namespace
 
 int MergeCommand(const MergeArgs& args, const AppContext& app) {
   const std::vector<work::ShardInfo> infos = CheckShards(args.shards);
-  const fs::path first(args.shards.front());
-  const work::ShardInputs inputs = work::ReadShardInputs(first);
-  const work::Plan plan = work::RebuildPlan(inputs, app.parts);
-  if (plan.identity() != infos.front().plan) {
-    throw InputError((first / "config.yaml").string() + ": with axes.txt gives plan " + plan.identity() +
-                     ", shard.csv says " + infos.front().plan + " (edited after the run?)");
-  }
+  work::ShardInputs inputs;
+  const work::Plan plan = CheckInputs(args.shards, infos.front(), app.parts, inputs);
+  const std::unique_ptr<io::ResultFolder> out = OpenMerged(args, infos.front().name);
   std::map<int, work::ChunkResult> chunks;
   for (std::size_t s = 0; s < args.shards.size(); ++s) {
     chunks.merge(work::ReadShardChunks(args.shards[s], infos[s], plan));
   }
 
-  io::ResultFolder::Options options;
-  options.overwrite = args.overwrite;
-  for (const std::string& shard : args.shards) options.inputs.push_back(fs::path(shard) / "shard.csv");
-  io::ResultFolder out(io::ResultFolderPath(args.out, infos.front().name), options);
   const std::vector<work::ExperimentAttempts> joined = work::Join(plan, chunks);
+  const fs::path first(args.shards.front());
   report::RunInfo info;
   info.config_path = (first / "config.yaml").string();
   info.revision = infos.front().revision;
@@ -77,9 +108,9 @@ int MergeCommand(const MergeArgs& args, const AppContext& app) {
   if (infos.front().command == "run") {
     runner::ExperimentConfig config = plan.experiments().front();
     config.name = infos.front().name;
-    markdown = CommitRun(out, config, joined.front(), info);
+    markdown = CommitRun(*out, config, joined.front(), info);
   } else {
-    markdown = CommitSweep(out, infos.front().name, inputs.axes, plan, joined, info);
+    markdown = CommitSweep(*out, infos.front().name, inputs.axes, plan, joined, info);
   }
   if (!args.quiet) std::cout << markdown;
   return 0;

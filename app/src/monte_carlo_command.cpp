@@ -4,6 +4,7 @@
 #include <iostream>
 #include <sstream>
 
+#include "anchorbench/config/config_yaml.hpp"
 #include "anchorbench/config/load_config.hpp"
 #include "anchorbench/report/summary.hpp"
 #include "anchorbench/report/sweep_report.hpp"
@@ -18,12 +19,18 @@ MonteCarloSetup SetUpMonteCarlo(const MonteCarloArgs& args, const std::string& c
   return setup;
 }
 
+std::vector<std::filesystem::path> InputsOf(const MonteCarloArgs& args) {
+  std::vector<std::filesystem::path> inputs;
+  for (const std::string& file : config::ConfigFiles(args.config)) inputs.emplace_back(file);
+  return inputs;
+}
+
 std::unique_ptr<io::ResultFolder> OpenResultFolder(const MonteCarloArgs& args, const MonteCarloSetup& setup,
                                                   std::uintmax_t expected_bytes) {
   io::ResultFolder::Options options;
   options.overwrite = args.overwrite;
   options.expected_bytes = expected_bytes;
-  options.inputs = {args.config};
+  options.inputs = InputsOf(args);
   return std::make_unique<io::ResultFolder>(setup.out, options);
 }
 
@@ -34,16 +41,26 @@ work::ChunkStore::Mode StoreMode(const MonteCarloArgs& args) {
   return args.overwrite ? work::ChunkStore::Mode::kOverwrite : work::ChunkStore::Mode::kFresh;
 }
 
+work::Shard ShardOf(const MonteCarloArgs& args) {
+  return args.shard.empty() ? work::Shard{} : work::ParseShard(args.shard, "--shard");
+}
+
 }  // namespace
+
+std::uintmax_t RunResultBytes(const work::Plan& plan, const MonteCarloArgs& args) {
+  constexpr std::uintmax_t kTables = 1 << 16, kBytesPerAttempt = 360;
+  if (!args.shard.empty()) return work::ChunkBytes(plan, ShardOf(args)) + kTables;
+  return kBytesPerAttempt * static_cast<std::uintmax_t>(plan.attempts()) + kTables;
+}
 
 PlanOutcome ComputePlan(const MonteCarloArgs& args, const MonteCarloSetup& setup, const PlanJob& job,
                         const AppContext& app, io::ResultFolder& out) {
-  const std::optional<work::Shard> shard =
-      args.shard.empty() ? std::nullopt : std::optional(work::ParseShard(args.shard, "--shard"));
-  work::ChunkStore store(out.target(), job.plan, StoreMode(args));
-  if (store.unreadable() > 0 && !args.quiet) {
-    std::cerr << "anchorbench: " << store.folder().string() << ": " << store.unreadable()
-              << " chunk file(s) do not read back (torn by a crash?); computing them again\n";
+  const std::optional<work::Shard> shard = args.shard.empty() ? std::nullopt : std::optional(ShardOf(args));
+  work::ChunkStore store(out.target(), job.plan, StoreMode(args), work::ChunkBytes(job.plan, ShardOf(args)),
+                         InputsOf(args));
+  if (store.unreadable() > 0) {  // even with --quiet: the store was damaged
+    std::cerr << "anchorbench: note: " << store.folder().string() << ": " << store.unreadable()
+              << " chunk file(s) do not read back (first: " << store.first_unreadable() << "); computing them again\n";
   }
   Progress progress(job.command + " " + job.name, args.quiet);
   long long units = 0;
@@ -61,7 +78,7 @@ PlanOutcome ComputePlan(const MonteCarloArgs& args, const MonteCarloSetup& setup
   const work::ShardInfo info{*shard, static_cast<int>(chunks.size()), job.command, job.name, job.plan.identity(),
                              app.revision};
   work::WriteShardFolder([&](const std::string& name, const std::string& text) { out.Write(name, text); }, info,
-                         job.inputs, chunks);
+                         job.inputs, job.plan, chunks);
   out.Commit();
   store.Remove();
   return outcome;

@@ -26,10 +26,17 @@ struct MonteCarloSetup {
 // Resolves the thread count and where the results go; call it only once the input is valid.
 MonteCarloSetup SetUpMonteCarlo(const MonteCarloArgs& args, const std::string& config_name);
 
-// The result folder, before any work: refused if it holds earlier results without --overwrite,
-// checked for being writable, with `expected_bytes` reserved on its disk.
+// Every file the command reads: the config and its bases (never overwritten or deleted).
+std::vector<std::filesystem::path> InputsOf(const MonteCarloArgs& args);
+
+// The result folder, before any work: refused if it holds earlier results without --overwrite or
+// one of the command's inputs, checked for being writable, with `expected_bytes` reserved on its disk.
 std::unique_ptr<io::ResultFolder> OpenResultFolder(const MonteCarloArgs& args, const MonteCarloSetup& setup,
                                                   std::uintmax_t expected_bytes);
+
+// The bytes run and sweep claim for their results: a run's attempts.csv (lines of 250-310 bytes)
+// and tables; a shard's folder of chunk files.
+std::uintmax_t RunResultBytes(const work::Plan& plan, const MonteCarloArgs& args);
 
 // What run and sweep share once their plan is made: which command on which experiment, and what
 // a shard folder records to rebuild the plan.
@@ -44,8 +51,8 @@ struct PlanOutcome {
   double wall_time_s = 0.0;
 };
 // Computes the job's chunks (all, or --shard's) into the chunk store beside `out` (--resume takes
-// its chunks, --overwrite discards them, an interrupted store is otherwise refused), with
-// progress. A shard's chunks become its shard folder, committed here; a whole plan's come back
+// its chunks, --overwrite discards them, an interrupted store is otherwise refused; the space of
+// the chunks still to come is claimed first), with progress. A shard's chunks become its shard folder, committed here; a whole plan's come back
 // joined for the command to commit, after which RemoveStore(out).
 PlanOutcome ComputePlan(const MonteCarloArgs& args, const MonteCarloSetup& setup, const PlanJob& job,
                         const AppContext& app, io::ResultFolder& out);

@@ -134,7 +134,7 @@ void ServeThread(const work::Plan* plan, const std::string& plan_error, int thre
     try {
       if (!plan) throw io::InputError(plan_error);
       const work::ChunkResult result = work::ComputeChunk(*plan, chunk, components, samples);
-      request = Pack({std::to_string(thread), chunk_text, work::ChunkText(result)});
+      request = Pack({std::to_string(thread), chunk_text, work::ChunkText(*plan, chunk, result)});
       tag = kResult;
     } catch (const io::InputError& e) {
       request = std::string("2") + e.what();

@@ -4,6 +4,7 @@
 
 #include "anchorbench/config/load_config.hpp"
 #include "anchorbench/io/atomic_file.hpp"
+#include "anchorbench/io/input_error.hpp"
 #include "anchorbench/io/log_reader.hpp"
 #include "anchorbench/io/recorded_data.hpp"
 #include "anchorbench/io/result_folder.hpp"
@@ -69,7 +70,13 @@ int ReplayCommand(const ReplayArgs& args, const AppContext& app) {
   std::unique_ptr<io::AtomicFile> trace_file;
   runner::TraceSink trace;
   if (!args.trace.empty()) {
-    trace_file = std::make_unique<io::AtomicFile>(args.trace, args.overwrite, Inputs(args));
+    if (out && io::IsInside(args.trace, out->target())) {
+      throw io::InputError("--trace " + args.trace + ": lies inside --out " + args.out +
+                           ", which is replaced as a whole; put the trace beside it");
+    }
+    constexpr std::uintmax_t kBytesPerTraceRow = 64;
+    trace_file = std::make_unique<io::AtomicFile>(args.trace, args.overwrite, Inputs(args),
+                                                  kBytesPerTraceRow * static_cast<std::uintmax_t>(survey.range_rows));
     trace_file->stream() << report::kTraceHeader << '\n';
     trace = [&](const io::RangeRecord& r, const estimator::FeedResult& fed) {
       report::WriteTraceRow(trace_file->stream(), r, fed);

@@ -6,20 +6,6 @@
 #include "monte_carlo_command.hpp"
 
 namespace anchorbench::app {
-namespace {
-
-// attempts.csv is ~200 bytes a row; the rest of the folder is small.
-std::uintmax_t ExpectedBytes(const runner::ExperimentConfig& config) {
-  std::uintmax_t attempts = 0;
-  for (const runner::RowConfig& row : runner::RowsOf(config)) {
-    attempts += static_cast<std::uintmax_t>(config.realizations) * static_cast<std::uintmax_t>(row.scenario.NumAnchors()) *
-                row.estimator.triggers.size();
-  }
-  return 200 * attempts + (1 << 16);
-}
-
-}  // namespace
-
 int RunCommand(const RunArgs& args, const AppContext& app) {
   runner::ExperimentConfig config = config::LoadConfig(args.config, args.overrides, app.parts);
   if (args.seed) config.seed = *args.seed;
@@ -27,8 +13,8 @@ int RunCommand(const RunArgs& args, const AppContext& app) {
   runner::CheckWork(config);
   runner::CheckRows(runner::RowsOf(config), app.parts);
   const MonteCarloSetup setup = SetUpMonteCarlo(args, config.name);
-  const std::unique_ptr<io::ResultFolder> out = OpenResultFolder(args, setup, ExpectedBytes(config));
   const work::Plan plan({config});
+  const std::unique_ptr<io::ResultFolder> out = OpenResultFolder(args, setup, RunResultBytes(plan, args));
 
   const PlanOutcome run = ComputePlan(args, setup, {plan, "run", config.name, {config::ToYaml(config), {}}}, app, *out);
   if (!run.experiments) return 0;  // a shard: its folder is written

@@ -30,16 +30,23 @@ int SweepCommand(const SweepArgs& args, const AppContext& app) {
   const runner::ExperimentConfig base = config::LoadConfig(args.config, {}, app.parts);
   const std::vector<runner::SweepAxis> axes = runner::SweepAxes(base.sweep, args.axes);
   if (axes.empty()) throw io::InputError(args.config + ": nothing to sweep: give --set KEY=VALUES or a 'sweep' section");
+  for (const runner::SweepAxis& axis : axes) {
+    if (args.realizations && axis.key == "realizations") {
+      throw io::InputError("--realizations " + std::to_string(*args.realizations) +
+                           " and the sweep axis 'realizations' both set the realizations: give one of them");
+    }
+  }
   const std::vector<runner::SweepPoint> grid = runner::SweepGrid(axes);
   const std::vector<runner::ExperimentConfig> configs = PointConfigs(args, grid, app);
   const MonteCarloSetup setup = SetUpMonteCarlo(args, base.name);
-  // Per point, row and trigger a line of ~200 bytes in each of three files.
+  const work::Plan plan(configs);
+  // Per point, row and trigger a line of ~200 bytes in each of three files; a shard's chunk files.
   std::uintmax_t lines = 0;
   for (const runner::ExperimentConfig& config : configs) {
     for (const runner::RowConfig& row : runner::RowsOf(config)) lines += row.estimator.triggers.size();
   }
-  const std::unique_ptr<io::ResultFolder> out = OpenResultFolder(args, setup, 600 * lines + (1 << 16));
-  const work::Plan plan(configs);
+  const std::uintmax_t bytes = args.shard.empty() ? 600 * lines + (1 << 16) : RunResultBytes(plan, args);
+  const std::unique_ptr<io::ResultFolder> out = OpenResultFolder(args, setup, bytes);
   runner::ExperimentConfig resolved = base;
   if (args.realizations) resolved.realizations = *args.realizations;
   const work::ShardInputs inputs{config::ToYaml(resolved), axes};

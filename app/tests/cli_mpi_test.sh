@@ -25,6 +25,15 @@ for ranks in 2 3; do
   done
 done
 
+# The largest seed travels to the workers in the plan's text exactly (issue 22).
+"$bin" run "$dir/small.yaml" --seed 9223372036854775807 --out "$dir/plain_big_seed" --quiet --threads 2 || fail "plain run"
+mpi 2 "$mpi_bin" run "$dir/small.yaml" --seed 9223372036854775807 --out "$dir/mpi_big_seed" --quiet --threads 1 \
+  >/dev/null 2>&1 || fail "mpirun -n 2 run --seed 2^63-1"
+for file in attempts.csv summary.csv; do
+  cmp -s "$dir/plain_big_seed/$file" "$dir/mpi_big_seed/$file" || fail "seed 2^63-1 under MPI: $file differs"
+done
+echo "ok: seed_2^63-1_round_trips_through_mpi_plans"
+
 axis="estimator.trigger.pdop_threshold=0.5,1,2"
 "$bin" sweep "$dir/small.yaml" --set "$axis" --out "$dir/sweep_plain" --quiet || fail "plain sweep"
 mpi 3 "$mpi_bin" sweep "$dir/small.yaml" --set "$axis" --out "$dir/sweep_mpi" --quiet --threads 1 >/dev/null 2>&1 ||

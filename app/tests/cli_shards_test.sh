@@ -41,7 +41,7 @@ rm "$dir/s5-2/chunk-000002.csv"
 expect_refusal "a shard with a chunk missing" "chunk-000002.csv: missing; shard 2/5 holds it" \
   "$dir/s5-0" "$dir/s5-1" "$dir/s5-2" "$dir/s5-3" "$dir/s5-4"
 head -n 3 "$dir/s5-3/chunk-000003.csv" >"$dir/cut.csv" && mv "$dir/cut.csv" "$dir/s5-3/chunk-000003.csv"
-expect_refusal "a chunk cut short" "chunk-000003.csv: ends within unit" \
+expect_refusal "a chunk cut short" "chunk-000003.csv:1: its lines do not match its checksum" \
   "$dir/s5-0" "$dir/s5-1" "$dir/s5-3" "$dir/s5-2" "$dir/s5-4"
 # A sweep's shards merge to the sweep's bytes.
 axis="estimator.trigger.pdop_threshold=0.5,1,2"

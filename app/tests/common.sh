@@ -50,3 +50,24 @@ refused() {
     echo "ok: $what"
   fi
 }
+
+# expect_exit CODE DESCRIPTION EXPECTED_TEXT COMMAND...: the exit code, the text in one line of
+# stderr, no control bytes in it.
+expect_exit() {
+  local code="$1" what="$2" expected="$3"
+  shift 3
+  local err status
+  err=$("$@" 2>&1 >/dev/null)
+  status=$?
+  if [ "$status" -ne "$code" ]; then
+    fail "$what: exit $status, expected $code: $err"
+  elif [ -n "$expected" ] && ! grep -qF -- "$expected" <<<"$err"; then
+    fail "$what: message lacks '$expected': $err"
+  elif [ "$code" -ne 0 ] && [ "$(wc -l <<<"$err")" -ne 1 ]; then
+    fail "$what: expected one line, got: $err"
+  elif LC_ALL=C grep -q '[[:cntrl:]]' <<<"${err//$'\n'/}"; then
+    fail "$what: control bytes in the message"
+  else
+    echo "ok: $what"
+  fi
+}

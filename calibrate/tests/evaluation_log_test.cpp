@@ -2,9 +2,11 @@
 
 #include <filesystem>
 #include <fstream>
+#include <vector>
 
 #include <gtest/gtest.h>
 
+#include "anchorbench/io/hash.hpp"
 #include "anchorbench/io/input_error.hpp"
 
 namespace anchorbench::calibrate {
@@ -38,7 +40,7 @@ TEST_F(EvaluationLogTest, WritesEachComputedEvaluationAndReadsItBackExactly) {
   std::string header, line, rest;
   std::getline(in, header);
   std::getline(in, line);
-  EXPECT_EQ(header, "context,evaluation,stage,a.x,a.y,objective,1.fixed.avg_m,1.gated.init");
+  EXPECT_EQ(header, "context,evaluation,stage,a.x,a.y,objective,1.fixed.avg_m,1.gated.init,checksum");
   EXPECT_EQ(line.substr(0, 26), "0000000000000007,0,global,");
   EXPECT_FALSE(std::getline(in, rest));
 
@@ -83,6 +85,65 @@ TEST_F(EvaluationLogTest, RefusesALogOfOtherParameters) {
     FAIL() << "expected an error";
   } catch (const io::InputError& e) {
     EXPECT_NE(std::string(e.what()).find("log.csv:1: the log is of other parameters or cells"), std::string::npos);
+  }
+}
+
+// Each line carries the checksum of what precedes it: an edited cell, a negative or non-finite
+// one, and an evaluation repeated with other cells are refused with the line to cut.
+TEST_F(EvaluationLogTest, RefusesEditedLinesAndNamesTheLineToCut) {
+  const fs::path path = dir_ / "log.csv";
+  {
+    EvaluationLog log = Log();
+    log.AppendTo(path);
+    log.Record(At("0.5", 0.25), true);
+    log.Record(At("0.75", 0.5), true);
+  }
+  std::ifstream in(path);
+  std::vector<std::string> lines;
+  for (std::string line; std::getline(in, line);) lines.push_back(line);
+  ASSERT_EQ(lines.size(), 3u);
+  const auto refusal = [&](const std::string& line_2) {
+    std::ofstream(path) << lines[0] << '\n' << line_2 << '\n' << lines[2] << '\n';
+    try {
+      Log().Reuse(path);
+    } catch (const io::InputError& e) {
+      return std::string(e.what());
+    }
+    return std::string("accepted");
+  };
+  std::string edited = lines[1];
+  edited.replace(edited.find(",0.25,"), 6, ",0.26,");
+  EXPECT_NE(refusal(edited).find("log.csv:2: the line does not match its checksum (edited?); cut line 2"), std::string::npos);
+  std::string negative = lines[1];
+  negative.replace(negative.find(",0.25,"), 6, ",-1,");
+  EXPECT_NE(refusal(negative).find("log.csv:2: column '1.fixed.avg_m': -1 is not a finite number >= 0"), std::string::npos);
+  std::string not_finite = lines[1];
+  not_finite.replace(not_finite.find(",0.25,"), 6, ",inf,");
+  EXPECT_NE(refusal(not_finite).find("inf is not a finite number >= 0"), std::string::npos);
+  EXPECT_EQ(refusal(lines[1] + "\r"), "accepted");  // CRLF line ends are read as they are meant
+  // The same point again, with other cells and a checksum made to fit: one of the two is wrong.
+  EvaluationLog other = Log();
+  other.Record(At("0.75", 0.9), false);
+  std::string repeated = other.Line(0);
+  repeated.replace(repeated.find(",0,global,"), 10, ",1,global,");
+  repeated = repeated.substr(0, repeated.rfind(','));
+  repeated += "," + io::Fingerprint(repeated);
+  EXPECT_NE(refusal(repeated).find("log.csv:3: the evaluation at these values has other cells than line 2"),
+            std::string::npos);
+}
+
+// A log that cannot be written says why (here a device that is always full).
+TEST_F(EvaluationLogTest, AFailedWriteSaysWhy) {
+  if (!fs::exists("/dev/full")) GTEST_SKIP() << "no /dev/full";
+  EvaluationLog log = Log();
+  try {
+    log.AppendTo("/dev/full");
+    log.Record(At("0.5", 0.25), true);
+    FAIL() << "writing to /dev/full succeeded";
+  } catch (const io::InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("/dev/full: writing the evaluation log failed: No space left on device"),
+              std::string::npos)
+        << e.what();
   }
 }
 

@@ -4,6 +4,7 @@
 #include <filesystem>
 #include <fstream>
 #include <map>
+#include <optional>
 #include <sstream>
 
 #include <yaml-cpp/depthguard.h>
@@ -44,11 +45,43 @@ void CheckKeys(const YAML::Node& node, const std::string& source) {
   }
 }
 
+// Aliases let a small text stand for a huge tree (each `*a` repeats the whole of `&a`): the tree
+// is counted, node by node, before anything walks it, and refused beyond this many. A config of
+// the project has a few hundred; Table I's rows and the stress test's a few thousand.
+constexpr long kMaxConfigNodes = 200000;
+
+void CountNodes(const YAML::Node& node, long& budget, const std::string& source) {
+  if (--budget < 0) {
+    throw InputError(source + ": expands to more than " + std::to_string(kMaxConfigNodes) +
+                     " values (aliases repeated inside aliases?): not a config");
+  }
+  if (node.IsMap()) {
+    for (const auto& entry : node) {
+      CountNodes(entry.first, budget, source);
+      CountNodes(entry.second, budget, source);
+    }
+  } else if (node.IsSequence()) {
+    for (const auto& item : node) CountNodes(item, budget, source);
+  }
+}
+
+// The only document of a text; a second one (after '---') would be silently ignored, so it is an error.
+YAML::Node OnlyDocument(const std::string& text, const std::string& source) {
+  std::vector<YAML::Node> documents = YAML::LoadAll(text);
+  if (documents.size() > 1) {
+    throw InputError(source + ":" + Line(documents[1].Mark()) +
+                     ": a second YAML document (after '---'): a config is one document");
+  }
+  long budget = kMaxConfigNodes;
+  if (!documents.empty()) CountNodes(documents.front(), budget, source);
+  return documents.empty() ? YAML::Node() : documents.front();
+}
+
 // A config's text as a mapping of keys (an empty text is an empty mapping).
 YAML::Node ParseText(const std::string& text, const std::string& source) {
   YAML::Node root;
   try {
-    root = YAML::Load(text);
+    root = OnlyDocument(text, source);
   } catch (const YAML::DeepRecursion& e) {
     throw InputError(source + ":" + Line(e.mark) + ": nested deeper than the YAML reader allows (" +
                      std::to_string(e.depth()) + " levels)");
@@ -89,16 +122,24 @@ YAML::Node Merge(const YAML::Node& base, const YAML::Node& over) {
   return merged;
 }
 
-// The text of `source` laid over its `base:` file, if it names one (relative to `source`'s folder).
-YAML::Node WithBase(const std::string& text, const std::string& source, int depth) {
-  YAML::Node root = ParseText(text, source);
-  if (!root["base"]) return root;
+// The file `source` names as its base (relative to `source`'s folder), if any; the key is removed.
+std::optional<std::string> TakeBase(YAML::Node& root, const std::string& source, int depth) {
+  if (!root["base"]) return std::nullopt;
   if (depth >= kMaxBaseDepth) throw InputError(source + ": key 'base': chain of base files too long (a cycle?)");
   const YAML::Node base_key = root["base"];
   if (!base_key.IsScalar() || base_key.Scalar().empty()) throw InputError(source + ": key 'base': expected a file name");
   const std::string base_path = (std::filesystem::path(source).parent_path() / base_key.Scalar()).string();
   root.remove("base");
-  return Merge(WithBase(ReadConfigFile(base_path), base_path, depth + 1), root);
+  return base_path;
+}
+
+// The text of `source` laid over its `base:` file, if it names one; `files` gets every base read.
+YAML::Node WithBase(const std::string& text, const std::string& source, int depth, std::vector<std::string>* files) {
+  YAML::Node root = ParseText(text, source);
+  const std::optional<std::string> base_path = TakeBase(root, source, depth);
+  if (!base_path) return root;
+  if (files) files->push_back(*base_path);
+  return Merge(WithBase(ReadConfigFile(*base_path), *base_path, depth + 1, files), root);
 }
 
 std::vector<std::string> SplitKey(const std::string& key) {
@@ -156,13 +197,15 @@ void ApplyOverride(YAML::Node& root, const std::string& assignment) {
     throw InputError("--set '" + assignment + "': expected KEY=VALUE, e.g. scenario.tunnel.width_m=12");
   }
   const std::vector<std::string> parts = SplitKey(assignment.substr(0, equals));
+  const std::string what = "--set '" + assignment + "'";
   YAML::Node value;
   try {
-    value = YAML::Load(assignment.substr(equals + 1));
+    value = OnlyDocument(assignment.substr(equals + 1), what);
   } catch (const YAML::Exception& e) {
-    throw InputError("--set '" + assignment + "': " + e.msg);
+    throw InputError(what + ": " + e.msg);
   }
-  CheckKeys(value, "--set '" + assignment + "'");
+  if (!value.IsDefined() || value.IsNull()) throw InputError(what + ": no value (KEY=VALUE, e.g. " + parts.back() + "=1)");
+  CheckKeys(value, what);
   Set(root, parts, value, assignment);
   if (parts.front() == "rows" || !root["rows"].IsSequence()) return;
   for (std::size_t i = 0; i < root["rows"].size(); ++i) {
@@ -178,9 +221,15 @@ YAML::Node LoadConfigYaml(const std::string& path, const std::vector<std::string
 
 YAML::Node LoadConfigYamlText(const std::string& text, const std::string& source,
                               const std::vector<std::string>& overrides) {
-  YAML::Node root = WithBase(text, source, 0);
+  YAML::Node root = WithBase(text, source, 0, nullptr);
   for (const std::string& assignment : overrides) ApplyOverride(root, assignment);
   return root;
+}
+
+std::vector<std::string> ConfigFiles(const std::string& path) {
+  std::vector<std::string> files = {path};
+  WithBase(ReadConfigFile(path), path, 0, &files);
+  return files;
 }
 
 }  // namespace anchorbench::config

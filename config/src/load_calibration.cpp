@@ -16,6 +16,10 @@ void Stage(YamlSection& s, runner::OptimizerStage& stage) {
   s.Text("algorithm", stage.algorithm);
   s.Integer("max_evaluations", stage.max_evaluations, 0, 100000);
   std::string why;
+  if (estimator::NloptSolver::AlgorithmNumber(stage.algorithm) < 0) {
+    s.Fail("algorithm", "unknown algorithm '" + stage.algorithm +
+                            "' (NLopt's names, derivative-free: e.g. GN_DIRECT_L, GN_ESCH, LN_SBPLX, LN_NELDERMEAD, LN_BOBYQA)");
+  }
   const bool derivative_free = stage.algorithm.rfind("GN_", 0) == 0 || stage.algorithm.rfind("LN_", 0) == 0;
   if (!derivative_free) {
     s.Fail("algorithm", "'" + stage.algorithm + "': the objective has no gradient; choose a GN_* or LN_* algorithm");
@@ -45,8 +49,8 @@ std::vector<std::uint64_t> Seeds(YamlSection& s, std::string_view key, std::vect
   for (const std::string& text : texts) {
     std::uint64_t seed = 0;
     const auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), seed);
-    if (text.empty() || ec != std::errc() || end != text.data() + text.size() || seed > 2147483647u) {
-      s.Fail(key, "'" + text + "' is not a seed (an integer 0 to 2147483647)");
+    if (text.empty() || ec != std::errc() || end != text.data() + text.size() || seed > runner::kMaxSeed) {
+      s.Fail(key, "'" + text + "' is not a seed (a whole number from 0 to " + std::to_string(runner::kMaxSeed) + ")");
     }
     if (std::find(seeds.begin(), seeds.end(), seed) != seeds.end()) s.Fail(key, "seed " + text + " is listed twice");
     seeds.push_back(seed);
@@ -65,9 +69,7 @@ runner::CalibrationSpec LoadCalibrationSpec(const std::string& path) {
   if (!top.Has("experiment")) top.FailSection("'experiment' is missing: the experiment file to calibrate");
   top.Text("experiment", spec.experiment_path);
   spec.experiment_path = (std::filesystem::path(path).parent_path() / spec.experiment_path).lexically_normal().string();
-  int seed = static_cast<int>(spec.seed);
-  top.Integer("seed", seed, 0, 2147483647);
-  spec.seed = static_cast<std::uint64_t>(seed);
+  top.Unsigned("seed", spec.seed, runner::kMaxSeed);
   top.Integer("realizations", spec.realizations, 1, 100000000);
   spec.verify_seeds = Seeds(top, "verify_seeds", spec.verify_seeds);
   if (std::find(spec.verify_seeds.begin(), spec.verify_seeds.end(), spec.seed) != spec.verify_seeds.end()) {

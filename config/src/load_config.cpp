@@ -26,6 +26,12 @@ std::string JsonString(const std::string& text) {
   return out + "\"";
 }
 
+bool IsWholeNumber(const std::string& text) {
+  const std::size_t digits = text.find_first_not_of("0123456789", text.rfind('-', 0) == 0 ? 1 : 0);
+  return digits == std::string::npos && text.size() > (text[0] == '-' ? 1u : 0u) && text.size() < 20 &&
+         (text.size() == 1 || text[text[0] == '-' ? 1 : 0] != '0');
+}
+
 // YAML (as yaml-cpp holds it) to JSON: mappings, lists, numbers and booleans as such, text quoted.
 std::string YamlToJson(const YAML::Node& node, int indent) {
   const std::string pad(static_cast<std::size_t>(indent + 2), ' ');
@@ -47,6 +53,7 @@ std::string YamlToJson(const YAML::Node& node, int indent) {
   const std::string scalar = node.Scalar();
   double number = 0.0;
   if (scalar == "true" || scalar == "false") return scalar;
+  if (IsWholeNumber(scalar)) return scalar;  // exactly (a seed above 2^53 would not survive a double)
   if (YAML::convert<double>::decode(node, number) && std::isfinite(number)) return io::FormatNumber(number);
   return JsonString(scalar);
 }
@@ -59,6 +66,10 @@ runner::ExperimentConfig FromYaml(const YAML::Node& root, const std::string& pat
                                   const registry::Components& components) {
   runner::ExperimentConfig config;
   config.name = std::filesystem::path(path).stem().string();
+  if (root.IsMap() && root["experiment"]) {
+    throw io::InputError(path + ": is a calibration file (key 'experiment'), not an experiment: run it with "
+                                "`anchorbench calibrate`");
+  }
   YamlSection top(root, "", path);
   visit::Experiment(top, config, components);
   top.Finish();

@@ -190,7 +190,7 @@ void PaperCells(V& v, runner::PaperCells& cells) {
 
 template <typename V>
 void Row(V& v, runner::RowConfig& row, const registry::Components& parts) {
-  v.Text("name", row.name);
+  v.Label("name", row.name);
   v.Section("scenario", [&](auto& s) { Scenario(s, row.scenario); });
   v.Section("estimator", [&](auto& s) { Estimator(s, row.estimator, parts); });
   v.OptionalSection("paper", row.paper, [](auto& s, runner::PaperRow& paper) {
@@ -201,9 +201,7 @@ void Row(V& v, runner::RowConfig& row, const registry::Components& parts) {
 
 template <typename V>
 void Experiment(V& v, runner::ExperimentConfig& c, const registry::Components& parts) {
-  int seed = static_cast<int>(c.seed);
-  v.Integer("seed", seed, 0, std::numeric_limits<int>::max());
-  c.seed = static_cast<std::uint64_t>(seed);
+  v.Unsigned("seed", c.seed, runner::kMaxSeed);
   v.Integer("realizations", c.realizations, 1, 100000000);
   v.Integer("bootstrap_resamples", c.bootstrap_resamples, 0, 1000000);
   v.Section("scenario", [&](auto& s) { Scenario(s, c.scenario); });

@@ -1,8 +1,10 @@
 #include "anchorbench/config/yaml_section.hpp"
 
+#include <charconv>
 #include <cmath>
 #include <sstream>
 
+#include "anchorbench/io/format.hpp"
 #include "anchorbench/io/input_error.hpp"
 
 namespace anchorbench::config {
@@ -41,6 +43,7 @@ void YamlSection::FailValidation(const std::string& why) const {
 }
 
 bool YamlSection::Has(std::string_view key) const {
+  asked_.emplace(key);
   return node_.IsMap() && node_[std::string(key)].IsDefined() && !node_[std::string(key)].IsNull();
 }
 
@@ -56,6 +59,11 @@ void YamlSection::Number(std::string_view key, double& value, Bounds bounds) {
   if (!n.IsScalar() || !YAML::convert<double>::decode(n, parsed)) Fail(key, "expected a number, got " + Describe(n));
   if (!std::isfinite(parsed)) Fail(key, "must be finite, got " + Describe(n));
   const bool below = bounds.min_exclusive ? parsed <= bounds.min : parsed < bounds.min;
+  if ((below || parsed > bounds.max) && bounds.min == Bounds{}.min && bounds.max == Bounds{}.max) {
+    std::ostringstream limit;
+    limit << "must be a finite number of magnitude at most " << bounds.max << ", got ";
+    Fail(key, limit.str() + Describe(n));
+  }
   if (below || parsed > bounds.max) {
     std::ostringstream range;
     range << "must be " << (bounds.min_exclusive ? "> " : ">= ") << bounds.min;
@@ -76,6 +84,18 @@ void YamlSection::Integer(std::string_view key, int& value, int min, int max) {
   value = parsed;
 }
 
+void YamlSection::Unsigned(std::string_view key, std::uint64_t& value, std::uint64_t max) {
+  if (!Has(key)) return;
+  const YAML::Node n = Get(key);
+  std::uint64_t parsed = 0;
+  const std::string text = n.IsScalar() ? n.Scalar() : std::string();
+  const auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), parsed);
+  if (text.empty() || ec != std::errc() || end != text.data() + text.size() || parsed > max) {
+    Fail(key, "expected a whole number from 0 to " + std::to_string(max) + ", got " + Describe(n));
+  }
+  value = parsed;
+}
+
 void YamlSection::Flag(std::string_view key, bool& value) {
   if (!Has(key)) return;
   const YAML::Node n = Get(key);
@@ -89,6 +109,19 @@ void YamlSection::Text(std::string_view key, std::string& value) {
   const YAML::Node n = Get(key);
   if (!n.IsScalar()) Fail(key, "expected text, got " + Describe(n));
   value = n.Scalar();
+}
+
+void YamlSection::Label(std::string_view key, std::string& value) {
+  if (!Has(key)) return;
+  Text(key, value);
+  for (const char c : value) {
+    const auto byte = static_cast<unsigned char>(c);
+    if (byte < 0x20 || byte == 0x7F || c == ',' || c == '"' || c == '|') {
+      Fail(key, "'" + io::Printable(value) + "' holds '" + io::Printable(std::string_view(&c, 1)) +
+                    "': a name for CSV and Markdown tables holds no commas, quotes, '|' or control characters");
+    }
+  }
+  if (value.empty()) Fail(key, "expected a name, got an empty text");
 }
 
 void YamlSection::TextList(std::string_view key, std::vector<std::string>& values) {
@@ -142,7 +175,9 @@ void YamlSection::Finish() const {
   if (!node_.IsMap()) return;
   for (const auto& entry : node_) {
     const std::string key = entry.first.as<std::string>();
-    if (!used_.contains(key)) Fail(key, "unknown key");
+    if (used_.contains(key)) continue;
+    if (asked_.contains(key)) Fail(key, "no value (give one, or remove the key to keep the default)");
+    Fail(key, "unknown key");
   }
 }
 

@@ -5,6 +5,7 @@
 
 #include <gtest/gtest.h>
 
+#include "anchorbench/config/config_yaml.hpp"
 #include "anchorbench/config/load_calibration.hpp"
 #include "anchorbench/eval/oracles.hpp"
 #include "anchorbench/testing/parts.hpp"
@@ -160,7 +161,10 @@ TEST(Config, OverridesAreValidatedLikeTheFile) {
   EXPECT_NE(error_for("scenario.tunnel.width_m=-3").find("must be > 0"), std::string::npos);
   EXPECT_NE(error_for("scenario.tunnel").find("expected KEY=VALUE"), std::string::npos);
   EXPECT_NE(error_for("scenario.tunnel.width_m.x=1").find("'width_m' is not a section"), std::string::npos);
-  EXPECT_NE(error_for("seed.x=1").find("key 'seed': expected an integer"), std::string::npos);
+  EXPECT_NE(error_for("seed.x=1").find("key 'seed': expected a whole number"), std::string::npos);
+  EXPECT_EQ(error_for("scenario.tunnel.width_m="), "--set 'scenario.tunnel.width_m=': no value (KEY=VALUE, e.g. width_m=1)");
+  EXPECT_NE(error_for("scenario.tunnel.width_m=~").find("no value"), std::string::npos);
+  EXPECT_NE(error_for("seed=1\n---\n2").find("a second YAML document"), std::string::npos);
 
   const std::string table = dir.Write("rows.yaml", "rows:\n  - name: a\n  - name: b\n");
   const ExperimentConfig rows = LoadConfig(table, {"rows.1.scenario.ranging.sigma_range_m=0.3"});
@@ -275,6 +279,68 @@ TEST(Calibration, ErrorsNameTheKey) {
   EXPECT_NE(error_for("experiment: e.yaml\nverify_seeds: [2, x]\n" + parameter).find("'x' is not a seed"),
             std::string::npos);
   EXPECT_NE(error_for("experiment: e.yaml\nbogus: 1\n" + parameter).find("bogus"), std::string::npos);
+}
+
+}  // namespace
+}  // namespace anchorbench::config
+
+namespace anchorbench::config {
+namespace {
+
+// Every seed the command line takes (0 to 2^63-1) is written and read back exactly: the resolved
+// config of a manifest, a shard folder and a worker rank's plan are made from this text.
+TEST(Config, SeedsRoundTripExactly) {
+  for (const std::uint64_t seed : {0ull, 2147483648ull, 4294967301ull, 9223372036854775807ull}) {
+    runner::ExperimentConfig config;
+    config.seed = seed;
+    const std::string yaml = ToYaml(config);
+    EXPECT_NE(yaml.find("seed: " + std::to_string(seed) + "\n"), std::string::npos) << yaml.substr(0, 40);
+    EXPECT_EQ(LoadConfigText(yaml, "t.yaml", {}, testing::Parts()).seed, seed);
+    EXPECT_NE(ToJson(config).find("\"seed\": " + std::to_string(seed) + ","), std::string::npos);
+  }
+  EXPECT_THROW(LoadConfigText("seed: 9223372036854775808\n", "t.yaml", {}, testing::Parts()), io::InputError);
+  EXPECT_THROW(LoadConfigText("seed: -1\n", "t.yaml", {}, testing::Parts()), io::InputError);
+}
+
+std::string Refusal(const std::string& text) {
+  try {
+    LoadConfigText(text, "t.yaml", {}, testing::Parts());
+  } catch (const io::InputError& e) {
+    return e.what();
+  }
+  return "accepted";
+}
+
+// What a file says is what runs: a second document, a key without a value, a row name that would
+// break a CSV line, and an alias bomb are refused with the place.
+TEST(Config, RefusesWhatWouldBeIgnoredOrMisread) {
+  EXPECT_EQ(Refusal("seed: 1\n---\nseed: 2\n"), "t.yaml:3: a second YAML document (after '---'): a config is one document");
+  EXPECT_EQ(Refusal("sweep: ~\n"), "t.yaml: key 'sweep': no value (give one, or remove the key to keep the default)");
+  EXPECT_EQ(Refusal("sigma: ~\n"), "t.yaml: key 'sigma': unknown key");
+  EXPECT_NE(Refusal("rows:\n  - name: \"a,b\"\n").find("key 'rows[0].name': 'a,b' holds ','"), std::string::npos);
+  EXPECT_NE(Refusal("rows:\n  - name: \"b\\nc\"\n").find("key 'rows[0].name': 'b\\x0Ac' holds"), std::string::npos);
+  EXPECT_NE(Refusal("experiment: e.yaml\n").find("is a calibration file"), std::string::npos);
+  EXPECT_NE(Refusal("scenario: {tunnel: {width_m: 1e308}}\n").find("must be a finite number of magnitude at most 1e+300"),
+            std::string::npos);
+  std::string bomb = "a0: &a0 [x, x, x, x, x, x, x, x, x]\n";
+  for (int i = 1; i <= 10; ++i) {
+    bomb += "a" + std::to_string(i) + ": &a" + std::to_string(i) + " [";
+    for (int k = 0; k < 9; ++k) bomb += std::string(k ? ", " : "") + "*a" + std::to_string(i - 1);
+    bomb += "]\n";
+  }
+  EXPECT_NE(Refusal(bomb).find("expands to more than 200000 values"), std::string::npos);
+}
+
+// Every file a config reads: a command never overwrites or deletes one of them.
+TEST(Config, ConfigFilesListsTheBaseChain) {
+  anchorbench::testing::TempDir dir("files");
+  dir.Write("a.yaml", "seed: 1\n");
+  dir.Write("b.yaml", "base: a.yaml\n");
+  const std::string c = dir.Write("c.yaml", "base: b.yaml\n");
+  const std::vector<std::string> files = ConfigFiles(c);
+  ASSERT_EQ(files.size(), 3u);
+  EXPECT_EQ(files[0], c);
+  EXPECT_EQ(std::filesystem::path(files[2]).filename(), "a.yaml");
 }
 
 }  // namespace

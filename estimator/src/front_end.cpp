@@ -14,18 +14,30 @@ std::vector<AnchorInitializer>& FrontEnd::Anchor(int anchor_id) {
   return anchors_.emplace(anchor_id, std::move(chains)).first->second;
 }
 
-void FrontEnd::AddAnchor(int anchor_id) { Anchor(anchor_id); }
+bool FrontEnd::AddAnchor(int anchor_id) {
+  if (!anchors_.contains(anchor_id) && anchors_.size() >= options_.max_anchors) return false;
+  Anchor(anchor_id);
+  return true;
+}
 
 void FrontEnd::Emit(int anchor_id, std::size_t chain, const InitEvent& event) {
   events_.push_back({anchor_id, chain, event});
 }
 
 void FrontEnd::Drop(const WaitingRange& range, DroppedRange::Reason reason) {
-  ++(reason == DroppedRange::Reason::kOutsidePoses ? counters_.ranges_outside_poses : counters_.ranges_without_pose);
+  switch (reason) {
+    case DroppedRange::Reason::kOutsidePoses: ++counters_.ranges_outside_poses; break;
+    case DroppedRange::Reason::kNoPoseInTime: ++counters_.ranges_without_pose; break;
+    case DroppedRange::Reason::kTooManyAnchors: ++counters_.ranges_beyond_max_anchors; break;
+  }
   if (drop_observer_) drop_observer_({range.t_s, range.tag_id, range.anchor_id, range.range_m, reason});
 }
 
 void FrontEnd::Feed(const RangeSample& sample) {
+  if (!anchors_.contains(sample.anchor_id) && anchors_.size() >= options_.max_anchors) {
+    Drop({sample.t_s, sample.tag_id, sample.anchor_id, sample.range_m}, DroppedRange::Reason::kTooManyAnchors);
+    return;
+  }
   std::vector<AnchorInitializer>& chains = Anchor(sample.anchor_id);
   ++counters_.samples;
   t_last_sample_s_ = sample.t_s;

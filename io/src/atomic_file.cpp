@@ -33,8 +33,9 @@ fs::path Temporary(const fs::path& target, bool overwrite, const std::vector<fs:
 
 }  // namespace
 
-AtomicFile::AtomicFile(fs::path target, bool overwrite, const std::vector<fs::path>& inputs)
-    : target_(std::move(target)), file_(Temporary(target_, overwrite, inputs)) {}
+AtomicFile::AtomicFile(fs::path target, bool overwrite, const std::vector<fs::path>& inputs,
+                       std::uintmax_t expected_bytes)
+    : target_(std::move(target)), file_(Temporary(target_, overwrite, inputs), expected_bytes, target_.string()) {}
 
 AtomicFile::~AtomicFile() {
   if (committed_) return;

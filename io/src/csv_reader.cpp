@@ -1,6 +1,7 @@
 #include "anchorbench/io/csv_reader.hpp"
 
 #include <charconv>
+#include <filesystem>
 #include <iterator>
 #include <cmath>
 
@@ -35,6 +36,8 @@ std::string_view Unquoted(std::string_view name) {
 }  // namespace
 
 std::ifstream OpenForReading(const std::string& path) {
+  std::error_code error;
+  if (std::filesystem::is_directory(path, error)) throw InputError(path + ": is a folder, not a file");
   std::ifstream in(path, std::ios::binary);
   if (!in) throw InputError(path + ": cannot open the file");
   return in;
@@ -45,11 +48,32 @@ std::string ReadWholeFile(const std::string& path) {
   return std::string(std::istreambuf_iterator<char>(in), {});
 }
 
+bool CsvReader::ReadLine(std::string& line) {
+  if (cr_next_ == std::string::npos) {
+    if (!std::getline(in_, line)) return false;
+    const std::size_t cr = line.find('\r');
+    if (cr == std::string::npos || cr + 1 == line.size()) {  // LF or CRLF: the common case
+      bytes_read_ += line.size() + 1;
+      return true;
+    }
+    cr_lines_.assign(line, cr + 1);  // lone CRs: the rest are lines of their own
+    cr_next_ = 0;
+    line.resize(cr);
+    bytes_read_ += cr + 1;
+    return true;
+  }
+  const std::size_t cr = cr_lines_.find('\r', cr_next_);
+  const std::size_t end = cr == std::string::npos ? cr_lines_.size() : cr;
+  line.assign(cr_lines_, cr_next_, end - cr_next_);
+  bytes_read_ += end - cr_next_ + 1;
+  cr_next_ = cr == std::string::npos || cr + 1 == cr_lines_.size() ? std::string::npos : cr + 1;
+  return true;
+}
+
 CsvReader::CsvReader(std::istream& in, std::string source) : in_(in), source_(std::move(source)) {
   std::string header_line;
-  if (!std::getline(in_, header_line)) throw InputError(source_ + ":1: empty file, expected a header line");
+  if (!ReadLine(header_line)) throw InputError(source_ + ":1: empty file, expected a header line");
   line_ = 1;
-  bytes_read_ = header_line.size() + 1;
   if (header_line.size() >= 3 && header_line.compare(0, 3, "\xEF\xBB\xBF") == 0) header_line.erase(0, 3);  // UTF-8 BOM
   Split(header_line, fields_);
   for (std::string_view name : fields_) header_.emplace_back(Unquoted(name));
@@ -79,9 +103,8 @@ void CsvReader::FailAt(int line, const std::string& message) const {
 }
 
 bool CsvReader::Next() {
-  while (std::getline(in_, text_)) {
+  while (ReadLine(text_)) {
     ++line_;
-    bytes_read_ += text_.size() + 1;
     const std::string_view trimmed = Trim(text_);
     if (trimmed.empty() || trimmed.front() == '#') continue;
     Split(text_, fields_);

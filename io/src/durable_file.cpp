@@ -8,6 +8,7 @@
 #include <cstring>
 
 #include "anchorbench/io/input_error.hpp"
+#include "anchorbench/io/reservation.hpp"
 
 namespace anchorbench::io {
 namespace {
@@ -44,9 +45,21 @@ DurableFile::Buffer::int_type DurableFile::Buffer::overflow(int_type c) {
   return traits_type::not_eof(c);
 }
 
-DurableFile::DurableFile(std::filesystem::path path)
-    : path_(std::move(path)), fd_(OpenForWriting(path_)), buffer_(fd_), stream_(&buffer_) {
+DurableFile::DurableFile(std::filesystem::path path, std::uintmax_t reserve_bytes, std::string shown_as)
+    : path_(std::move(path)), shown_as_(shown_as.empty() ? path_.string() : std::move(shown_as)),
+      fd_(OpenForWriting(path_)), buffer_(fd_), stream_(&buffer_) {
   if (fd_ < 0) Fail("cannot write", errno);
+  if (reserve_bytes == 0) return;
+  // Blocks claimed without growing the file; where the file system cannot, a probe of the space.
+  const off_t bytes = static_cast<off_t>(reserve_bytes);
+  if (::fallocate(fd_, FALLOC_FL_KEEP_SIZE, 0, bytes) == 0) return;
+  const int error = errno == EOPNOTSUPP ? ::posix_fallocate(fd_, 0, bytes) : errno;
+  if (::ftruncate(fd_, 0) == 0 && error == 0) return;
+  ::close(fd_);  // the constructor throws: nothing of the file may stay
+  fd_ = -1;
+  std::error_code ignored;
+  std::filesystem::remove(path_, ignored);
+  Fail("needs about " + SizeText(reserve_bytes), error);
 }
 
 DurableFile::~DurableFile() {
@@ -54,12 +67,14 @@ DurableFile::~DurableFile() {
 }
 
 void DurableFile::Fail(const std::string& what, int error) const {
-  throw InputError(path_.string() + ": " + what + (error != 0 ? std::string(": ") + std::strerror(error) : ""));
+  throw InputError(shown_as_ + ": " + what + (error != 0 ? std::string(": ") + std::strerror(error) : ""));
 }
 
 void DurableFile::Close() {
   const bool drained = buffer_.Drain();
   if (!drained || buffer_.error() != 0 || !stream_) Fail("writing failed", buffer_.error());
+  const off_t written = ::lseek(fd_, 0, SEEK_CUR);
+  if (written >= 0 && ::ftruncate(fd_, written) != 0 && errno != EINVAL) Fail("writing failed", errno);  // the reservation's rest
   if (::fsync(fd_) != 0 && errno != EINVAL) Fail("flushing to the disk failed", errno);  // EINVAL: a device file
   const int closed = ::close(fd_);
   fd_ = -1;

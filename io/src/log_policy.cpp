@@ -46,11 +46,13 @@ const char* NameOf(Drop reason) {
     case Drop::kLateRange: return "late_range";
     case Drop::kOutsidePoses: return "outside_poses";
     case Drop::kNoPoseInTime: return "no_pose_in_time";
+    case Drop::kTooManyAnchors: return "too_many_anchors";
     case Drop::kPoseNotFinite: return "pose_not_finite";
     case Drop::kRepeatedPose: return "repeated_pose";
     case Drop::kConflictingPose: return "conflicting_pose";
     case Drop::kAveragedPose: return "averaged_pose";
     case Drop::kLatePose: return "late_pose";
+    case Drop::kPoseJump: return "pose_jump";
   }
   return "?";
 }

@@ -3,6 +3,7 @@
 #include <cctype>
 #include <charconv>
 #include <cmath>
+#include <cstring>
 
 #include "anchorbench/io/format.hpp"
 #include "anchorbench/io/input_error.hpp"
@@ -156,11 +157,12 @@ void PoseStream::Resolve() {
   group_.clear();
   group_sum_.clear();
   group_count_.clear();
+  group_index_.clear();
   group_next_ = 0;
   for (const PoseRecord& row : rows_at_t_) {
-    std::size_t kept = 0;  // the tag's first row of this time
-    while (kept < group_.size() && group_[kept].tag_id != row.tag_id) ++kept;
-    if (kept == group_.size()) {
+    const auto [found, is_new] = group_index_.emplace(row.tag_id, group_.size());  // the tag's first row of this time
+    const std::size_t kept = found->second;
+    if (is_new) {
       group_.push_back(row);
       group_sum_.push_back(row.p_world_tag);
       group_count_.push_back(1);
@@ -189,6 +191,30 @@ void PoseStream::Resolve() {
   for (std::size_t i = 0; i < group_.size(); ++i) {
     if (group_count_[i] > 1) group_[i].p_world_tag = group_sum_[i] / group_count_[i];
   }
+  std::erase_if(group_, [this](const PoseRecord& pose) { return IsJump(pose); });
+}
+
+// A pose is judged against its tag's last kept pose: beyond max_speed_mps it is dropped, unless
+// the pose dropped just before agrees with it (a lasting jump: the tag is there now).
+bool PoseStream::IsJump(const PoseRecord& pose) {
+  const auto consistent = [this](const PoseRecord& from, const PoseRecord& to) {
+    const double distance_m = (to.p_world_tag - from.p_world_tag).norm();
+    return distance_m <= policy_.max_speed_mps * std::abs(to.t_s - from.t_s) + 1e-9;
+  };
+  const auto kept = last_kept_.find(pose.tag_id);
+  const auto jump = last_jump_.find(pose.tag_id);
+  if (kept == last_kept_.end() || consistent(kept->second, pose) ||
+      (jump != last_jump_.end() && consistent(jump->second, pose))) {
+    last_kept_.insert_or_assign(pose.tag_id, pose);
+    if (jump != last_jump_.end()) last_jump_.erase(jump);
+    return false;
+  }
+  Dropped(Drop::kPoseJump, pose,
+          "tag " + std::to_string(pose.tag_id) + " jumps to " + PositionText(pose.p_world_tag) + " from " +
+              PositionText(kept->second.p_world_tag) + " at line " + std::to_string(kept->second.line) +
+              ", faster than --max-speed-mps " + FormatNumber(policy_.max_speed_mps));
+  last_jump_.insert_or_assign(pose.tag_id, pose);
+  return true;
 }
 
 bool PoseStream::Next(PoseRecord& pose) {
@@ -245,12 +271,19 @@ bool RangeStream::NextOrdered(RangeRecord& range) {
   return NextInOrder(order_, at_end_, csv_, policy_, read, drop_late, range);
 }
 
+std::size_t RangeStream::RowKeyHash::operator()(const RowKey& k) const {
+  std::uint64_t h = k.range_bits * 0x9E3779B97F4A7C15ull;
+  h ^= (static_cast<std::uint64_t>(static_cast<std::uint32_t>(k.tag_id)) << 32 | static_cast<std::uint32_t>(k.anchor_id)) +
+       0x9E3779B97F4A7C15ull + (h << 6) + (h >> 2);
+  return static_cast<std::size_t>(h);
+}
+
 bool RangeStream::IsDuplicate(const RangeRecord& range) {
-  if (!rows_at_t_.empty() && rows_at_t_.front().t_s != range.t_s) rows_at_t_.clear();
-  for (const RangeRecord& kept : rows_at_t_) {
-    if (kept.tag_id == range.tag_id && kept.anchor_id == range.anchor_id && kept.range_m == range.range_m) return true;
-  }
-  rows_at_t_.push_back(range);
+  if (!rows_at_t_.empty() && t_rows_s_ != range.t_s) rows_at_t_.clear();
+  t_rows_s_ = range.t_s;
+  std::uint64_t bits = 0;
+  std::memcpy(&bits, &range.range_m, sizeof(bits));
+  if (!rows_at_t_.insert({range.tag_id, range.anchor_id, bits}).second) return true;
   CheckGroupSize(csv_, rows_at_t_.size(), range.t_s);
   return false;
 }
@@ -314,7 +347,11 @@ LogSurvey SurveyLog(const LogFiles& files, const LogPolicy& policy, const BytePr
                        AnchorIdFromFileName(files.ranges[f]), survey.default_tag_id);
     RangeRecord range;
     while (ranges.Next(range)) {
-      survey.anchor_ids.insert(range.anchor_id);
+      if (survey.anchor_ids.insert(range.anchor_id).second && survey.anchor_ids.size() > policy.max_anchors) {
+        throw InputError(files.ranges[f] + ":" + std::to_string(range.line) + ": anchor " +
+                         std::to_string(range.anchor_id) + " is a distinct anchor beyond the " +
+                         std::to_string(policy.max_anchors) + " anchors a log may hold (the front end's max_anchors)");
+      }
       report(ranges.bytes_read());
     }
     survey.range_rows += ranges.rows();

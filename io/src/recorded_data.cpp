@@ -48,6 +48,7 @@ std::map<int, eval::AnchorTruth> ReadAnchors(std::istream& in, const std::string
     if (bias >= 0 && !csv.Empty(bias)) truth.bias_m = csv.Number(bias);
     if (!anchors.emplace(anchor_id, truth).second) csv.Fail("anchor " + std::to_string(anchor_id) + " listed twice");
   }
+  if (anchors.empty()) throw InputError(source + ": no anchors (a header alone?)");
   return anchors;
 }
 

@@ -1,6 +1,6 @@
 #include "anchorbench/io/result_folder.hpp"
 
-#include <fcntl.h>
+#include <fcntl.h>  // AT_FDCWD
 #include <stdio.h>  // renameat2, RENAME_EXCHANGE
 #include <unistd.h>
 
@@ -54,9 +54,11 @@ bool HoldsFiles(const fs::path& folder) {
   return fs::is_directory(folder, error) && !fs::is_empty(folder, error);
 }
 
-bool IsInside(const fs::path& file, const fs::path& folder) {
+}  // namespace
+
+bool IsInside(const fs::path& path, const fs::path& folder) {
   std::error_code error;
-  const fs::path f = fs::weakly_canonical(file, error);
+  const fs::path f = fs::weakly_canonical(path, error);
   const fs::path d = fs::weakly_canonical(folder, error);
   for (fs::path p = f; p.has_relative_path() && p != p.parent_path(); p = p.parent_path()) {
     if (p == d) return true;
@@ -64,18 +66,17 @@ bool IsInside(const fs::path& file, const fs::path& folder) {
   return false;
 }
 
-std::string Size(std::uintmax_t bytes) {
-  return bytes < 1000000 ? std::to_string((bytes + 999) / 1000) + " kB" : std::to_string((bytes + 999999) / 1000000) + " MB";
-}
-
-}  // namespace
-
 ResultFolder::ResultFolder(fs::path target, const Options& options) : target_(std::move(target)) {
   if (target_.filename().empty()) target_ = target_.parent_path();  // "out/" names the folder "out"
   const std::string name = target_.string();
   for (const fs::path& input : options.inputs) {
     if (IsInside(input, target_)) {
       throw InputError(name + ": holds " + input.string() + ", an input of this run; choose another output folder");
+    }
+  }
+  for (const fs::path& input : options.input_folders) {
+    if (IsInside(target_, input)) {
+      throw InputError(name + ": lies inside " + input.string() + ", an input of this run; choose another output folder");
     }
   }
   std::error_code error;
@@ -92,14 +93,11 @@ ResultFolder::ResultFolder(fs::path target, const Options& options) : target_(st
   if (!fs::create_directory(partial_, error) || error) {
     throw InputError(name + ": cannot write beside it (" + partial_.string() + "): " + error.message());
   }
-  if (options.expected_bytes == 0) return;
-  const int fd = ::open((partial_ / kReservation).c_str(), O_CREAT | O_WRONLY | O_CLOEXEC, 0644);
-  const int reserved = fd < 0 ? errno : ::posix_fallocate(fd, 0, static_cast<off_t>(options.expected_bytes));
-  if (fd >= 0) ::close(fd);
-  if (reserved != 0) {
+  try {
+    reservation_ = Reservation(partial_ / kReservation, options.expected_bytes, name, "its results");
+  } catch (const InputError&) {
     fs::remove_all(partial_, error);
-    throw InputError(name + ": its results need about " + Size(options.expected_bytes) + ": " +
-                     std::strerror(reserved));
+    throw;
   }
 }
 
@@ -109,13 +107,8 @@ ResultFolder::~ResultFolder() {
   fs::remove_all(partial_, ignored);
 }
 
-void ResultFolder::ReleaseReservation() {
-  std::error_code ignored;
-  fs::remove(partial_ / kReservation, ignored);
-}
-
 void ResultFolder::Write(const std::string& name, const std::function<void(std::ostream&)>& write) {
-  ReleaseReservation();
+  reservation_.Release();
   DurableFile file(partial_ / name);
   write(file.stream());
   file.Close();
@@ -126,7 +119,7 @@ void ResultFolder::Write(const std::string& name, const std::string& text) {
 }
 
 void ResultFolder::Commit() {
-  ReleaseReservation();
+  reservation_.Release();
   SyncFolder(partial_);
   std::error_code error;
   if (!fs::exists(target_, error)) {

@@ -7,37 +7,21 @@
 #include "anchorbench/io/input_error.hpp"
 
 namespace anchorbench::report {
-namespace {
-
-std::vector<std::string> Lines(const std::string& text) {
-  std::vector<std::string> lines;
-  std::istringstream in(text);
-  for (std::string line; std::getline(in, line);) lines.push_back(line);
-  return lines;
-}
-
-}  // namespace
 
 AttemptsFile ParseAttempts(const std::string& text, const std::string& source,
                            const std::vector<runner::RowConfig>& rows) {
   std::map<std::string, int, std::less<>> row_index;
   for (std::size_t r = 0; r < rows.size(); ++r) row_index[rows[r].name] = static_cast<int>(r);
   AttemptsFile file;
-  file.lines = Lines(text);
-  if (file.lines.empty()) throw io::InputError(source + ": empty file, expected attempts.csv's header");
-  const std::string header = file.lines.front();
-  file.lines.erase(file.lines.begin());
-
   std::istringstream in(text);
-  io::CsvReader csv(in, source);
+  io::CsvReader csv(in, source);  // one pass: each record's line is kept as the reader meets it
   const int row = csv.Column({"row"}), realization = csv.Column({"realization"}), anchor = csv.Column({"anchor_id"});
   const int method = csv.Column({"method"}), initialized = csv.Column({"initialized"}), t_init = csv.Column({"t_init"});
   const int error = csv.Column({"err_m"}), nees = csv.Column({"nees_pos"});
   const int compute_s = csv.Column({"compute_s"});
-  if (header.size() < 10 || header.compare(header.size() - 10, 10, ",compute_s") != 0) {
+  if (compute_s != csv.columns() - 1 || compute_s == 0) {
     throw io::InputError(source + ":1: compute_s must be the last column");
   }
-  std::size_t index = 0;
   while (csv.Next()) {
     runner::Attempt a;
     const auto found = row_index.find(csv.Text(row));
@@ -54,12 +38,11 @@ AttemptsFile ParseAttempts(const std::string& text, const std::string& source,
       if (!csv.Empty(nees)) a.evaluation->nees_position = csv.Number(nees);
     }
     a.compute_s = csv.Number(compute_s);
-    if (index < file.lines.size()) file.lines[index].erase(file.lines[index].rfind(','));
+    // The line as written, without compute_s (the last field: the header has more than one).
+    std::string_view line = csv.record_text();
+    if (!line.empty() && line.back() == '\r') line.remove_suffix(1);
+    file.lines.emplace_back(line.substr(0, line.rfind(',')));
     file.attempts.push_back(std::move(a));
-    ++index;
-  }
-  if (file.attempts.size() != file.lines.size()) {
-    throw io::InputError(source + ": blank or comment lines; expected attempts as written");
   }
   return file;
 }

@@ -58,7 +58,7 @@ void WriteReplaySummaryJson(std::ostream& out, const ReplaySummary& s) {
   out << "],\n  \"policy\": {\"max_range_m\": " << FormatNumber(s.policy.max_range_m) << ", \"repeated_poses\": \""
       << io::NameOf(s.policy.repeated_poses) << "\", \"out_of_order\": \"" << io::NameOf(s.policy.out_of_order)
       << "\", \"sort_window_s\": " << FormatNumber(s.policy.sort_window_s)
-      << ", \"strict\": " << (s.policy.strict ? "true" : "false") << "},\n  \"pose_rows\": " << s.pose_rows
+      << ", \"max_speed_mps\": " << FormatNumber(s.policy.max_speed_mps) << ", \"strict\": " << (s.policy.strict ? "true" : "false") << "},\n  \"pose_rows\": " << s.pose_rows
       << ",\n  \"range_rows\": " << s.range_rows << ",\n  \"samples\": " << Samples(s)
       << ",\n  \"dropped\": " << s.drops.total() << ",\n  \"samples_by_anchor\": {";
   bool first = true;

@@ -24,8 +24,16 @@ estimator::FrontEnd::ChainFactory ChainsFor(const std::map<int, eval::AnchorTrut
 }
 
 io::Drop DropReasonOf(estimator::DroppedRange::Reason reason) {
-  return reason == estimator::DroppedRange::Reason::kOutsidePoses ? io::Drop::kOutsidePoses : io::Drop::kNoPoseInTime;
+  switch (reason) {
+    case estimator::DroppedRange::Reason::kOutsidePoses: return io::Drop::kOutsidePoses;
+    case estimator::DroppedRange::Reason::kNoPoseInTime: return io::Drop::kNoPoseInTime;
+    case estimator::DroppedRange::Reason::kTooManyAnchors: return io::Drop::kTooManyAnchors;
+  }
+  return io::Drop::kNoPoseInTime;
 }
+
+static_assert(io::LogPolicy{}.max_anchors == estimator::FrontEndOptions{}.max_anchors,
+              "replay refuses a log of more anchors than the front end takes");
 
 }  // namespace
 

@@ -8,6 +8,7 @@
 #include "anchorbench/io/atomic_file.hpp"
 #include "anchorbench/io/csv_reader.hpp"
 #include "anchorbench/io/input_error.hpp"
+#include "anchorbench/io/result_folder.hpp"
 
 namespace anchorbench::work {
 namespace fs = std::filesystem;
@@ -16,6 +17,7 @@ using io::InputError;
 namespace {
 
 constexpr const char* kPlanFile = "plan.csv";
+constexpr const char* kReservation = ".reserved";
 
 void WritePlanFile(const fs::path& folder, const Plan& plan) {
   io::AtomicFile file(folder / kPlanFile, false);
@@ -50,36 +52,63 @@ fs::path ChunkStorePath(const fs::path& out) {
   return base.parent_path() / (base.filename().string() + ".chunks");
 }
 
-ChunkStore::ChunkStore(const fs::path& out, const Plan& plan, Mode mode) : folder_(ChunkStorePath(out)) {
+ChunkStore::ChunkStore(const fs::path& out, const Plan& plan, Mode mode, std::uintmax_t expected_bytes,
+                       const std::vector<fs::path>& inputs)
+    : folder_(ChunkStorePath(out)) {
+  for (const fs::path& input : inputs) {
+    if (io::IsInside(input, folder_)) {
+      throw InputError(folder_.string() + ": holds " + input.string() + ", an input of this run; choose another "
+                                          "output folder");
+    }
+  }
   std::error_code error;
   // Killed before its plan file was in place, a store holds nothing to keep.
   if (fs::exists(folder_, error) && (mode == Mode::kOverwrite || !fs::exists(folder_ / kPlanFile, error))) {
     fs::remove_all(folder_, error);
   }
-  if (fs::exists(folder_, error)) {
-    if (mode == Mode::kFresh) {
-      throw InputError(folder_.string() + ": holds " + std::to_string(CountChunkFiles(folder_)) +
-                       " finished chunks of an interrupted run: --resume continues it, --overwrite discards it");
-    }
-    const std::string identity = IdentityIn(folder_);
-    if (identity != plan.identity()) {
-      throw InputError(folder_.string() + ": holds chunks of another run (plan " + identity + ", this run's " +
-                       plan.identity() + "): --overwrite discards them");
-    }
-    for (int chunk = 0; chunk < static_cast<int>(plan.chunks().size()); ++chunk) {
-      const fs::path path = ChunkPath(chunk);
-      if (!fs::exists(path, error)) continue;
-      try {
-        finished_.emplace(chunk, ReadChunkFile(plan, chunk, path.string()));
-      } catch (const InputError&) {
-        ++unreadable_;  // torn by a crash of the machine (chunks are not flushed): computed again
-      }
-    }
-    return;
+  const bool fresh = !fs::exists(folder_, error);
+  if (fresh) {
+    fs::create_directories(folder_, error);
+    if (error) throw InputError(folder_.string() + ": cannot create: " + error.message());
+  } else {
+    TakeOver(plan, mode);
   }
-  fs::create_directories(folder_, error);
-  if (error) throw InputError(folder_.string() + ": cannot create: " + error.message());
-  WritePlanFile(folder_, plan);
+  try {
+    std::uintmax_t held = 0;
+    for (const auto& [chunk, result] : finished_) held += fs::file_size(ChunkPath(chunk), error);
+    reservation_ = io::Reservation(folder_ / kReservation, expected_bytes > held ? expected_bytes - held : 0,
+                                   folder_.string(), "the chunks of this run");
+    if (fresh) WritePlanFile(folder_, plan);
+  } catch (const InputError&) {
+    if (fresh) fs::remove_all(folder_, error);
+    throw;
+  }
+}
+
+void ChunkStore::TakeOver(const Plan& plan, Mode mode) {
+  if (mode == Mode::kFresh) {
+    throw InputError(folder_.string() + ": holds " + std::to_string(CountChunkFiles(folder_)) +
+                     " finished chunks of an interrupted run: --resume continues it, --overwrite discards it");
+  }
+  const std::string identity = IdentityIn(folder_);
+  if (identity != plan.identity()) {
+    throw InputError(folder_.string() + ": holds chunks of another run (plan " + identity + ", this run's " +
+                     plan.identity() + "): --overwrite discards them");
+  }
+  std::error_code error;
+  for (int chunk = 0; chunk < static_cast<int>(plan.chunks().size()); ++chunk) {
+    const fs::path path = ChunkPath(chunk);
+    if (!fs::exists(path, error)) continue;
+    if (fs::is_directory(path, error)) {
+      throw InputError(path.string() + ": is a folder where the store keeps a chunk file; remove it, or --overwrite");
+    }
+    try {
+      finished_.emplace(chunk, ReadChunkFile(plan, chunk, path.string()));
+    } catch (const InputError& e) {
+      // Torn by a crash of the machine (chunks are not flushed), edited, another run's: computed again.
+      if (unreadable_++ == 0) first_unreadable_ = e.what();
+    }
+  }
 }
 
 std::map<int, ChunkResult> ChunkStore::TakeFinished() { return std::move(finished_); }
@@ -90,13 +119,18 @@ void ChunkStore::Save(int chunk, const std::string& text) {
   // machine a chunk may read back torn, and is then computed again.
   const fs::path path = ChunkPath(chunk);
   const fs::path temporary = path.string() + ".partial";
+  reservation_.Shrink(text.size());
   std::ofstream out(temporary, std::ios::binary | std::ios::trunc);
   out << text;
   out.close();
+  const int write_error = out ? 0 : errno;
   std::error_code error;
-  if (out) fs::rename(temporary, path, error);
-  if (!out || error) {
-    throw InputError(path.string() + ": cannot write the chunk: " + (error ? error.message() : std::strerror(errno)));
+  if (!write_error) fs::rename(temporary, path, error);
+  if (write_error || error) {
+    std::error_code ignored;
+    fs::remove(temporary, ignored);
+    throw InputError(path.string() + ": cannot write the chunk: " +
+                     (error ? error.message() : std::string(std::strerror(write_error ? write_error : EIO))));
   }
 }
 

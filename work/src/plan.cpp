@@ -14,8 +14,15 @@ Plan::Plan(std::vector<runner::ExperimentConfig> experiments) : experiments_(std
     rows_.push_back(runner::RowsOf(experiments_[e]));
     const int units = static_cast<int>(rows_.back().size()) * experiments_[e].realizations;
     const int size = std::clamp((units + kChunksPerExperiment - 1) / kChunksPerExperiment, 1, kMaxChunkUnits);
+    const int realizations = experiments_[e].realizations;
     for (int first = 0; first < units; first += size) {
-      chunks_.push_back({static_cast<int>(e), first, std::min(first + size, units)});
+      ChunkSpan span{static_cast<int>(e), first, std::min(first + size, units), 0};
+      for (int unit = span.first_unit; unit < span.end_unit; ++unit) {
+        const runner::RowConfig& row = rows_.back()[static_cast<std::size_t>(unit / realizations)];
+        span.attempts += static_cast<long long>(row.scenario.NumAnchors()) * static_cast<long long>(row.estimator.triggers.size());
+      }
+      attempts_ += span.attempts;
+      chunks_.push_back(span);
     }
     units_ += units;
     texts_.push_back(config::ToYaml(experiments_[e]));

@@ -23,8 +23,8 @@ Plan RebuildPlan(const ShardInputs& inputs, const registry::Components& componen
 }
 
 void WriteShardFolder(const std::function<void(const std::string&, const std::string&)>& write, const ShardInfo& info,
-                      const ShardInputs& inputs, const std::map<int, ChunkResult>& chunks) {
-  for (const auto& [chunk, result] : chunks) write(ChunkFileName(chunk), ChunkText(result));
+                      const ShardInputs& inputs, const Plan& plan, const std::map<int, ChunkResult>& chunks) {
+  for (const auto& [chunk, result] : chunks) write(ChunkFileName(chunk), ChunkText(plan, chunk, result));
   write("config.yaml", inputs.config_yaml);
   std::string axes;
   for (const std::string& axis : runner::DescribeAxes(inputs.axes)) axes += axis + '\n';

@@ -89,3 +89,48 @@ TEST(ChunkStore, ATornChunkIsComputedAgainAndOverwriteDiscards) {
 
 }  // namespace
 }  // namespace anchorbench::work
+
+namespace anchorbench::work {
+namespace {
+
+// An error in the callback that keeps a chunk (a full disk, a folder in the way) leaves the
+// threads' critical section and the parallel region as the executor's exception, not as
+// std::terminate; the chunks that finished before it were handed over.
+TEST(LocalExecutor, AnErrorWhileKeepingAChunkEndsTheCall) {
+  const Plan plan({testing::SmallTable()});
+  std::vector<int> chunks(plan.chunks().size());
+  for (std::size_t i = 0; i < chunks.size(); ++i) chunks[i] = static_cast<int>(i);
+  for (int threads : {1, 2}) {
+    int kept = 0;
+    LocalExecutor executor(testing::Parts());
+    const auto keep = [&](int, ChunkResult&&, const std::string&) {
+      if (++kept == 3) throw io::InputError("chunk-000002.csv: cannot write the chunk: No space left on device");
+    };
+    EXPECT_THROW(executor.Compute(plan, chunks, threads, keep), io::InputError) << threads << " threads";
+    EXPECT_GE(kept, 3);
+    EXPECT_LT(kept, static_cast<int>(chunks.size()) + 1);
+  }
+}
+
+// A store claims the space of the chunks still to come before any work, and gives it back as
+// chunks are saved; a disk without it is an error naming the store, and leaves no store behind.
+TEST(ChunkStore, ClaimsItsSpaceBeforeAnyWork) {
+  const testing::TempDir dir("chunk_store_space");
+  const Plan plan({testing::SmallTable()});
+  {
+    ChunkStore store(dir.path() / "results", plan, Mode::kFresh, 1 << 20);
+    EXPECT_GE(std::filesystem::file_size(dir.path() / "results.chunks" / ".reserved"), 1u << 20);
+    store.Save(0, ChunkText(plan, 0, ChunkResult{}));
+    EXPECT_LT(std::filesystem::file_size(dir.path() / "results.chunks" / ".reserved"), 1u << 20);
+  }
+  try {
+    ChunkStore store(dir.path() / "huge", plan, Mode::kFresh, std::uintmax_t(1) << 62);
+    FAIL() << "an exabyte was reserved";
+  } catch (const io::InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("huge.chunks: the chunks of this run need about"), std::string::npos) << e.what();
+  }
+  EXPECT_FALSE(std::filesystem::exists(dir.path() / "huge.chunks"));
+}
+
+}  // namespace
+}  // namespace anchorbench::work

@@ -53,7 +53,7 @@ TEST(Chunk, ItsTextReadsBackToTheSameLines) {
   std::vector<estimator::RangeSample> samples;
   const ChunkResult computed = ComputeChunk(plan, 3, Parts(), samples);
   ASSERT_FALSE(computed.attempts.empty());
-  const ChunkResult read = ParseChunk(plan, 3, ChunkText(computed), "chunk 3");
+  const ChunkResult read = ParseChunk(plan, 3, ChunkText(plan, 3, computed), "chunk 3");
   EXPECT_EQ(read.lines, computed.lines);
   ASSERT_EQ(read.attempts.size(), computed.attempts.size());
   for (std::size_t i = 0; i < read.attempts.size(); ++i) {
@@ -68,13 +68,54 @@ TEST(Chunk, ItsTextReadsBackToTheSameLines) {
 TEST(Chunk, ACutForeignOrLongChunkIsRefused) {
   const Plan plan({SmallTable()});
   std::vector<estimator::RangeSample> samples;
-  const std::string text = ChunkText(ComputeChunk(plan, 3, Parts(), samples));
+  const std::string text = ChunkText(plan, 3, ComputeChunk(plan, 3, Parts(), samples));
   const std::string cut = text.substr(0, text.rfind('\n', text.size() - 2) + 1);
   EXPECT_THROW(ParseChunk(plan, 3, cut, "cut"), io::InputError);
   EXPECT_THROW(ParseChunk(plan, 4, text, "foreign"), io::InputError);
   const std::string last_line = text.substr(cut.size());
   EXPECT_THROW(ParseChunk(plan, 3, text + last_line, "long"), io::InputError);
   EXPECT_NO_THROW(ParseChunk(plan, 3, text, "whole"));
+}
+
+// A chunk names its index and plan and carries a checksum of its lines: an edited value, two
+// lines swapped, a blank line, or the same chunk of a run with another seed is refused with the
+// line that says why, before any field is read.
+TEST(Chunk, AnEditedSwappedOrForeignChunkIsRefused) {
+  const Plan plan({SmallTable()});
+  runner::ExperimentConfig other_seed = SmallTable();
+  other_seed.seed = 4294967301ull;  // 2^32 + 5: a seed cut to int would make it 5 and the plans equal
+  const Plan other({other_seed});
+  ASSERT_NE(plan.identity(), other.identity());
+  std::vector<estimator::RangeSample> samples;
+  const std::string text = ChunkText(plan, 3, ComputeChunk(plan, 3, Parts(), samples));
+  ASSERT_EQ(text.rfind("# anchorbench chunk 3 of plan " + plan.identity() + ", fnv1a64 ", 0), 0u);
+  const auto refusal = [&](const std::string& bad) {
+    try {
+      ParseChunk(plan, 3, bad, "c");
+    } catch (const io::InputError& e) {
+      return std::string(e.what());
+    }
+    return std::string("accepted");
+  };
+  std::vector<std::string> lines;
+  for (std::size_t at = 0; at < text.size();) {
+    const std::size_t end = text.find('\n', at);
+    lines.push_back(text.substr(at, end + 1 - at));
+    at = end + 1;
+  }
+  ASSERT_GE(lines.size(), 4u);
+  std::string swapped;
+  for (std::size_t i = 0; i < lines.size(); ++i) swapped += lines[i == 2 ? 3 : i == 3 ? 2 : i];
+  std::string edited = text;
+  edited[edited.rfind(',') - 1] = edited[edited.rfind(',') - 1] == '1' ? '2' : '1';
+  std::string blank = text;
+  blank.insert(lines[0].size() + lines[1].size(), "\n");
+  for (const std::string& bad : {swapped, edited, blank}) {
+    EXPECT_EQ(refusal(bad), "c:1: its lines do not match its checksum (edited or torn)");
+  }
+  EXPECT_NE(refusal(ChunkText(other, 3, ComputeChunk(other, 3, Parts(), samples))).find("is not chunk 3 of plan"),
+            std::string::npos);
+  EXPECT_NE(refusal(text.substr(lines[0].size())).find("not a chunk file"), std::string::npos);
 }
 
 // The shards of a plan hold its chunks round robin; joined, they are the whole run to the last

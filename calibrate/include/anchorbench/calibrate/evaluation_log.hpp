@@ -22,17 +22,20 @@ struct Evaluation {
   double objective = 0.0;
 };
 
-// Columns: context,evaluation,stage,<parameter keys>,objective,<cell names>. `context` is a hash
-// of what decides the cells besides the parameters (the experiment as resolved, the fit's seed and
-// realizations): lines of another context are never reused.
+// Columns: context,evaluation,stage,<parameter keys>,objective,<cell names>,checksum. `context` is
+// a hash of what decides the cells besides the parameters (the experiment as resolved, the fit's
+// seed and realizations): lines of another context are never reused. `checksum` is the FNV-1a
+// fingerprint of the line before it: an edited line is refused, never taken.
 class EvaluationLog {
  public:
   EvaluationLog(std::vector<std::string> keys, std::vector<std::string> cell_names, std::uint64_t context);
 
   // Takes the finished evaluations of `path` (a log of a killed run, or a finished calibration's
   // evaluations.csv) as known; returns how many matched this context. A torn last line (the
-  // process was killed while writing it) is ignored; a header of other parameters or cells is an
-  // InputError naming the file.
+  // process was killed while writing it) is ignored, and so are a byte-order mark and CRLF line
+  // ends. InputError naming the file: a header of other parameters or cells; and naming the line
+  // (to cut): a cell or objective that is not a finite number >= 0, a line that does not match its
+  // checksum, an evaluation repeated with other cells.
   int Reuse(const std::filesystem::path& path);
 
   // The cells of an evaluation at these values, if known.

@@ -15,10 +15,16 @@ namespace anchorbench::config {
 //   the overridden value holds everywhere.
 // Throws InputError naming the file (and line, for YAML syntax errors).
 // Keys must be names, each at most once per mapping (both lines are named otherwise); a file must
-// be a regular file of at most 1 MiB holding a mapping; nesting is bounded by yaml-cpp's guard.
+// be a regular file of at most 1 MiB holding one YAML document, a mapping, that expands (aliases
+// included) to at most 200,000 values; nesting is bounded by yaml-cpp's guard. An override needs
+// a value ("KEY=" and "KEY=null" are refused).
 YAML::Node LoadConfigYaml(const std::string& path, const std::vector<std::string>& overrides);
 // The same from text; `source` names it in messages and anchors a relative `base:`.
 YAML::Node LoadConfigYamlText(const std::string& text, const std::string& source,
                               const std::vector<std::string>& overrides);
+
+// Every file reading `path` reads: the file itself, then its base, its base's base, ... (what a
+// command must never overwrite or delete).
+std::vector<std::string> ConfigFiles(const std::string& path);
 
 }  // namespace anchorbench::config

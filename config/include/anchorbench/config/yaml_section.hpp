@@ -1,5 +1,6 @@
 #pragma once
 
+#include <cstdint>
 #include <functional>
 #include <optional>
 #include <set>
@@ -28,6 +29,8 @@ class YamlSection {
 
   void Number(std::string_view key, double& value, Bounds bounds = {});
   void Integer(std::string_view key, int& value, int min = -2147483647, int max = 2147483647);
+  // A whole number in [0, max], read from its text (a seed: every value round-trips exactly).
+  void Unsigned(std::string_view key, std::uint64_t& value, std::uint64_t max);
   void Flag(std::string_view key, bool& value);
   template <typename Enum, typename Parse, typename Name>
   void Choice(std::string_view key, Enum& value, Parse parse, Name /*to_string*/, std::string_view choices) {
@@ -38,6 +41,8 @@ class YamlSection {
     }
   }
   void Text(std::string_view key, std::string& value);
+  // A name that goes into CSV and Markdown tables (a row's): printable, without ',', '"' or '|'.
+  void Label(std::string_view key, std::string& value);
   void TextList(std::string_view key, std::vector<std::string>& values);
   // A registered name: known(name, &why) is a registry's Knows, so the message says why not.
   template <typename Known>
@@ -102,8 +107,8 @@ class YamlSection {
     if (!options.IsValid(&why)) FailValidation(why);
   }
 
-  bool Has(std::string_view key) const;
-  void Finish() const;  // throws on keys that were never read
+  bool Has(std::string_view key) const;  // present with a value (a key asked for is a known key)
+  void Finish() const;  // throws on keys that were never read, and on known keys without a value
   [[noreturn]] void Fail(std::string_view key, const std::string& message) const;
   [[noreturn]] void FailSection(const std::string& message) const;
   [[noreturn]] void FailValidation(const std::string& why) const;
@@ -117,6 +122,7 @@ class YamlSection {
   std::string path_;
   std::string file_;
   std::set<std::string, std::less<>> used_;
+  mutable std::set<std::string, std::less<>> asked_;  // every key Has() was asked about
 };
 
 // The writing twin of YamlSection: the same visitors fill a YAML node (resolved configs in manifests).
@@ -126,12 +132,16 @@ class YamlWriter {
 
   void Number(std::string_view key, double& value, Bounds = {}) { node_[std::string(key)] = value; }
   void Integer(std::string_view key, int& value, int = 0, int = 0) { node_[std::string(key)] = value; }
+  void Unsigned(std::string_view key, std::uint64_t& value, std::uint64_t) {
+    node_[std::string(key)] = std::to_string(value);  // as text: yaml-cpp would go through a signed type
+  }
   void Flag(std::string_view key, bool& value) { node_[std::string(key)] = value; }
   template <typename Enum, typename Parse, typename Name>
   void Choice(std::string_view key, Enum& value, Parse, Name to_string, std::string_view) {
     node_[std::string(key)] = std::string(to_string(value));
   }
   void Text(std::string_view key, std::string& value) { node_[std::string(key)] = value; }
+  void Label(std::string_view key, std::string& value) { Text(key, value); }
   void TextList(std::string_view key, std::vector<std::string>& values) {
     if (!values.empty()) node_[std::string(key)] = values;
   }

@@ -18,6 +18,9 @@ struct FrontEndOptions {
   // is this far past it, it is dropped and counted (a tag whose poses stopped or never came).
   double max_wait_s = 10.0;
   std::size_t max_waiting_ranges = 100000;  // beyond this, the oldest waiting range is dropped
+  // Anchors tracked at most (each holds its chains' buffers): a range of a new anchor beyond this
+  // is dropped and counted. Real deployments have tens; a log of a million ids is not one.
+  std::size_t max_anchors = 1000;
   // Solves run when the caller calls RunPendingSolves() instead of inside AddRange/AddSample
   // (same results; see AnchorInitializer::SetDeferSolves).
   bool defer_solves = false;
@@ -35,6 +38,7 @@ struct DroppedRange {
   enum class Reason {
     kOutsidePoses,  // before the oldest pose kept, or after the tag's last pose at the end of data
     kNoPoseInTime,  // waited longer than max_wait_s, or the waiting queue was full
+    kTooManyAnchors,  // a new anchor beyond FrontEndOptions::max_anchors
   };
   double t_s = 0.0;
   int tag_id = 0;
@@ -49,6 +53,7 @@ struct FrontEndCounters {
   long ranges_outside_poses = 0;    // before the oldest pose kept, or after the last at the end of data
   long ranges_without_pose = 0;     // waited longer than max_wait_s, or the waiting queue was full
   long poses_ignored = 0;           // time not increasing for the tag, or not finite
+  long ranges_beyond_max_anchors = 0;  // of a new anchor beyond max_anchors
 };
 
 // The online front end of a navigation stack with many anchors and one sensor callback: fed tag
@@ -68,7 +73,8 @@ class FrontEnd {
 
   explicit FrontEnd(ChainFactory factory, const FrontEndOptions& options = {});
 
-  void AddAnchor(int anchor_id);  // known before its first range, so it is reported even without one
+  // Known before its first range, so it is reported even without one; false beyond max_anchors.
+  bool AddAnchor(int anchor_id);
   void AddPose(double t_s, int tag_id, const Eigen::Vector3d& p_world_tag);
   void AddRange(double t_s, int tag_id, int anchor_id, double range_m);
   void AddSample(const RangeSample& sample);  // the tag position already known (e.g. simulation)

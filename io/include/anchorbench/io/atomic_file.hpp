@@ -1,5 +1,6 @@
 #pragma once
 
+#include <cstdint>
 #include <filesystem>
 #include <ostream>
 #include <vector>
@@ -12,10 +13,12 @@ namespace anchorbench::io {
 // beside the target, flushed to the disk, which Commit() renames over it. Destroyed without
 // Commit() (an error, an interrupt), it removes the temporary and leaves any previous file
 // untouched. The constructor refuses an existing target unless `overwrite`, and one of `inputs`
-// always, and removes the temporaries of killed runs.
+// always, removes the temporaries of killed runs, and claims `expected_bytes` on the disk (before
+// the caller's work). Every error names the target, never the temporary.
 class AtomicFile {
  public:
-  AtomicFile(std::filesystem::path target, bool overwrite, const std::vector<std::filesystem::path>& inputs = {});
+  AtomicFile(std::filesystem::path target, bool overwrite, const std::vector<std::filesystem::path>& inputs = {},
+             std::uintmax_t expected_bytes = 0);
   ~AtomicFile();
   AtomicFile(const AtomicFile&) = delete;
   AtomicFile& operator=(const AtomicFile&) = delete;

@@ -13,7 +13,7 @@ namespace anchorbench::io {
 // A strict reader for the project's CSV files: a header line, then one record per line. Every
 // error is an InputError "SOURCE:LINE: ..." naming the column. Numbers must parse completely and
 // be finite; empty lines are skipped; a '#' in the first column marks a comment line; header names
-// may be quoted. It reads any stream (a file, a string buffer for a fuzzer), one line at a time,
+// may be quoted. Lines end in LF, CRLF or a lone CR (old spreadsheets). It reads any stream (a file, a string buffer for a fuzzer), one line at a time,
 // reusing its buffers (no allocation per line once warm).
 class CsvReader {
  public:
@@ -32,6 +32,8 @@ class CsvReader {
   long long Integer64(int column) const;
   bool Empty(int column) const;
   std::string_view Text(int column) const { return Field(column); }
+  std::string_view record_text() const { return text_; }  // the current record's line as read
+  int columns() const { return static_cast<int>(header_.size()); }
   const std::string& header(int column) const { return header_[static_cast<std::size_t>(column)]; }
   int line() const { return line_; }
   std::uint64_t bytes_read() const { return bytes_read_; }
@@ -40,6 +42,7 @@ class CsvReader {
   [[noreturn]] void FailAt(int line, const std::string& message) const;
 
  private:
+  bool ReadLine(std::string& line);  // the next line, whatever its ending; false at the end
   std::string_view Field(int column) const;
   template <typename T>
   T Parse(int column, const char* what) const;
@@ -48,6 +51,8 @@ class CsvReader {
   std::string source_;
   std::vector<std::string> header_;
   std::string text_;
+  std::string cr_lines_;                    // the rest of a line read up to LF that held lone CRs
+  std::size_t cr_next_ = std::string::npos;  // where its next line starts (npos: none left)
   std::vector<std::string_view> fields_;
   int line_ = 0;
   std::uint64_t bytes_read_ = 0;

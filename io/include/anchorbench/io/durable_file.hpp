@@ -1,5 +1,6 @@
 #pragma once
 
+#include <cstdint>
 #include <filesystem>
 #include <ostream>
 #include <streambuf>
@@ -11,10 +12,12 @@ namespace anchorbench::io {
 // A file being written that reaches the disk before Close() returns: buffered writes on a file
 // descriptor of its own, then fsync and close, each checked. The first failure is kept with the
 // system's reason, and Close() throws it as an InputError naming the file ("No space left on
-// device", "Read-only file system", ...).
+// device", "Read-only file system", ...). `reserve_bytes` are claimed on the disk at once (a full
+// disk is an error before the caller's work, not after), and what is not written is given back at
+// Close(). Errors name `shown_as` (the file the user asked for, where `path` is a temporary).
 class DurableFile {
  public:
-  explicit DurableFile(std::filesystem::path path);
+  explicit DurableFile(std::filesystem::path path, std::uintmax_t reserve_bytes = 0, std::string shown_as = "");
   ~DurableFile();
   DurableFile(const DurableFile&) = delete;
   DurableFile& operator=(const DurableFile&) = delete;
@@ -44,6 +47,7 @@ class DurableFile {
   [[noreturn]] void Fail(const std::string& what, int error) const;
 
   std::filesystem::path path_;
+  std::string shown_as_;
   int fd_ = -1;
   Buffer buffer_;
   std::ostream stream_;

@@ -1,5 +1,6 @@
 #pragma once
 
+#include <cstddef>
 #include <cstdint>
 #include <map>
 #include <string>
@@ -21,6 +22,13 @@ struct LogPolicy {
   OutOfOrder out_of_order = OutOfOrder::kError;
   // With kSort: how late a row may come, in seconds of the file's own time; later is an error.
   double sort_window_s = 1.0;
+  // A pose farther from its tag's last pose than this speed allows is dropped (a glitch of the
+  // tracker: one pose at x = 1e6 would otherwise bend every range around it), unless the next
+  // pose agrees with it (then the tag did jump: a reset of the tracker's frame, kept).
+  double max_speed_mps = 50.0;
+  // Distinct anchors a log may hold (the front end's estimator::FrontEndOptions::max_anchors):
+  // beyond it the log is refused at the first range of the anchor too many, before any work.
+  std::size_t max_anchors = 1000;
   // Every drop is an error (file:line, exit 2), as before these rules existed.
   bool strict = false;
 };
@@ -41,11 +49,13 @@ enum class Drop {
   kLateRange,          // older than a row before it (out_of_order: drop)
   kOutsidePoses,       // before the tag's first pose or after its last (never extrapolated)
   kNoPoseInTime,       // its tag's next pose never came within the front end's wait
+  kTooManyAnchors,     // of an anchor beyond the front end's max_anchors
   kPoseNotFinite,      // a position coordinate is nan or inf
   kRepeatedPose,       // the same t, tag and position as a row before it
   kConflictingPose,    // the same t and tag, another position: not the first (repeated_poses: first)
   kAveragedPose,       // merged into the average of its time (repeated_poses: average)
   kLatePose,           // older than a row before it (out_of_order: drop)
+  kPoseJump,           // farther from the tag's last pose than max_speed_mps allows
 };
 const char* NameOf(Drop reason);  // snake_case, as in replay_summary.json
 bool IsPoseDrop(Drop reason);

@@ -11,6 +11,8 @@
 #include <queue>
 #include <set>
 #include <string>
+#include <unordered_map>
+#include <unordered_set>
 #include <vector>
 
 #include "anchorbench/io/csv_reader.hpp"
@@ -73,7 +75,8 @@ class PoseStream {
  private:
   bool NextOrdered(PoseRecord& pose);
   bool FillGroup();
-  void Resolve();  // rows_at_t_ -> group_: repeats dropped, conflicts by the policy
+  void Resolve();  // rows_at_t_ -> group_: repeats dropped, conflicts by the policy, jumps dropped
+  bool IsJump(const PoseRecord& pose);  // farther from the tag's last pose than max_speed_mps allows
   void Dropped(Drop reason, const PoseRecord& pose, const std::string& why);
 
   CsvReader csv_;
@@ -87,8 +90,10 @@ class PoseStream {
   std::vector<PoseRecord> rows_at_t_, group_;
   std::vector<Eigen::Vector3d> group_sum_;
   std::vector<int> group_count_;
+  std::unordered_map<int, std::size_t> group_index_;  // tag -> its pose in group_
   std::size_t group_next_ = 0;
   std::optional<PoseRecord> lookahead_;
+  std::unordered_map<int, PoseRecord> last_kept_, last_jump_;  // per tag
 };
 
 class RangeStream {
@@ -116,7 +121,17 @@ class RangeStream {
   TimeOrder<RangeRecord> order_;
   bool at_end_ = false;
   std::int64_t rows_ = 0;
-  std::vector<RangeRecord> rows_at_t_;  // kept rows of the newest time, for exact duplicates
+  // The kept rows of the newest time, for exact duplicates: (tag, anchor, range's bits).
+  struct RowKey {
+    int tag_id, anchor_id;
+    std::uint64_t range_bits;
+    bool operator==(const RowKey&) const = default;
+  };
+  struct RowKeyHash {
+    std::size_t operator()(const RowKey& k) const;
+  };
+  double t_rows_s_ = 0.0;
+  std::unordered_set<RowKey, RowKeyHash> rows_at_t_;
 };
 
 // The number a ranges file's name ends in ("anchor_3.csv", "A12.csv"), if any.

@@ -7,12 +7,14 @@
 #include <string>
 #include <vector>
 
+#include "anchorbench/io/reservation.hpp"
+
 namespace anchorbench::io {
 
 // A result folder that appears whole or not at all. The constructor, before any long work:
-// refuses a target that holds files unless `overwrite`, or that holds one of `inputs` (even with
-// overwrite: the swap would delete it); removes what killed runs left behind; creates a fresh
-// sibling, <parent>/.<name>.partial-<pid>; and reserves `expected_bytes` in it, so a read-only or
+// refuses a target that holds files unless `overwrite`, that holds one of `inputs` (even with
+// overwrite: the swap would delete it), or that lies inside one of `input_folders`; removes what
+// killed runs left behind; creates a fresh sibling, <parent>/.<name>.partial-<pid>; and reserves `expected_bytes` in it, so a read-only or
 // full disk is an error now, not after hours of Monte Carlo. Write() puts each file into the
 // sibling and flushes it to the disk. Commit() swaps the sibling in for the target in one atomic
 // exchange (two renames where the file system has no exchange) and removes the old one.
@@ -23,7 +25,8 @@ class ResultFolder {
   struct Options {
     bool overwrite = false;
     std::uintmax_t expected_bytes = 0;
-    std::vector<std::filesystem::path> inputs;  // files the run reads
+    std::vector<std::filesystem::path> inputs;         // files the run reads
+    std::vector<std::filesystem::path> input_folders;  // folders the run reads (merge's shards)
   };
 
   ResultFolder(std::filesystem::path target, const Options& options);
@@ -40,10 +43,9 @@ class ResultFolder {
   const std::filesystem::path& target() const { return target_; }
 
  private:
-  void ReleaseReservation();
-
   std::filesystem::path target_;
   std::filesystem::path partial_;
+  Reservation reservation_;
   bool committed_ = false;
 };
 
@@ -52,5 +54,8 @@ std::filesystem::path ResultFolderPath(const std::string& out, const std::string
 
 // Refuses (InputError) an output file that would replace one of `inputs`.
 void RefuseToReplaceInputs(const std::filesystem::path& output, const std::vector<std::filesystem::path>& inputs);
+
+// Whether `path` is `folder` or lies inside it (both resolved: links, "..", relative paths).
+bool IsInside(const std::filesystem::path& path, const std::filesystem::path& folder);
 
 }  // namespace anchorbench::io

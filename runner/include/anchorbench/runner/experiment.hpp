@@ -42,6 +42,10 @@ struct RowConfig {
   std::optional<PaperRow> paper;
 };
 
+// The largest seed a config or the command line may give: 2^63-1 (the command line's limit; every
+// seed up to it is written and read back exactly, in configs, manifests, shards and chunk stores).
+constexpr std::uint64_t kMaxSeed = 9223372036854775807ull;
+
 // One experiment (configs/*.yaml, read by the config layer): a scenario to simulate and the
 // estimator to run on it, and for `run`, the rows of a Monte Carlo table. docs/config.md lists
 // the keys with units.

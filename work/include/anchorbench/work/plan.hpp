@@ -12,11 +12,13 @@
 
 namespace anchorbench::work {
 
-// Units [first_unit, end_unit) of one experiment.
+// Units [first_unit, end_unit) of one experiment, and the attempts they make (one per anchor and
+// trigger of a unit's row).
 struct ChunkSpan {
   int experiment = 0;
   int first_unit = 0;
   int end_unit = 0;
+  long long attempts = 0;
 };
 
 // An experiment of U units is cut into chunks of ceil(U / kChunksPerExperiment) units, at most
@@ -39,6 +41,7 @@ class Plan {
   }
   const std::vector<ChunkSpan>& chunks() const { return chunks_; }
   long long units() const { return units_; }
+  long long attempts() const { return attempts_; }
   // Every experiment's resolved config (config::ToYaml), in order: what a worker rank rebuilds
   // the plan from (config::LoadConfigText) ...
   const std::vector<std::string>& texts() const { return texts_; }
@@ -50,6 +53,7 @@ class Plan {
   std::vector<std::vector<runner::RowConfig>> rows_;
   std::vector<ChunkSpan> chunks_;
   long long units_ = 0;
+  long long attempts_ = 0;
   std::vector<std::string> texts_;
   std::string identity_;
 };

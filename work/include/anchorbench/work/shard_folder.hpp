@@ -39,7 +39,7 @@ Plan RebuildPlan(const ShardInputs& inputs, const registry::Components& componen
 
 // The files of a shard folder, written through `write(name, text)` (an io::ResultFolder's).
 void WriteShardFolder(const std::function<void(const std::string&, const std::string&)>& write, const ShardInfo& info,
-                      const ShardInputs& inputs, const std::map<int, ChunkResult>& chunks);
+                      const ShardInputs& inputs, const Plan& plan, const std::map<int, ChunkResult>& chunks);
 
 ShardInfo ReadShardInfo(const std::filesystem::path& folder);
 ShardInputs ReadShardInputs(const std::filesystem::path& folder);
