@@ -135,13 +135,14 @@ void AddRecordingCommands(CLI::App& cli, CommandLine& c) {
                            "Drop ranges above this as implausible (default 1000)")
       ->check(FiniteNumber(1e-3, 1e7));
   c.replay_cmd->add_option("--repeated-poses", c.replay.repeated_poses,
-                           "Two poses of a tag at one time, different positions: error (default), first, average")
+                           "Two poses of a tag at one time more than 1 mm apart (closer: one pose, counted): error "
+                           "(default), first, average")
       ->check(CLI::IsMember({"error", "first", "average"}));
   c.replay_cmd->add_option("--out-of-order", c.replay.out_of_order,
-                           "A row older than one before it: error (default), drop, sort (within --sort-window-s)")
+                           "A row older than one before it: sort (default: within --sort-window-s, counted), drop, error")
       ->check(CLI::IsMember({"error", "drop", "sort"}));
   c.replay_cmd->add_option("--sort-window-s", c.replay.policy.sort_window_s,
-                           "With --out-of-order sort: how late a row may come (default 1 s)")
+                           "With --out-of-order sort: how late a row may come (default 0.1 s; later is an error)")
       ->check(FiniteNumber(0.0, 3600.0));
   c.replay_cmd->add_option("--max-speed-mps", c.replay.policy.max_speed_mps,
                            "Drop a pose farther from its tag's last one than this speed allows, unless the next "

@@ -36,7 +36,7 @@ struct ReplayArgs {
   std::string poses, anchors, config, trace, out;
   std::vector<std::string> ranges;  // one or more files, merged by time
   io::LogPolicy policy;              // its enums set from the two names below
-  std::string repeated_poses = "error", out_of_order = "error";
+  std::string repeated_poses = "error", out_of_order = "sort";
   bool overwrite = false;
   bool quiet = false;
 };

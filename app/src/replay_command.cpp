@@ -84,7 +84,7 @@ int ReplayCommand(const ReplayArgs& args, const AppContext& app) {
   }
 
   // The second pass, streamed: one row at a time from the files into the front end.
-  report::ReplaySummary summary{files, policy, survey.pose_rows, survey.range_rows, {}, {}};
+  report::ReplaySummary summary{files, policy, survey.pose_rows, survey.range_rows, {}, {}, survey.reordered_rows};
   io::RecordedLog log(files, policy, survey.default_tag_id, summary.drops);
   Progress progress("replay", args.quiet, "MB", kBytesPerMb);
   std::int64_t rows = 0;

@@ -39,7 +39,7 @@ void Hall(V& v, sim::HallOptions& o) {
 template <typename V>
 void Trajectory(V& v, sim::TrajectoryOptions& o) {
   v.Choice("kind", o.kind, sim::ParseTrajectoryKind, [](auto k) { return sim::ToString(k); },
-           "random, straight, planar, short");
+           "random, straight, planar, short, approach");
   v.Number("fraction_straight", o.fraction_straight);
   v.Number("fraction_planar", o.fraction_planar);
   v.Number("fraction_short", o.fraction_short);
@@ -54,6 +54,10 @@ void Trajectory(V& v, sim::TrajectoryOptions& o) {
   v.Number("max_period_s", o.max_period_s);
   v.Number("short_fraction", o.short_fraction);
   v.Number("hall_duration_s", o.hall_duration_s);
+  v.Number("approach_start_m", o.approach_start_m);
+  v.Number("approach_end_m", o.approach_end_m);
+  v.Number("approach_cone_deg", o.approach_cone_deg);
+  v.Number("approach_duration_s", o.approach_duration_s);
   v.Check(o);
 }
 
@@ -73,6 +77,10 @@ void Ranging(V& v, sim::RangeModelOptions& o) {
   v.Number("max_range_m", o.max_range_m);
   v.Number("dropout_probability", o.dropout_probability);
   v.Number("sigma_position_m", o.sigma_position_m);
+  v.Number("antenna_bias_m", o.antenna_bias_m);
+  v.Number("tag_antenna_bias_m", o.tag_antenna_bias_m);
+  v.Number("link_offset_m", o.link_offset_m);
+  v.Number("range_scale_sigma", o.range_scale_sigma);
   v.Check(o);
 }
 
@@ -151,6 +159,16 @@ void Nls(V& v, estimator::NlsOptions& o) {
   v.Check(o);
 }
 
+// What a covariance adds beyond the solver's (estimator.covariance, and the certificate's own).
+template <typename V>
+void Covariance(V& v, estimator::CovarianceOptions& o) {
+  v.Number("model_error_m", o.model_error_m);
+  v.Integer("model_error_degree", o.model_error_degree);
+  v.Flag("travel_bias", o.travel_bias);
+  v.Flag("correlated_noise", o.correlated_noise);
+  v.Check(o);
+}
+
 template <typename V>
 void Estimator(V& v, registry::EstimatorConfig& o, const registry::Components& parts) {
   v.Name("solver", o.solver, [&](const std::string& name, std::string* why) { return parts.solvers.Knows(name, why); });
@@ -168,6 +186,13 @@ void Estimator(V& v, registry::EstimatorConfig& o, const registry::Components& p
              [](auto side) { return estimator::ToString(side); }, "any, above, below");
     s.Check(o.initializer.height_check);
   });
+  v.Section("certificate", [&](auto& s) {
+    s.Number("accuracy_m", o.certificate.accuracy_m);
+    s.Number("confidence", o.certificate.confidence);
+    Covariance(s, o.certificate.covariance);
+    s.Check(o.certificate);
+  });
+  v.Section("covariance", [&](auto& s) { Covariance(s, o.initializer.covariance); });
   v.Section("height_prior", [&](auto& s) {
     s.Flag("enabled", o.height_prior.enabled);
     s.Number("sigma_m", o.height_prior.sigma_m);

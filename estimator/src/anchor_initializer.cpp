@@ -29,7 +29,7 @@ bool InitializerOptions::IsValid(std::string* why) const {
   if (max_buffered_samples / 2 < min_samples) {
     return fail("max_buffered_samples must be >= 2 min_samples (a thinned buffer keeps half)");
   }
-  return height_check.IsValid(why);
+  return height_check.IsValid(why) && covariance.IsValid(why);
 }
 
 AnchorInitializer::AnchorInitializer(int anchor_id, const InitializerOptions& options,
@@ -41,6 +41,9 @@ AnchorInitializer::AnchorInitializer(int anchor_id, const InitializerOptions& op
       trigger_(std::move(trigger)),
       solver_(filter_->AtSolve(std::move(solver))) {
   if (options_.height_check.enabled) solver_ = std::make_shared<HeightCheckedSolver>(solver_, options_.height_check);
+  const OutlierFilter* online_filter = filter_.get();  // owned here: it lives as long as the solver
+  solver_ = std::make_shared<CredibleCovarianceSolver>(
+      solver_, options_.covariance, [online_filter](double scale_m) { return online_filter->TravelBias(scale_m); });
 }
 
 InitEvent AnchorInitializer::SolveNow(double t_s, double pdop) {

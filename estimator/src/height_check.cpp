@@ -87,18 +87,22 @@ Mirror MirrorOf(std::span<const Eigen::Vector3d> p_world_tag, std::span<const do
   mirror.exists = true;
   mirror.p_world_mirror = estimate.p_world_anchor - 2.0 * mirror.height_m * mirror.normal;
 
-  const std::vector<double> own = Residuals(p_world_tag, range_m, estimate.p_world_anchor, estimate.bias_m);
-  std::vector<double> reflected = Residuals(p_world_tag, range_m, mirror.p_world_mirror, 0.0);
-  mirror.bias_mirror_m = Median(reflected);
-  for (double& r : reflected) r -= mirror.bias_mirror_m;
-
-  std::vector<double> deviations(own.size());
-  const double own_median = Median(own);
-  for (std::size_t k = 0; k < own.size(); ++k) deviations[k] = std::abs(own[k] - own_median);
-  const double sigma_m = std::max(kMadToSigma * Median(deviations), kMinSigmaM);
-  mirror.evidence =
-      (TrimmedSquares(reflected, trim_fraction) - TrimmedSquares(own, trim_fraction)) / (sigma_m * sigma_m);
+  mirror.bias_mirror_m = Median(Residuals(p_world_tag, range_m, mirror.p_world_mirror, 0.0));
+  mirror.evidence = FitEvidence(p_world_tag, range_m, estimate.p_world_anchor, estimate.bias_m, mirror.p_world_mirror,
+                                mirror.bias_mirror_m, trim_fraction);
   return mirror;
+}
+
+double FitEvidence(std::span<const Eigen::Vector3d> p_world_tag, std::span<const double> range_m,
+                   const Eigen::Vector3d& p_a, double bias_a_m, const Eigen::Vector3d& p_b, double bias_b_m,
+                   double trim_fraction) {
+  const std::vector<double> a = Residuals(p_world_tag, range_m, p_a, bias_a_m);
+  const std::vector<double> b = Residuals(p_world_tag, range_m, p_b, bias_b_m);
+  std::vector<double> deviations(a.size());
+  const double a_median = Median(a);
+  for (std::size_t k = 0; k < a.size(); ++k) deviations[k] = std::abs(a[k] - a_median);
+  const double sigma_m = std::max(kMadToSigma * Median(deviations), kMinSigmaM);
+  return (TrimmedSquares(b, trim_fraction) - TrimmedSquares(a, trim_fraction)) / (sigma_m * sigma_m);
 }
 
 double MirrorEvidence(std::span<const Eigen::Vector3d> p_world_tag, std::span<const double> range_m,

@@ -90,8 +90,8 @@ TEST(HeightCheck, ASidePriorResolvesTheMirror) {
   EXPECT_FALSE(ParseSide("up", &side));
 }
 
-TEST(HeightCheck, OffByDefaultAndAnchorOnThePlaneHasNoMirror) {
-  EXPECT_FALSE(HeightCheckOptions{}.enabled);
+TEST(HeightCheck, OnByDefaultAndAnchorOnThePlaneHasNoMirror) {
+  EXPECT_TRUE(HeightCheckOptions{}.enabled);  // for real logs; the paper's experiments turn it off
   const testing::AnchorData flat = Path(0.03, 0.05, 3);
   EXPECT_TRUE(Succeeded(Checked(false)->Solve(flat.p_world_tag, flat.range_m).status));
   SolveResult on_plane;

@@ -29,7 +29,7 @@ std::string LateMessage(double t_s, double t_newest_s) {
 
 std::string TooLateMessage(double t_s, double t_newest_s, double window_s) {
   return "t=" + FormatNumber(t_s) + " comes after t=" + FormatNumber(t_newest_s) + ", more than --sort-window-s " +
-         FormatNumber(window_s) + " late";
+         FormatNumber(window_s) + " late (a larger --sort-window-s, or --out-of-order drop, accepts it)";
 }
 
 void CheckGroupSize(const CsvReader& csv, std::size_t rows, double t_s) {
@@ -79,6 +79,7 @@ typename TimeOrder<Record>::Verdict TimeOrder<Record>::Push(const Record& record
   if (record.t_s < t_newest_s_) {
     if (!sorting) return Verdict::kLate;
     if (record.t_s < t_newest_s_ - policy_.sort_window_s) return Verdict::kTooLate;
+    ++reordered_;
   }
   t_newest_s_ = std::max(t_newest_s_, record.t_s);
   heap_.push({record, seq_++});
@@ -169,7 +170,7 @@ void PoseStream::Resolve() {
       continue;
     }
     const PoseRecord& first = group_[kept];
-    if (row.p_world_tag == first.p_world_tag) {
+    if ((row.p_world_tag - first.p_world_tag).norm() <= policy_.repeated_pose_tolerance_m) {
       Dropped(Drop::kRepeatedPose, row,
               "tag " + std::to_string(row.tag_id) + " repeats its pose of line " + std::to_string(first.line));
       continue;
@@ -337,6 +338,7 @@ LogSurvey SurveyLog(const LogFiles& files, const LogPolicy& policy, const BytePr
       report(poses.bytes_read());
     }
     survey.pose_rows = poses.rows();
+    survey.reordered_rows += poses.reordered();
     before += poses.bytes_read();
   }
   if (survey.tag_ids.empty()) throw InputError(files.poses + ": no poses");
@@ -355,6 +357,7 @@ LogSurvey SurveyLog(const LogFiles& files, const LogPolicy& policy, const BytePr
       report(ranges.bytes_read());
     }
     survey.range_rows += ranges.rows();
+    survey.reordered_rows += ranges.reordered();
     before += ranges.bytes_read();
   }
   survey.bytes = before;

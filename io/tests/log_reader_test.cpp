@@ -131,7 +131,12 @@ TEST(LogReader, RepeatedPosesAreDroppedAndConflictsFollowThePolicy) {
 TEST(LogReader, OutOfOrderRowsAreAnErrorOrDroppedOrSortedWithinTheWindow) {
   const std::string late = "t,tag_id,anchor_id,range\n0,0,1,5\n1,0,1,6\n0.5,0,1,7\n2,0,1,8\n";
   LogDrops drops;
-  EXPECT_EQ(ErrorOf([&] { Ranges(late, LogPolicy{}, drops); }),
+  EXPECT_EQ(ErrorOf([&] { Ranges(late, LogPolicy{}, drops); }),  // the default sorts within 0.1 s
+            "r.csv:4: t=0.5 comes after t=1, more than --sort-window-s 0.1 late (a larger --sort-window-s, or "
+            "--out-of-order drop, accepts it)");
+  LogPolicy error;
+  error.out_of_order = LogPolicy::OutOfOrder::kError;
+  EXPECT_EQ(ErrorOf([&] { Ranges(late, error, drops); }),
             "r.csv:4: time goes backwards (t=0.5 after t=1); --out-of-order drop or sort accepts such rows");
   LogPolicy drop;
   drop.out_of_order = LogPolicy::OutOfOrder::kDrop;
@@ -145,7 +150,9 @@ TEST(LogReader, OutOfOrderRowsAreAnErrorOrDroppedOrSortedWithinTheWindow) {
   for (std::size_t i = 1; i < sorted.size(); ++i) EXPECT_LE(sorted[i - 1].t_s, sorted[i].t_s);
   EXPECT_EQ(sorted[1].line, 4);
   sort.sort_window_s = 0.4;
-  EXPECT_EQ(ErrorOf([&] { Ranges(late, sort, drops); }), "r.csv:4: t=0.5 comes after t=1, more than --sort-window-s 0.4 late");
+  EXPECT_EQ(ErrorOf([&] { Ranges(late, sort, drops); }),
+            "r.csv:4: t=0.5 comes after t=1, more than --sort-window-s 0.4 late (a larger --sort-window-s, or "
+            "--out-of-order drop, accepts it)");
 }
 
 TEST(LogReader, TimeColumnsInSecondsMillisecondsNanosecondsAndIsoDates) {

@@ -56,7 +56,7 @@ TEST(RecordedData, WithoutATallyEveryDropIsAnError) {
             std::string::npos);
   EXPECT_NE(PosesError("t,tag_id,x,y,z\n0,0,inf,0,0\n").find("data.csv:2: position (inf, 0, 0) is not finite"),
             std::string::npos);
-  EXPECT_NE(RangesError("t,tag_id,anchor_id,range\n1,0,1,5\n0.5,0,1,5\n").find("data.csv:3: time goes backwards"),
+  EXPECT_NE(RangesError("t,tag_id,anchor_id,range\n1,0,1,5\n0.5,0,1,5\n").find("data.csv:3: t=0.5 comes after t=1"),
             std::string::npos);
   EXPECT_NE(PosesError("t,tag_id,x,y,z\n1,0,0,0,0\n1,0,1,0,0\n").find("data.csv:3: tag 0 has another pose at t=1"),
             std::string::npos);
@@ -101,7 +101,7 @@ TEST(RecordedData, PosesOfSeveralTagsAreInTimeOrder) {
   ASSERT_EQ(poses.size(), 4u);
   EXPECT_EQ(poses[2].tag_id, 1);
   EXPECT_EQ(poses[2].p_world_tag, Eigen::Vector3d(3, 3, 3));
-  EXPECT_NE(PosesError("t,tag_id,x,y,z\n0,0,0,0,0\n1,0,2,2,2\n0,1,1,1,1\n").find("data.csv:4: time goes backwards"),
+  EXPECT_NE(PosesError("t,tag_id,x,y,z\n0,0,0,0,0\n1,0,2,2,2\n0,1,1,1,1\n").find("data.csv:4: t=0 comes after t=1"),
             std::string::npos);
 }
 

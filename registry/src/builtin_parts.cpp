@@ -2,6 +2,7 @@
 #include <functional>
 #include <stdexcept>
 
+#include "anchorbench/estimator/certified_trigger.hpp"
 #include "anchorbench/estimator/consistency_filter.hpp"
 #include "anchorbench/estimator/ls_solver.hpp"
 #include "anchorbench/estimator/nlopt_solver.hpp"
@@ -137,6 +138,15 @@ void RegisterBuiltinTriggers(TriggerRegistry& registry) {
                       if (!c.solver) throw std::invalid_argument("needs the anchor's solver");
                       return std::make_unique<estimator::ConfidenceRegionDopTrigger>(
                           c.solver, c.options.confidence_threshold, Cadence(c.options), c.options.confidence_sigmas);
+                    });
+  registry.Register("certified",
+                    "fires once the data rule out every anchor position farther than certificate.accuracy_m from the "
+                    "estimate, its mirror included (on trigger.evaluate_every / evaluate_growth; ours)",
+                    [](const std::string&, const Context& c) {
+                      if (!c.solver) throw std::invalid_argument("needs the anchor's solver");
+                      return std::make_unique<estimator::CertifiedTrigger>(
+                          c.solver, c.solver_options, c.certificate, c.initializer.height_check, c.travel_bias,
+                          Cadence(c.options));
                     });
   registry.Register("fixed_window", "the baseline: one solve on all of an anchor's data at the end of the run",
                     [](const std::string&, const Context&) { return std::make_unique<estimator::FixedWindowTrigger>(); });

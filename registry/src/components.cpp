@@ -32,8 +32,12 @@ estimator::AnchorInitializer MakeInitializer(const Components& components, int a
   if (!solver) throw std::invalid_argument(why);
   std::unique_ptr<estimator::OutlierFilter> filter = components.filters.Create(config.filter.kind, {config.filter, seed}, &why);
   if (!filter) throw std::invalid_argument(why);
+  const estimator::OutlierFilter* online_filter = filter.get();
   std::unique_ptr<estimator::InitTrigger> made = components.triggers.Create(
-      trigger, {config.trigger, solver_options, solver, p_world_anchor_reference}, &why);
+      trigger,
+      {config.trigger, solver_options, solver, p_world_anchor_reference, initializer_options, config.certificate,
+       [online_filter](double scale_m) { return online_filter->TravelBias(scale_m); }},
+      &why);
   if (!made) throw std::invalid_argument(why);
   return estimator::AnchorInitializer(anchor_id, initializer_options, std::move(filter), std::move(made),
                                       std::move(solver));

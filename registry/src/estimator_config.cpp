@@ -33,7 +33,8 @@ bool EstimatorConfig::IsValid(std::string* why) const {
     return false;
   }
   return filter.consistency.IsValid(why) && filter.ransac.IsValid(why) && trigger.IsValid(why) &&
-         initializer.IsValid(why) && solver_options.IsValid(why) && height_prior.IsValid(why);
+         initializer.IsValid(why) && solver_options.IsValid(why) && height_prior.IsValid(why) &&
+         certificate.IsValid(why);
 }
 
 }  // namespace anchorbench::registry

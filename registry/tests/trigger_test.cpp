@@ -4,6 +4,8 @@
 
 #include <gtest/gtest.h>
 
+#include "anchorbench/testing/paper_estimator.hpp"
+
 #include "anchorbench/estimator/anchor_initializer.hpp"
 #include "anchorbench/estimator/ls_solver.hpp"
 #include "anchorbench/estimator/pdop.hpp"
@@ -24,7 +26,7 @@ using estimator::SolveResult;
 using anchorbench::testing::PassBy;
 
 // Named, not `{}`: GCC 12 warns falsely (-Wmaybe-uninitialized) on brace temporaries of it.
-const EstimatorConfig kDefaults;
+const EstimatorConfig kDefaults = anchorbench::testing::PaperEstimator();
 
 const Eigen::Vector3d kAnchor(0, 4, 3);
 
@@ -48,7 +50,7 @@ Fed FeedAll(AnchorInitializer& initializer, const std::vector<RangeSample>& samp
 
 // With no filter every sample is accepted, so sample i is the (i+1)-th accepted one.
 EstimatorConfig Unfiltered() {
-  EstimatorConfig options;
+  EstimatorConfig options = anchorbench::testing::PaperEstimator();
   options.filter.kind = "none";
   return options;
 }
@@ -291,7 +293,7 @@ TEST(Triggers, RegistryListsEveryBuiltInWithADescription) {
     EXPECT_FALSE(description.empty()) << name;
   }
   // The built-ins need no truth; the oracles pdop_true and dop4_true are eval's, registered on top by who wants it.
-  EXPECT_EQ(names, (std::vector<std::string>{"dop4_closest_point", "dop4_confidence", "fixed_window", "hdop_closest_point", "pdop_closest_point",
+  EXPECT_EQ(names, (std::vector<std::string>{"certified", "dop4_closest_point", "dop4_confidence", "fixed_window", "hdop_closest_point", "pdop_closest_point",
                                              "pdop_ls", "pdop_nls", "sample_count", "timeout"}));
 }
 

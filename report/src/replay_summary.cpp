@@ -57,9 +57,11 @@ void WriteReplaySummaryJson(std::ostream& out, const ReplaySummary& s) {
   for (std::size_t f = 0; f < s.files.ranges.size(); ++f) out << (f ? ", " : "") << JsonString(s.files.ranges[f]);
   out << "],\n  \"policy\": {\"max_range_m\": " << FormatNumber(s.policy.max_range_m) << ", \"repeated_poses\": \""
       << io::NameOf(s.policy.repeated_poses) << "\", \"out_of_order\": \"" << io::NameOf(s.policy.out_of_order)
-      << "\", \"sort_window_s\": " << FormatNumber(s.policy.sort_window_s)
-      << ", \"max_speed_mps\": " << FormatNumber(s.policy.max_speed_mps) << ", \"strict\": " << (s.policy.strict ? "true" : "false") << "},\n  \"pose_rows\": " << s.pose_rows
-      << ",\n  \"range_rows\": " << s.range_rows << ",\n  \"samples\": " << Samples(s)
+      << "\", \"sort_window_s\": " << FormatNumber(s.policy.sort_window_s) << ", \"repeated_pose_tolerance_m\": "
+      << FormatNumber(s.policy.repeated_pose_tolerance_m) << ", \"max_speed_mps\": " << FormatNumber(s.policy.max_speed_mps)
+      << ", \"strict\": " << (s.policy.strict ? "true" : "false") << "},\n  \"pose_rows\": " << s.pose_rows
+      << ",\n  \"range_rows\": " << s.range_rows << ",\n  \"reordered_rows\": " << s.reordered_rows
+      << ",\n  \"samples\": " << Samples(s)
       << ",\n  \"dropped\": " << s.drops.total() << ",\n  \"samples_by_anchor\": {";
   bool first = true;
   for (const auto& [anchor, count] : s.samples_by_anchor) {
@@ -75,7 +77,8 @@ void WriteReplaySummaryJson(std::ostream& out, const ReplaySummary& s) {
 
 void WriteReplaySummaryMarkdown(std::ostream& out, const ReplaySummary& s) {
   out << "# Replay\n\n" << s.pose_rows << " pose rows and " << s.range_rows << " range rows read; " << Samples(s)
-      << " ranges handed to the initializers; " << s.drops.total() << " rows dropped.\n";
+      << " ranges handed to the initializers; " << s.drops.total() << " rows dropped; " << s.reordered_rows
+      << " rows put back in time order.\n";
   const std::map<io::Drop, io::DropTally> ranges = ByReason(s.drops.ranges_by_anchor());
   const std::map<io::Drop, io::DropTally> poses = ByReason(s.drops.poses_by_tag());
   if (ranges.empty() && poses.empty()) return;
@@ -99,7 +102,8 @@ void WriteReplaySummaryMarkdown(std::ostream& out, const ReplaySummary& s) {
 
 void PrintReplaySummary(std::ostream& err, const ReplaySummary& s) {
   err << "replay: " << s.range_rows << " range rows, " << Samples(s) << " used, " << s.drops.total()
-      << " rows dropped\n";
+      << " rows dropped" << (s.reordered_rows > 0 ? ", " + std::to_string(s.reordered_rows) + " put back in time order" : "")
+      << "\n";
   for (const auto& [kind, by_id] : {std::pair{"ranges", &s.drops.ranges_by_anchor()}, std::pair{"poses", &s.drops.poses_by_tag()}}) {
     for (const auto& [reason, tally] : ByReason(*by_id)) {
       err << "  " << kind << ' ' << io::NameOf(reason) << ": " << tally.count << " (e.g. " << tally.first << ")\n";

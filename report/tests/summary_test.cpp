@@ -2,6 +2,8 @@
 
 #include <gtest/gtest.h>
 
+#include "anchorbench/testing/paper_estimator.hpp"
+
 #include "anchorbench/report/run_outputs.hpp"
 
 namespace anchorbench::report {
@@ -31,7 +33,7 @@ TEST(Summary, TableColumnsWorkedByHand) {
   missed.method = kFixedWindowTrigger;
   missed.status = "too_few_samples";
   attempts.push_back(missed);
-  const auto summaries = Summarize(attempts, {RowConfig{}}, 2, 500, 1);  // default triggers
+  const auto summaries = Summarize(attempts, {RowConfig{"", {}, anchorbench::testing::PaperEstimator(), std::nullopt}}, 2, 500, 1);
   ASSERT_EQ(summaries.size(), 2u);  // fixed_window, then pdop_closest_point
   const MethodSummary& fixed = summaries[0];
   EXPECT_EQ(fixed.attempts, 5);

@@ -34,6 +34,8 @@ Attempt AttemptOf(const estimator::AnchorInitializer& initializer, const std::op
   }
   if (a.solve) {
     a.status = std::string(estimator::ToString(a.solve->status));
+  } else if (const std::optional<estimator::SolveStatus> refusal = initializer.trigger_refusal()) {
+    a.status = std::string(estimator::ToString(*refusal));  // e.g. the certificate's: height_unobservable
   } else {
     a.status = a.n_used == 0 ? "no_data" : "not_triggered";
   }

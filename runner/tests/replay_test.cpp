@@ -4,6 +4,8 @@
 
 #include <gtest/gtest.h>
 
+#include "anchorbench/testing/paper_estimator.hpp"
+
 #include "anchorbench/eval/oracles.hpp"
 #include "anchorbench/testing/parts.hpp"
 #include "anchorbench/io/hanyang.hpp"
@@ -53,7 +55,7 @@ TEST(Replay, SimulatedWellConditionedRunInitializesEveryAnchorWithinItsBound) {
   const std::filesystem::path log = dir.path() / "log";
 
   const auto truth = io::LoadAnchors((log / "anchors.csv").string());
-  registry::EstimatorConfig estimator;
+  registry::EstimatorConfig estimator = anchorbench::testing::PaperEstimator();
   estimator.filter.consistency.tau_m = 0.3;  // ~2 sigma of a difference of two ranges
   estimator.solver_options.nls.kernel_scale_m = options.ranging.sigma_range_m;
   const ReplayResult result = Replay(io::LoadPoses((log / "poses.csv").string()),
@@ -125,7 +127,7 @@ TEST(Replay, RealHanyangLosCase) {
   const io::Recording recording = io::ConvertHanyangCase(case_folder).recording;
   EXPECT_EQ(recording.anchors.size(), 4u);
   EXPECT_GT(recording.ranges.size(), 8000u);
-  registry::EstimatorConfig config;
+  registry::EstimatorConfig config = anchorbench::testing::PaperEstimator();
   config.filter.consistency.tau_m = 0.2;
   const ReplayResult result = Replay(recording.poses, recording.ranges, &recording.anchors, config, Parts(), 1);
   ASSERT_EQ(result.attempts.size(), 8u);

@@ -51,6 +51,10 @@ bool RangeModelOptions::IsValid(std::string* why) const {
   if (!(max_range_m > 0.0) || !std::isfinite(max_range_m)) return fail("max_range_m must be > 0");
   if (!(dropout_probability >= 0.0 && dropout_probability < 1.0)) return fail("dropout_probability must be in [0, 1)");
   if (!non_negative(sigma_position_m)) return fail("sigma_position_m must be >= 0");
+  if (!(antenna_bias_m >= 0.0 && antenna_bias_m <= 10.0)) return fail("antenna_bias_m must be in [0, 10]");
+  if (!(tag_antenna_bias_m >= 0.0 && tag_antenna_bias_m <= 10.0)) return fail("tag_antenna_bias_m must be in [0, 10]");
+  if (!(link_offset_m >= 0.0 && link_offset_m <= 100.0)) return fail("link_offset_m must be in [0, 100]");
+  if (!(range_scale_sigma >= 0.0 && range_scale_sigma <= 0.5)) return fail("range_scale_sigma must be in [0, 0.5]");
   return true;
 }
 

@@ -5,6 +5,7 @@
 
 #include <Eigen/Geometry>
 
+#include "anchorbench/sim/antenna_pattern.hpp"
 #include "anchorbench/sim/random_stream.hpp"
 
 namespace anchorbench::sim {
@@ -71,12 +72,16 @@ std::vector<SimAnchor> DrawAnchors(const ScenarioOptions& options, std::uint64_t
 }
 
 // The body's path, its kind drawn for this realization (Table I's mix of suboptimal runs).
-Trajectory DrawTrajectory(const ScenarioOptions& options, std::uint64_t seed, std::uint64_t realization) {
+Trajectory DrawTrajectory(const ScenarioOptions& options, const std::vector<SimAnchor>& anchors, std::uint64_t seed,
+                          std::uint64_t realization) {
   RandomStream shape(seed, realization, StreamId::kTrajectory);
   TrajectoryOptions trajectory = options.trajectory;
   trajectory.kind = DrawTrajectoryKind(options.trajectory, shape);
-  return options.environment == EnvironmentKind::kTunnel ? TunnelTrajectory(options.tunnel, trajectory, shape)
-                                                         : HallTrajectory(options.hall, trajectory, shape);
+  if (options.environment == EnvironmentKind::kTunnel) return TunnelTrajectory(options.tunnel, trajectory, shape);
+  if (trajectory.kind == TrajectoryKind::kApproach) {
+    return ApproachTrajectory(options.hall, trajectory, anchors.front().p_world_anchor, shape);
+  }
+  return HallTrajectory(options.hall, trajectory, shape);
 }
 
 // Heading along the direction of travel (central differences; kept while standing still).
@@ -116,12 +121,61 @@ void PlaceTags(const ScenarioOptions& options, std::uint64_t seed, std::uint64_t
 // The range stream of Eq. (1), epoch by epoch, tag by tag, anchor by anchor. One stream per
 // (tag, anchor) and noise source, so a pair's noise does not depend on which other anchors happen
 // to be in range; tag 0 keeps the sub-stream of a single-tag robot.
+// What Eq. (1) leaves out (range_model.hpp), for every link; all zero, and nothing drawn, unless
+// configured.
+class RadioBiases {
+ public:
+  RadioBiases(const RangeModelOptions& model, std::uint64_t seed, std::uint64_t realization, std::size_t tags,
+              const std::vector<SimAnchor>& anchors)
+      : tags_(tags), anchors_(anchors.size()),
+        any_(model.antenna_bias_m > 0.0 || model.tag_antenna_bias_m > 0.0 || model.link_offset_m > 0.0 ||
+             model.range_scale_sigma > 0.0) {
+    for (const SimAnchor& anchor : anchors) {
+      RandomStream pattern(seed, realization, StreamId::kAntennaPattern, static_cast<std::uint32_t>(anchor.id));
+      anchor_pattern_.push_back(model.antenna_bias_m > 0.0 ? AntennaPattern(model.antenna_bias_m, pattern)
+                                                           : AntennaPattern());
+      RandomStream scale(seed, realization, StreamId::kRangeScale, static_cast<std::uint32_t>(anchor.id));
+      scale_.push_back(model.range_scale_sigma > 0.0 ? model.range_scale_sigma * scale.Normal() : 0.0);
+    }
+    for (std::size_t tag = 0; tag < tags; ++tag) {
+      RandomStream pattern(seed, realization, StreamId::kAntennaPattern, static_cast<std::uint32_t>(1u << 16 | tag));
+      tag_pattern_.push_back(model.tag_antenna_bias_m > 0.0 ? AntennaPattern(model.tag_antenna_bias_m, pattern)
+                                                            : AntennaPattern());
+      for (const SimAnchor& anchor : anchors) {
+        RandomStream offset(seed, realization, StreamId::kLinkOffset, Substream(tag, anchor));
+        link_offset_m_.push_back(model.link_offset_m > 0.0 ? model.link_offset_m * offset.Normal() : 0.0);
+      }
+    }
+  }
+
+  static std::uint32_t Substream(std::size_t tag, const SimAnchor& anchor) {
+    return static_cast<std::uint32_t>((tag << 16) | static_cast<std::uint32_t>(anchor.id));
+  }
+
+  bool any() const { return any_; }  // else Of() is 0 for every link: the paper's Eq. (1)
+
+  // The bias of one range: the anchor sees the tag along u_anchor_tag, the tag (yawed body) the anchor.
+  double Of(std::size_t tag, std::size_t anchor, const Eigen::Vector3d& p_anchor_tag, double yaw_rad) const {
+    const double distance_m = p_anchor_tag.norm();
+    if (!(distance_m > 0.0)) return 0.0;
+    const Eigen::Vector3d u_anchor_tag = p_anchor_tag / distance_m;
+    const Eigen::Vector3d u_body = Eigen::AngleAxisd(-yaw_rad, Eigen::Vector3d::UnitZ()) * (-u_anchor_tag);
+    return scale_[anchor] * distance_m + anchor_pattern_[anchor](u_anchor_tag) + tag_pattern_[tag](u_body) +
+           link_offset_m_[tag * anchors_ + anchor];
+  }
+
+ private:
+  std::size_t tags_, anchors_;
+  bool any_;
+  std::vector<AntennaPattern> anchor_pattern_, tag_pattern_;
+  std::vector<double> scale_, link_offset_m_;
+};
+
 std::vector<SimRange> DrawRanges(const RangeModelOptions& model, std::uint64_t seed, std::uint64_t realization,
                                  const Scenario& scenario) {
   const std::size_t tags = scenario.p_world_tag_true.size();
-  const auto substream = [](std::size_t tag, const SimAnchor& anchor) {
-    return static_cast<std::uint32_t>((tag << 16) | static_cast<std::uint32_t>(anchor.id));
-  };
+  const auto substream = [](std::size_t tag, const SimAnchor& anchor) { return RadioBiases::Substream(tag, anchor); };
+  const RadioBiases radio(model, seed, realization, tags, scenario.anchors);
   std::vector<RandomStream> noise_rng, dropout_rng;
   std::vector<OutlierProcess> outliers;
   for (std::size_t tag = 0; tag < tags; ++tag) {
@@ -141,8 +195,11 @@ std::vector<SimRange> DrawRanges(const RangeModelOptions& model, std::uint64_t s
         if (distance_m > model.max_range_m) continue;
         if (dropout_rng[pair].Bernoulli(model.dropout_probability)) continue;
         const double outlier_m = outliers[pair].Next();
+        const Eigen::Vector3d p_anchor_tag = scenario.p_world_tag_true[tag][k] - anchor.p_world_anchor;
+        const double radio_m =
+            radio.any() ? radio.Of(tag, static_cast<std::size_t>(anchor.id), p_anchor_tag, scenario.yaw_rad[k]) : 0.0;
         const double range_m = distance_m + anchor.bias_m + model.sigma_range_m * noise_rng[pair].Normal() +
-                               outlier_m;  // Eq. (1) plus the outlier, if any
+                               outlier_m + radio_m;  // Eq. (1) plus the outlier, if any, and the radio's biases
         // A ranging device never reports a negative distance.
         ranges.push_back({k, scenario.t_s[k], static_cast<int>(tag), anchor.id, std::max(range_m, 0.0), outlier_m != 0.0});
       }
@@ -166,6 +223,10 @@ bool ScenarioOptions::IsValid(std::string* why) const {
   if (tag_offsets_m.empty() || tag_offsets_m.size() > static_cast<std::size_t>(kMaxTags) ||
       !std::all_of(tag_offsets_m.begin(), tag_offsets_m.end(), [](const Eigen::Vector3d& p) { return p.allFinite(); })) {
     if (why) *why = "tag_offsets_m must list 1 to 16 finite offsets [x, y, z]";
+    return false;
+  }
+  if (environment == EnvironmentKind::kTunnel && trajectory.kind == TrajectoryKind::kApproach) {
+    if (why) *why = "trajectory.kind approach is a hall trajectory (the tunnel has none)";
     return false;
   }
   const bool environment_ok = environment == EnvironmentKind::kTunnel ? tunnel.IsValid(why) : hall.IsValid(why);
@@ -193,7 +254,7 @@ double ScenarioOptions::MaxEpochs() const {
 Scenario GenerateScenario(const ScenarioOptions& options, std::uint64_t seed, std::uint64_t realization) {
   Scenario scenario;
   scenario.anchors = DrawAnchors(options, seed, realization);
-  Trajectory trajectory = DrawTrajectory(options, seed, realization);
+  Trajectory trajectory = DrawTrajectory(options, scenario.anchors, seed, realization);
   scenario.t_s = std::move(trajectory.t_s);
   scenario.p_world_body = std::move(trajectory.p_world_tag);
   scenario.yaw_rad = Headings(scenario.p_world_body);

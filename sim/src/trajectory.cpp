@@ -5,6 +5,8 @@
 #include <cmath>
 #include <numbers>
 
+#include <Eigen/Geometry>
+
 namespace anchorbench::sim {
 namespace {
 
@@ -56,13 +58,14 @@ std::string_view ToString(TrajectoryKind kind) {
     case TrajectoryKind::kStraight: return "straight";
     case TrajectoryKind::kPlanar: return "planar";
     case TrajectoryKind::kShort: return "short";
+    case TrajectoryKind::kApproach: return "approach";
   }
   return "unknown";
 }
 
 bool ParseTrajectoryKind(std::string_view name, TrajectoryKind* kind) {
   for (TrajectoryKind k : {TrajectoryKind::kRandom, TrajectoryKind::kStraight, TrajectoryKind::kPlanar,
-                           TrajectoryKind::kShort}) {
+                           TrajectoryKind::kShort, TrajectoryKind::kApproach}) {
     if (name == ToString(k)) {
       *kind = k;
       return true;
@@ -91,6 +94,11 @@ bool TrajectoryOptions::IsValid(std::string* why) const {
   for (double fraction : {fraction_straight, fraction_planar, fraction_short}) {
     if (!(fraction >= 0.0 && fraction <= 1.0)) return fail("fraction_straight, fraction_planar and fraction_short must be in [0, 1]");
   }
+  if (!(approach_end_m > 0.0 && approach_start_m >= approach_end_m && approach_start_m <= 100.0)) {
+    return fail("approach_start_m must be >= approach_end_m > 0 (and <= 100)");
+  }
+  if (!(approach_cone_deg >= 0.0 && approach_cone_deg <= 90.0)) return fail("approach_cone_deg must be in [0, 90]");
+  if (!(approach_duration_s > 0.0) || !std::isfinite(approach_duration_s)) return fail("approach_duration_s must be > 0");
   if (!(fraction_straight + fraction_planar + fraction_short <= 1.0)) {
     return fail("fraction_straight, fraction_planar and fraction_short must sum to <= 1");
   }
@@ -168,6 +176,41 @@ Trajectory HallTrajectory(const HallOptions& hall, const TrajectoryOptions& o, R
     p.z() = std::clamp(o.height_m + climb_m * vertical(t), z_low, z_high);
     trajectory.t_s.push_back(t);
     trajectory.p_world_tag.push_back(p);
+  }
+  return trajectory;
+}
+
+Trajectory ApproachTrajectory(const HallOptions& hall, const TrajectoryOptions& o, const Eigen::Vector3d& p_world_anchor,
+                              RandomStream& rng) {
+  TrajectoryOptions wander = o;
+  wander.kind = TrajectoryKind::kRandom;
+  Trajectory trajectory = HallTrajectory(hall, wander, rng);
+  // The cone's axis: from the anchor towards the hall's centre at the tag's height.
+  const Eigen::Vector3d centre(0.5 * hall.length_m, 0.5 * hall.width_m, o.height_m);
+  Eigen::Vector3d axis = centre - p_world_anchor;
+  if (!(axis.norm() > 1e-9)) axis = Eigen::Vector3d::UnitX();
+  axis.normalize();
+  const Eigen::Vector3d side = axis.unitOrthogonal();
+  const Eigen::Vector3d up = axis.cross(side);
+  const double half_rad = o.approach_cone_deg * std::numbers::pi / 180.0;
+  const double wave_period_s = rng.Uniform(1.5, 3.0), turn_period_s = rng.Uniform(1.5, 3.0);
+  const double wave_phase = rng.Uniform(0.0, 2.0 * std::numbers::pi), turn_phase = rng.Uniform(0.0, 2.0 * std::numbers::pi);
+  constexpr double kBlend_s = 4.0;  // from the approach's end into the wandering
+  Eigen::Vector3d p_end = p_world_anchor;
+  for (std::size_t k = 0; k < trajectory.t_s.size(); ++k) {
+    const double t = trajectory.t_s[k];
+    if (t <= o.approach_duration_s) {
+      const double distance_m = o.approach_start_m + (o.approach_end_m - o.approach_start_m) * t / o.approach_duration_s;
+      // The angle off the axis fills the cone (sqrt of a smooth [0, 1] signal), the turn goes round.
+      const double off_rad = half_rad * std::sqrt(0.5 + 0.5 * std::sin(2.0 * std::numbers::pi * t / wave_period_s + wave_phase));
+      const double turn_rad = 2.0 * std::numbers::pi * t / turn_period_s + turn_phase;
+      const Eigen::Vector3d unit =
+          std::cos(off_rad) * axis + std::sin(off_rad) * (std::cos(turn_rad) * side + std::sin(turn_rad) * up);
+      p_end = trajectory.p_world_tag[k] = p_world_anchor + distance_m * unit;
+    } else if (t < o.approach_duration_s + kBlend_s) {
+      const double w = (t - o.approach_duration_s) / kBlend_s;
+      trajectory.p_world_tag[k] = (1.0 - w) * p_end + w * trajectory.p_world_tag[k];
+    }
   }
   return trajectory;
 }

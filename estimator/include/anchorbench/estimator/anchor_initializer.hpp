@@ -12,6 +12,7 @@
 #include "anchorbench/estimator/anchor_solver.hpp"
 #include "anchorbench/estimator/closest_point_pdop.hpp"
 #include "anchorbench/estimator/consistency_filter.hpp"
+#include "anchorbench/estimator/credible_covariance.hpp"
 #include "anchorbench/estimator/height_check.hpp"
 #include "anchorbench/estimator/init_trigger.hpp"
 #include "anchorbench/estimator/outlier_filter.hpp"
@@ -42,6 +43,8 @@ struct InitializerOptions {
   // Off by default (the paper has none): every solve of the initializer, after its filter, must
   // beat its mirror through the tags' plane, else it counts as failed (height_unobservable).
   HeightCheckOptions height_check;
+  // What every solve's covariance adds beyond the solver's noise-only one (credible_covariance.hpp).
+  CovarianceOptions covariance;
 
   bool IsValid(std::string* why) const;
 };
@@ -100,6 +103,8 @@ class AnchorInitializer {
   const ClosestPointPdop& pdop() const { return pdop_; }
   // The latest online solve that failed (degenerate, non-finite), if any: why it is not initialized.
   const std::optional<SolveResult>& last_failed_solve() const { return last_failed_solve_; }
+  // The trigger's reason for not firing, where it has one (InitTrigger::refusal).
+  std::optional<SolveStatus> trigger_refusal() const { return trigger_->refusal(); }
   // Accepted samples left out of the buffer by its cap, and samples lost because the queue behind
   // a deferred solve reached the cap (the solve was not run in time).
   long samples_not_buffered() const { return samples_not_buffered_; }

@@ -31,7 +31,7 @@ namespace anchorbench::estimator {
 // 60 degrees of vertical has no above, and the prior is not used.
 struct HeightCheckOptions {
   enum class Side { kAny, kAbove, kBelow };
-  bool enabled = false;       // off: the paper's estimator, which has no such check
+  bool enabled = true;        // on for real logs (ours); the paper's estimator has no such check (configs/paper.yaml)
   double min_evidence = 9.21; // below this the mirror is within a likelihood ratio of 100: ambiguous
   double trim_fraction = 0.1; // the largest residuals of each fit left out of its sum
   Side side = Side::kAny;     // the anchor's side of the tags' plane, if known
@@ -55,6 +55,12 @@ struct Mirror {
 };
 Mirror MirrorOf(std::span<const Eigen::Vector3d> p_world_tag, std::span<const double> range_m,
                 const SolveResult& estimate, double trim_fraction);
+
+// The evidence for fit `a` over fit `b` of the same data: the trimmed sum of squared residuals of
+// b minus a's, over a's robust residual variance (1.4826 MAD)^2 (negative: b fits better).
+double FitEvidence(std::span<const Eigen::Vector3d> p_world_tag, std::span<const double> range_m,
+                   const Eigen::Vector3d& p_a, double bias_a_m, const Eigen::Vector3d& p_b, double bias_b_m,
+                   double trim_fraction);
 
 // The evidence against the mirror of `estimate`; +infinity where there is none.
 double MirrorEvidence(std::span<const Eigen::Vector3d> p_world_tag, std::span<const double> range_m,

@@ -1,9 +1,12 @@
 #pragma once
 
 #include <cstddef>
+#include <optional>
 #include <span>
 
 #include <Eigen/Core>
+
+#include "anchorbench/estimator/solve_result.hpp"
 
 namespace anchorbench::estimator {
 
@@ -37,6 +40,10 @@ class InitTrigger {
   // False for the fixed-window baseline: it never fires online, and the initializer solves once,
   // on all of the anchor's data, at Finish().
   virtual bool online() const { return true; }
+
+  // Why it has not fired, where it can say more than "not triggered" (the certified trigger: the
+  // mirror of its last estimate could not be ruled out, kHeightUnobservable).
+  virtual std::optional<SolveStatus> refusal() const { return std::nullopt; }
 };
 
 }  // namespace anchorbench::estimator

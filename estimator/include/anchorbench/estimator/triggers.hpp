@@ -19,8 +19,10 @@ struct TriggerOptions {
   // many accepted samples, and (ours) once the data has grown by this factor since the last
   // solve. Each solve is O(N): a fixed cadence makes a long run O(N^2 / every); a growth factor
   // g > 1 bounds the solves' total to O(N g / (g - 1)). 1: the fixed cadence alone.
+  // 1.1 by default (ours, for real logs: a 135 s log of 3.2e5 ranges took 69 s with pdop_nls on
+  // the fixed cadence alone); the paper's experiments use 1 (configs/paper.yaml).
   int evaluate_every = 10;
-  double evaluate_growth = 1.0;
+  double evaluate_growth = 1.1;
   // The bias-aware triggers (ours, docs/method.md): dop4_closest_point and the oracle dop4_true
   // fire once their 4-column DOP is below bias_aware_threshold; dop4_confidence once the worst
   // 4-column DOP over the confidence_sigmas ellipsoid of the running estimate is below

@@ -14,14 +14,18 @@ namespace anchorbench::io {
 struct LogPolicy {
   // Ranges above this are dropped as implausible (a UWB link reaches a few hundred metres).
   double max_range_m = 1000.0;
-  // Two pose rows of one tag at one time with different positions.
+  // Two pose rows of one tag at one time: within this distance they are one pose repeated (the
+  // first kept, the others counted as repeated_pose); farther apart, the policy below decides.
+  double repeated_pose_tolerance_m = 0.001;
   enum class RepeatedPoses { kError, kFirst, kAverage };
   RepeatedPoses repeated_poses = RepeatedPoses::kError;
-  // A row older than one read before it (within one file).
+  // A row older than one read before it (within one file). By default (ours, for real logs)
+  // rows up to sort_window_s late are put in order and counted; a later one is an error naming
+  // the flag.
   enum class OutOfOrder { kError, kDrop, kSort };
-  OutOfOrder out_of_order = OutOfOrder::kError;
+  OutOfOrder out_of_order = OutOfOrder::kSort;
   // With kSort: how late a row may come, in seconds of the file's own time; later is an error.
-  double sort_window_s = 1.0;
+  double sort_window_s = 0.1;
   // A pose farther from its tag's last pose than this speed allows is dropped (a glitch of the
   // tracker: one pose at x = 1e6 would otherwise bend every range around it), unless the next
   // pose agrees with it (then the tag did jump: a reset of the tracker's frame, kept).

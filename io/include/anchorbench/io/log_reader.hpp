@@ -48,6 +48,7 @@ class TimeOrder {
   Verdict Push(const Record& record);
   bool Pop(Record& record, bool end_of_input);
   double t_newest_s() const { return t_newest_s_; }
+  std::int64_t reordered() const { return reordered_; }  // late rows put in order (kSort)
 
  private:
   struct Entry {
@@ -63,6 +64,7 @@ class TimeOrder {
   std::priority_queue<Entry, std::vector<Entry>, Later> heap_;
   std::uint64_t seq_ = 0;
   double t_newest_s_ = -std::numeric_limits<double>::infinity();
+  std::int64_t reordered_ = 0;
 };
 
 class PoseStream {
@@ -71,6 +73,7 @@ class PoseStream {
   bool Next(PoseRecord& pose);  // the next pose in time order; false at the end
   std::uint64_t bytes_read() const { return csv_.bytes_read(); }
   std::int64_t rows() const { return rows_; }
+  std::int64_t reordered() const { return order_.reordered(); }
 
  private:
   bool NextOrdered(PoseRecord& pose);
@@ -105,6 +108,7 @@ class RangeStream {
   bool Next(RangeRecord& range);  // the next range in time order; false at the end
   std::uint64_t bytes_read() const { return csv_.bytes_read(); }
   std::int64_t rows() const { return rows_; }
+  std::int64_t reordered() const { return order_.reordered(); }
 
  private:
   bool NextOrdered(RangeRecord& range);
@@ -151,6 +155,7 @@ struct LogSurvey {
   std::set<int> anchor_ids;  // of the ranges kept
   std::optional<int> default_tag_id;  // the poses' only tag, for ranges without a tag column
   std::int64_t pose_rows = 0, range_rows = 0;  // data rows read
+  std::int64_t reordered_rows = 0;             // rows put back in time order (LogPolicy::kSort)
   std::uint64_t bytes = 0;
   LogDrops drops;
 };

@@ -1,6 +1,7 @@
 #pragma once
 
 #include <cstdint>
+#include <functional>
 #include <memory>
 #include <optional>
 #include <string>
@@ -9,6 +10,7 @@
 #include <Eigen/Core>
 
 #include "anchorbench/estimator/anchor_initializer.hpp"
+#include "anchorbench/estimator/certified_trigger.hpp"
 #include "anchorbench/estimator/init_trigger.hpp"
 #include "anchorbench/estimator/outlier_filter.hpp"
 #include "anchorbench/estimator/robust_kernel.hpp"
@@ -42,6 +44,13 @@ struct TriggerContext {
   estimator::AnchorSolverOptions solver_options;  // the anchor's, its height prior included
   std::shared_ptr<const estimator::Solver> solver;
   std::optional<Eigen::Vector3d> p_world_anchor_reference;
+  // The anchor's initializer options (its mirror check, with the height prior, and covariance)
+  // and the certificate's, for triggers that judge an estimate as the initializer reports it.
+  estimator::InitializerOptions initializer;
+  estimator::CertificateOptions certificate;
+  // The anchor's online filter's travel bias (OutlierFilter::TravelBias). The filter is owned by
+  // the initializer that owns the trigger, so it outlives every call.
+  std::function<double(double)> travel_bias;
 };
 
 using SolverRegistry = Registry<estimator::Solver, SolverContext>;

@@ -6,6 +6,7 @@
 
 #include "anchorbench/estimator/anchor_initializer.hpp"
 #include "anchorbench/estimator/anchor_solver.hpp"
+#include "anchorbench/estimator/certified_trigger.hpp"
 #include "anchorbench/estimator/consistency_filter.hpp"
 #include "anchorbench/estimator/height_prior.hpp"
 #include "anchorbench/estimator/ransac_solver.hpp"
@@ -42,12 +43,14 @@ struct HeightPriorConfig {
 // caller's registries (Components::Check); IsValid checks the typed options.
 struct EstimatorConfig {
   std::string solver = "lm_adaptive";                                    // estimator.solver
-  std::vector<std::string> triggers = {"fixed_window", "pdop_closest_point"};  // estimator.triggers, side by side
+  // estimator.triggers, side by side: the paper's two (Table I's columns) and ours, certified.
+  std::vector<std::string> triggers = {"fixed_window", "pdop_closest_point", "certified"};
   FilterConfig filter;                                                   // estimator.filter
   estimator::TriggerOptions trigger;                                     // estimator.trigger
   estimator::InitializerOptions initializer;  // estimator.trigger.min_samples / retry_growth, estimator.buffer
   estimator::AnchorSolverOptions solver_options;                         // estimator.ls, estimator.nls
   HeightPriorConfig height_prior;                                        // estimator.height_prior
+  estimator::CertificateOptions certificate;                             // estimator.certificate
 
   bool IsValid(std::string* why) const;
 };

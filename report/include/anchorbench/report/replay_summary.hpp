@@ -15,6 +15,7 @@ struct ReplaySummary {
   std::int64_t pose_rows = 0, range_rows = 0;  // data rows in the files
   std::map<int, std::int64_t> samples_by_anchor;  // ranges handed to the initializers
   io::LogDrops drops;  // the readers' and the front end's
+  std::int64_t reordered_rows = 0;  // rows put back in time order (kept, counted)
 };
 
 // replay_summary.json: inputs, policy, row counts, and per anchor / tag each drop reason with its

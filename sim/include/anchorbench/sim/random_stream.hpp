@@ -7,8 +7,8 @@ namespace anchorbench::sim {
 
 // The simulator's random streams. Each noise source has its own stream (after open_vins), so a new
 // realization changes the noise, and changing one source leaves the others untouched. Stream ids
-// belong to whoever draws them: the simulator uses 1 to 7; other layers pick ids from
-// kFirstFreeStreamId up and name them where they draw (runner: solver seeds; report: bootstrap).
+// belong to whoever draws them: the simulator uses 1 to 7 and 16 to 18; other layers pick ids from
+// kFirstFreeStreamId up and name them where they draw (runner: solver seeds 8; report: bootstrap 9).
 enum class StreamId : std::uint32_t {
   kLayout = 1,      // anchor positions
   kTrajectory = 2,  // trajectory shape and kind
@@ -17,8 +17,12 @@ enum class StreamId : std::uint32_t {
   kOutlier = 5,     // outlier occurrence and magnitude (one sub-stream per tag and anchor)
   kPositionNoise = 6,
   kDropout = 7,
+  // The radio biases (range_model.hpp), added after the ids above were given away: 16 and up.
+  kAntennaPattern = 16,  // one sub-stream per anchor (its id) and per tag (1 << 16 | tag)
+  kLinkOffset = 17,      // one sub-stream per tag and anchor
+  kRangeScale = 18,      // one sub-stream per anchor
 };
-constexpr std::uint32_t kFirstFreeStreamId = 8;
+constexpr std::uint32_t kFirstFreeStreamId = 8;  // 8 to 15 and 19 up are free
 
 // Counter-based generator: Philox4x32-10 (Salmon et al., SC'11). The key is the seed; the counter
 // is (block index, stream << 24 ^ sub-stream, realization), so any (seed, realization, stream,

@@ -16,7 +16,9 @@ std::string_view ToString(OutlierKind k);
 bool ParseBiasDistribution(std::string_view name, BiasDistribution* d);
 bool ParseOutlierKind(std::string_view name, OutlierKind* k);
 
-// Range model of Eq. (1): d = ||p_U - p_A|| + gamma_A + eta, eta ~ N(0, sigma_d^2), plus outliers.
+// Range model of Eq. (1): d = ||p_U - p_A|| + gamma_A + eta, eta ~ N(0, sigma_d^2), plus outliers,
+// and (ours, off by default) what Eq. (1) leaves out: d = (1 + s_A) ||p_U - p_A|| + gamma_A +
+// f_A(u_A->U) + g_U(u_U->A, body frame) + o_UA + eta, with f, g antenna patterns, o a link offset.
 struct RangeModelOptions {
   double sigma_range_m = 0.1;  // sigma_d
   // Constant per-anchor bias gamma_A: uniform in [bias_a_m, bias_b_m], or normal with
@@ -34,6 +36,12 @@ struct RangeModelOptions {
   double max_range_m = 40.0;          // anchors farther than this (true distance) give no range
   double dropout_probability = 0.0;   // a range inside max_range is lost with this probability
   double sigma_position_m = 0.0;      // white noise on the reported tag positions (each axis)
+  // The biases real radios have (ours, from public recordings: docs/method.md), each off at 0 and
+  // drawing nothing then, so the paper's scenarios are untouched:
+  double antenna_bias_m = 0.0;      // RMS of each anchor's direction-dependent bias (AntennaPattern)
+  double tag_antenna_bias_m = 0.0;  // the same for each tag, in the body frame
+  double link_offset_m = 0.0;       // sigma of a constant offset per (tag, anchor) link
+  double range_scale_sigma = 0.0;   // sigma of a per-anchor scale error: range += s * distance
 
   bool IsValid(std::string* why) const;
 };

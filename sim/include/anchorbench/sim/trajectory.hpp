@@ -16,6 +16,7 @@ enum class TrajectoryKind {
   kStraight,  // ill-conditioned: straight line at constant height and lateral offset
   kPlanar,    // ill-conditioned: lateral weaving at (nearly) constant height
   kShort,     // ill-conditioned: random motion over a fraction of the environment only
+  kApproach,  // hall only (ours): a hand-held approach at anchor 0 inside a narrow cone, then kRandom
 };
 
 std::string_view ToString(TrajectoryKind kind);
@@ -42,6 +43,14 @@ struct TrajectoryOptions {
   double short_fraction = 0.25;        // kShort: fraction of the length covered (tunnel: one stretch;
                                        // hall: the run wanders over that fraction of the length)
   double hall_duration_s = 300.0;      // hall trajectories: duration
+  // kApproach: the tag walks at anchor 0 from approach_start_m to approach_end_m in
+  // approach_duration_s, waving inside a cone of approach_cone_deg half-angle about the line from
+  // the anchor into the hall; then it wanders as kRandom (a public recording's first seconds,
+  // where range and bias trade off along the cone's axis: docs/method.md).
+  double approach_start_m = 3.0;
+  double approach_end_m = 1.3;
+  double approach_cone_deg = 36.0;
+  double approach_duration_s = 7.0;
 
   bool IsValid(std::string* why) const;
 };
@@ -58,5 +67,8 @@ TrajectoryKind DrawTrajectoryKind(const TrajectoryOptions& options, RandomStream
 Trajectory TunnelTrajectory(const TunnelOptions& tunnel, const TrajectoryOptions& options, RandomStream& rng);
 // Smooth wandering inside the hall, kept off the walls.
 Trajectory HallTrajectory(const HallOptions& hall, const TrajectoryOptions& options, RandomStream& rng);
+// kApproach: the approach at the anchor at p_world_anchor, then HallTrajectory's wandering.
+Trajectory ApproachTrajectory(const HallOptions& hall, const TrajectoryOptions& options,
+                              const Eigen::Vector3d& p_world_anchor, RandomStream& rng);
 
 }  // namespace anchorbench::sim

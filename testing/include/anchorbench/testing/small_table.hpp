@@ -1,6 +1,7 @@
 #pragma once
 
 #include "anchorbench/runner/experiment.hpp"
+#include "anchorbench/testing/paper_estimator.hpp"
 
 namespace anchorbench::testing {
 
@@ -11,6 +12,7 @@ inline runner::ExperimentConfig SmallTable() {
   config.seed = 7;
   config.realizations = 6;
   config.bootstrap_resamples = 200;
+  config.estimator = PaperEstimator();
   config.scenario.tunnel.length_m = 60.0;
   config.scenario.tunnel.num_anchors = 4;
   config.scenario.trajectory.fraction_straight = 0.2;

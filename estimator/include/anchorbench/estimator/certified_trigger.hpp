@@ -1,0 +1,103 @@
+#pragma once
+
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <Eigen/Eigenvalues>
+
+#include "anchorbench/estimator/anchor_solver.hpp"
+#include "anchorbench/estimator/credible_covariance.hpp"
+#include "anchorbench/estimator/height_check.hpp"
+#include "anchorbench/estimator/init_trigger.hpp"
+#include "anchorbench/estimator/solver.hpp"
+#include "anchorbench/estimator/triggers.hpp"
+
+namespace anchorbench::estimator {
+
+// The certificate's settings (the config's estimator.certificate).
+struct CertificateOptions {
+  double accuracy_m = 0.75;  // D: every anchor position farther than this from the estimate must be ruled out
+  double confidence = 0.99;  // of the region that must lie within D
+  // The covariance the certificate judges: its own, so that it stays honest where the reported
+  // one is configured as the paper's (estimator.covariance).
+  CovarianceOptions covariance;
+
+  bool IsValid(std::string* why) const;
+};
+
+// The chi-square quantile with 3 degrees of freedom (Wilson-Hilferty; within 0.5% from 0.5 to
+// 0.9999): the squared radius, in standard deviations, of a 3-D confidence region.
+double ChiSquare3Quantile(double confidence);
+
+// Ours (docs/method.md#the-certified-trigger): fire only once the data rule out, with the bias
+// refit, every anchor position farther than D from the estimate. On its cadence it solves (the
+// anchor's solver) and judges the estimate four ways, all without the truth:
+// 0. It must lie within D of the previous evaluation's estimate (no flip between basins).
+// 1. The mirror through the tags' plane must be ruled out: the fit is refined (L2 LM) from the
+//    estimate's reflection, and the estimate must beat that fit by the mirror check's min_evidence
+//    (FitEvidence, with the anchor's height prior if it has one), plus 2 ln(k) after k such tests
+//    (a Bonferroni bound: two nearly equal fits tested again and again cross any fixed threshold
+//    by chance; a near-flat Table I run did, at 9.4 after -6 and +3). A flat path is refused as
+//    height_unobservable, never initialized on a confident mirror; and an estimate that sits in the
+//    mirror's basin of a path that is not quite flat (its reflection refines to a better fit) is
+//    not certified either. Where the refinement returns to the estimate, the plain reflection's
+//    evidence counts (HeightCheckedSolver's test).
+// 2. The credible covariance P (credible_covariance.hpp, with the certificate's own options: the
+//    solver's, scaled for correlated noise, plus the model error and the consistency check's
+//    travel bias) must put its
+//    `confidence` region inside the ball of radius D: chi2_3(confidence) lambda_max(P) <= D^2.
+// 3. So must the covariance seen from every end of that region's principal axes (6 points), with
+//    the estimate's residual scale (floored at the model error): an early estimate can look well
+//    conditioned from where it stands, and the region's ends are where a trade-off of range and
+//    bias along a narrow cone of directions, or a line of tags, shows.
+// A line of tags or too narrow a cone leaves P singular or large: the trigger waits. Cost per
+// evaluation: one solve, one mirror test and 7 O(N) passes; on a geometric cadence
+// (evaluate_growth > 1) a whole run costs O(N).
+class CertifiedTrigger : public InitTrigger {
+ public:
+  // `solver_options` give the L2 refinement of the mirror test its tolerances and the height prior.
+  CertifiedTrigger(std::shared_ptr<const Solver> solver, const AnchorSolverOptions& solver_options,
+                   const CertificateOptions& options, const HeightCheckOptions& mirror,
+                   CredibleCovarianceSolver::TravelBias travel_bias, SolveCadence cadence);
+  bool Fire(const TriggerInput& in) override;
+  std::optional<SolveStatus> refusal() const override { return refusal_; }
+
+ private:
+  struct Alternative {
+    Eigen::Vector3d p_world_anchor;
+    double bias_m;
+    bool mirror;
+  };
+  enum class Verdict { kRuledOut, kMirror, kOtherMinimum };
+  // Where other minima of the fit may lie: the mirror, and 3 D along the covariance's axes and
+  // towards and away from the tags' centroid (with the bias that fits best there).
+  std::vector<Alternative> Alternatives(std::span<const Eigen::Vector3d> p_world_tag, std::span<const double> range_m,
+                                        const SolveResult& estimate, const Eigen::Matrix3d& axes) const;
+  // Each alternative refined (L2 LM); one that ends farther than D away must fit worse than the
+  // estimate by the evidence threshold, and predict ranges that differ enough to tell.
+  Verdict RuleOutAlternatives(std::span<const Eigen::Vector3d> p_world_tag, std::span<const double> range_m,
+                              const SolveResult& estimate, const Eigen::Matrix3d& axes);
+  // 2. and 3.: the region, and the covariance from the ends of its axes, within D.
+  bool RegionWithinTarget(std::span<const Eigen::Vector3d> p_world_tag, std::span<const double> range_m,
+                          const SolveResult& estimate, const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d>& axes) const;
+  // The largest variance of the covariance seen from `point`; +infinity where it is singular.
+  double LargestVariance(std::span<const Eigen::Vector3d> p_world_tag, const Eigen::Vector3d& point,
+                         double noise_variance) const;
+
+  std::shared_ptr<const Solver> solver_;  // the anchor's, with the credible covariance
+  NlsSolver refine_;                      // L2, for the mirror's basin
+  std::optional<HeightPrior> height_prior_;
+  HeightCheckOptions mirror_;
+  CertificateOptions options_;
+  CovarianceOptions covariance_;
+  CredibleCovarianceSolver::TravelBias travel_bias_;
+  SolveCadence cadence_;
+  double region_chi2_;
+  std::optional<SolveStatus> refusal_;
+  std::optional<Eigen::Vector3d> previous_;  // the last evaluation's estimate
+  int tests_ = 0;                            // of the alternatives, for the threshold's 2 ln(k)
+};
+
+}  // namespace anchorbench::estimator

@@ -1,0 +1,78 @@
+#pragma once
+
+#include <functional>
+#include <memory>
+#include <span>
+#include <string>
+
+#include <Eigen/Core>
+
+#include "anchorbench/estimator/solver.hpp"
+
+namespace anchorbench::estimator {
+
+// What an initialized anchor's covariance includes beyond the solver's noise-only one (ours,
+// docs/method.md#credible-covariances). A navigation filter fuses the anchor with it, so it must
+// cover the errors that do not shrink with more data:
+// - the model error: the direction-dependent range bias of real antennas, which a constant bias
+//   and white noise miss. It is taken as a random smooth function on the sphere of directions from
+//   the anchor, spanned by the real spherical harmonics of degrees 1..model_error_degree with
+//   equal variances, of RMS model_error_m. Degree 1 is a pure shift of the anchor (no geometry
+//   can see it); higher degrees are amplified where the geometry is thin.
+// - the travel bias of the consistency check (Sec. III-B): it truncates the noise of the range
+//   differences on one side, so accepted ranges read short while the tag recedes and long while
+//   it approaches, by beta = g(tau / sigma) sigma (ConsistencyFilter::TravelBias), which moves an
+//   anchor along the direction of travel (12 mm at tau = 2 sigma = 0.2 m on Table I's passes).
+// - correlated noise: the same check also correlates the accepted noise from sample to sample
+//   (lag-1 autocorrelation ~0.2 at tau = 2 sigma), and slowly varying biases do more; the noise-only
+//   covariance, which takes the samples as independent, is scaled by the Bartlett-weighted sum of
+//   the residuals' autocorrelations, f = 1 + 2 sum_{l=1..L} (1 - l/(L+1)) rho_l (L = 10, residuals
+//   clipped at 3 robust sigmas, f in [1, 10]).
+// The first two enter as range errors e = E c with c ~ N(0, I): the estimate moves by
+// A^-1 J^T E c, with A = J^T J and rows j_k = [-u_k^T, 1] at the estimate (u_k the unit direction
+// anchor -> tag), so
+//   P = f P_solver + A^-1 (J^T E)(J^T E)^T A^-1.
+struct CovarianceOptions {
+  double model_error_m = 0.05;  // RMS of the direction-dependent range error; 0: none
+  int model_error_degree = 2;   // 1 to 3
+  bool travel_bias = true;      // the consistency check's travel bias (0 where no check runs)
+  bool correlated_noise = true; // the autocorrelation factor f
+
+  bool IsValid(std::string* why) const;
+};
+
+// The real spherical harmonics of degrees 1..degree (3, 8 or 15 of them) at a unit vector, each
+// of mean square 1 over the sphere; `out` holds (degree + 1)^2 - 1 values.
+void Harmonics(const Eigen::Vector3d& unit, int degree, double* out);
+int HarmonicCount(int degree);
+
+// The added part A^-1 (J^T E)(J^T E)^T A^-1 for an estimate (p_A, gamma), 4x4 over (p_A, gamma);
+// the travel term needs the samples in time order. Zero where A is singular or nothing is added.
+Eigen::Matrix4d ModelErrorCovariance(std::span<const Eigen::Vector3d> p_world_tag, const Eigen::Vector3d& p_world_anchor,
+                                     const CovarianceOptions& options, double travel_bias_m);
+
+// f above, from the range residuals of an estimate in time order.
+double CorrelationFactor(std::span<const Eigen::Vector3d> p_world_tag, std::span<const double> range_m,
+                         const Eigen::Vector3d& p_world_anchor, double bias_m);
+
+// The residual scale the travel bias is judged against: the RMS of the range residuals of an
+// estimate, with its N - 4 degrees of freedom.
+double ResidualScale(std::span<const Eigen::Vector3d> p_world_tag, std::span<const double> range_m,
+                     const Eigen::Vector3d& p_world_anchor, double bias_m);
+
+// A solver whose successful estimates carry the covariance above. `travel_bias` maps the
+// residual scale to the filter's beta (the online filter's ConsistencyFilter::TravelBias; none: 0).
+class CredibleCovarianceSolver : public Solver {
+ public:
+  using TravelBias = std::function<double(double residual_scale_m)>;
+  CredibleCovarianceSolver(std::shared_ptr<const Solver> inner, const CovarianceOptions& options, TravelBias travel_bias)
+      : inner_(std::move(inner)), options_(options), travel_bias_(std::move(travel_bias)) {}
+  SolveResult Solve(std::span<const Eigen::Vector3d> p_world_tag, std::span<const double> range_m) const override;
+
+ private:
+  std::shared_ptr<const Solver> inner_;
+  CovarianceOptions options_;
+  TravelBias travel_bias_;
+};
+
+}  // namespace anchorbench::estimator

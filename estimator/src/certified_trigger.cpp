@@ -1,0 +1,223 @@
+#include "anchorbench/estimator/certified_trigger.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <utility>
+#include <vector>
+
+#include <Eigen/Eigenvalues>
+
+#include "numerics.hpp"
+
+namespace anchorbench::estimator {
+namespace {
+
+constexpr double kInf = std::numeric_limits<double>::infinity();
+constexpr double kMinSeparation = 100.0;  // lambda of an alternative that counts: RuleOutAlternatives
+constexpr double kStartDistance = 3.0;    // the alternatives' starts, in units of D from the estimate
+constexpr int kAlternativeIterations = 20;
+
+// The median of d_k - |p_k - p|: the bias that fits best at p (robust to outliers).
+double MedianResidual(std::span<const Eigen::Vector3d> p_world_tag, std::span<const double> range_m,
+                      const Eigen::Vector3d& p_world_anchor) {
+  std::vector<double> r(range_m.size());
+  for (std::size_t k = 0; k < range_m.size(); ++k) r[k] = range_m[k] - (p_world_tag[k] - p_world_anchor).norm();
+  std::nth_element(r.begin(), r.begin() + static_cast<std::ptrdiff_t>(r.size() / 2), r.end());
+  return r.empty() ? 0.0 : r[r.size() / 2];
+}
+
+// lambda = sum over samples of the squared difference of the ranges two fits predict, in units of
+// the first fit's residual variance (RMS with N - 4 degrees of freedom, floored at 1 mm).
+double Separation(std::span<const Eigen::Vector3d> p_world_tag, const SolveResult& estimate,
+                  const Eigen::Vector3d& p_alternative, double bias_alternative_m, double residual_scale_m) {
+  double sum = 0.0;
+  for (const Eigen::Vector3d& p : p_world_tag) {
+    const double difference = (p - estimate.p_world_anchor).norm() + estimate.bias_m - (p - p_alternative).norm() -
+                              bias_alternative_m;
+    sum += difference * difference;
+  }
+  const double scale_m = std::max(residual_scale_m, 1e-3);
+  return sum / (scale_m * scale_m);
+}
+
+// The standard normal quantile (Acklam's rational approximation, |error| < 1.2e-9).
+double NormalQuantile(double p) {
+  constexpr double a[] = {-3.969683028665376e+01, 2.209460984245205e+02, -2.759285104469687e+02,
+                          1.383577518672690e+02, -3.066479806614716e+01, 2.506628277459239e+00};
+  constexpr double b[] = {-5.447609879822406e+01, 1.615858368580409e+02, -1.556989798598866e+02,
+                          6.680131188771972e+01, -1.328068155288572e+01};
+  constexpr double c[] = {-7.784894002430293e-03, -3.223964580411365e-01, -2.400758277161838e+00,
+                          -2.549732539343734e+00, 4.374664141464968e+00, 2.938163982698783e+00};
+  constexpr double d[] = {7.784695709041462e-03, 3.224671290700398e-01, 2.445134137142996e+00, 3.754408661907416e+00};
+  constexpr double kLow = 0.02425;
+  if (p < kLow) {
+    const double q = std::sqrt(-2.0 * std::log(p));
+    return (((((c[0] * q + c[1]) * q + c[2]) * q + c[3]) * q + c[4]) * q + c[5]) /
+           ((((d[0] * q + d[1]) * q + d[2]) * q + d[3]) * q + 1.0);
+  }
+  if (p > 1.0 - kLow) return -NormalQuantile(1.0 - p);
+  const double q = p - 0.5, r = q * q;
+  return (((((a[0] * r + a[1]) * r + a[2]) * r + a[3]) * r + a[4]) * r + a[5]) * q /
+         (((((b[0] * r + b[1]) * r + b[2]) * r + b[3]) * r + b[4]) * r + 1.0);
+}
+
+}  // namespace
+
+bool CertificateOptions::IsValid(std::string* why) const {
+  if (!(accuracy_m > 0.0 && accuracy_m <= 1000.0)) {
+    if (why) *why = "accuracy_m must be in (0, 1000]";
+    return false;
+  }
+  if (!(confidence >= 0.5 && confidence <= 0.9999)) {
+    if (why) *why = "confidence must be in [0.5, 0.9999]";
+    return false;
+  }
+  return covariance.IsValid(why);
+}
+
+double ChiSquare3Quantile(double confidence) {
+  constexpr double k = 3.0;
+  const double z = NormalQuantile(confidence);
+  const double t = 1.0 - 2.0 / (9.0 * k) + z * std::sqrt(2.0 / (9.0 * k));
+  return k * t * t * t;
+}
+
+namespace {
+
+NlsOptions L2(NlsOptions nls) {
+  nls.kernel = KernelMode::kL2;
+  nls.max_iterations = std::min(nls.max_iterations, kAlternativeIterations);
+  return nls;
+}
+
+}  // namespace
+
+CertifiedTrigger::CertifiedTrigger(std::shared_ptr<const Solver> solver, const AnchorSolverOptions& solver_options,
+                                   const CertificateOptions& options, const HeightCheckOptions& mirror,
+                                   CredibleCovarianceSolver::TravelBias travel_bias, SolveCadence cadence)
+    : solver_(std::make_shared<CredibleCovarianceSolver>(std::move(solver), options.covariance, travel_bias)),
+      refine_(L2(solver_options.nls)),
+      height_prior_(solver_options.height_prior),
+      mirror_(mirror),
+      options_(options),
+      covariance_(options.covariance),
+      travel_bias_(std::move(travel_bias)),
+      cadence_(cadence),
+      region_chi2_(ChiSquare3Quantile(options.confidence)) {}
+
+std::vector<CertifiedTrigger::Alternative> CertifiedTrigger::Alternatives(std::span<const Eigen::Vector3d> p_world_tag,
+                                                                         std::span<const double> range_m,
+                                                                         const SolveResult& estimate,
+                                                                         const Eigen::Matrix3d& axes) const {
+  std::vector<Alternative> starts;
+  const Mirror mirror = MirrorOf(p_world_tag, range_m, estimate, mirror_.trim_fraction);
+  if (mirror.exists) starts.push_back({mirror.p_world_mirror, mirror.bias_mirror_m, true});
+  // Along each principal axis of the covariance, and towards and away from the tags: where range
+  // and bias trade off (one side of an anchor seen), the other minima of the fit lie that way.
+  Eigen::Vector3d centroid = Eigen::Vector3d::Zero();
+  for (const Eigen::Vector3d& p : p_world_tag) centroid += p / static_cast<double>(p_world_tag.size());
+  Eigen::Vector3d towards_tags = centroid - estimate.p_world_anchor;
+  const double step_m = kStartDistance * options_.accuracy_m;
+  std::vector<Eigen::Vector3d> directions = {axes.col(0), axes.col(1), axes.col(2)};
+  if (towards_tags.norm() > 1e-9) directions.push_back(towards_tags.normalized());
+  for (const Eigen::Vector3d& direction : directions) {
+    for (const double side : {-1.0, 1.0}) starts.push_back({estimate.p_world_anchor + side * step_m * direction, 0.0, false});
+  }
+  for (Alternative& start : starts) {
+    if (!start.mirror) start.bias_m = MedianResidual(p_world_tag, range_m, start.p_world_anchor);
+  }
+  return starts;
+}
+
+CertifiedTrigger::Verdict CertifiedTrigger::RuleOutAlternatives(std::span<const Eigen::Vector3d> p_world_tag,
+                                                                std::span<const double> range_m,
+                                                                const SolveResult& estimate,
+                                                                const Eigen::Matrix3d& axes) {
+  const double scale_m = ResidualScale(p_world_tag, range_m, estimate.p_world_anchor, estimate.bias_m);
+  ++tests_;
+  const double threshold = mirror_.min_evidence + 2.0 * std::log(static_cast<double>(tests_));
+  for (const Alternative& start : Alternatives(p_world_tag, range_m, estimate, axes)) {
+    Alternative fit = start;
+    const SolveResult refined = refine_.Solve(p_world_tag, range_m, start.p_world_anchor, start.bias_m, height_prior_);
+    if (Succeeded(refined.status)) {
+      fit.p_world_anchor = refined.p_world_anchor;
+      fit.bias_m = refined.bias_m;
+    }
+    // The estimate's own basin (the mirror: also its plain reflection, HeightCheckedSolver's test).
+    if ((fit.p_world_anchor - estimate.p_world_anchor).norm() <= options_.accuracy_m) {
+      if (!start.mirror) continue;
+      fit = start;
+    }
+    double evidence = FitEvidence(p_world_tag, range_m, estimate.p_world_anchor, estimate.bias_m, fit.p_world_anchor,
+                                  fit.bias_m, mirror_.trim_fraction);
+    if (height_prior_) evidence += height_prior_->Chi2(fit.p_world_anchor.z()) - height_prior_->Chi2(estimate.p_world_anchor.z());
+    // A likelihood ratio's own spread grows with the separation it measures (about 2 sqrt(lambda),
+    // more with noise in the tag positions: on the flat floor, 1 cm of it swung a lambda ~10 fit
+    // from -15 to +28): only a separation no swing crosses counts as evidence.
+    const bool separated = height_prior_ || Separation(p_world_tag, estimate, fit.p_world_anchor, fit.bias_m, scale_m) >=
+                                                kMinSeparation;
+    if (!separated || !(evidence >= threshold)) return start.mirror ? Verdict::kMirror : Verdict::kOtherMinimum;
+  }
+  return Verdict::kRuledOut;
+}
+
+double CertifiedTrigger::LargestVariance(std::span<const Eigen::Vector3d> p_world_tag, const Eigen::Vector3d& point,
+                                         double noise_variance) const {
+  Eigen::Matrix4d a = Eigen::Matrix4d::Zero();
+  for (const Eigen::Vector3d& p : p_world_tag) {
+    const Eigen::Vector3d diff = p - point;
+    const double distance_m = diff.norm();
+    if (!(distance_m > 0.0)) continue;
+    Eigen::Vector4d j;
+    j << -diff / distance_m, 1.0;
+    a.noalias() += j * j.transpose();
+  }
+  Eigen::Matrix4d a_inverse;
+  if (!internal::InvertNormalMatrix(a, &a_inverse)) return kInf;
+  const double travel_bias_m = travel_bias_ ? travel_bias_(std::sqrt(noise_variance)) : 0.0;
+  const Eigen::Matrix4d p = noise_variance * a_inverse + ModelErrorCovariance(p_world_tag, point, covariance_, travel_bias_m);
+  const Eigen::Matrix3d position = p.topLeftCorner<3, 3>();
+  if (!position.allFinite()) return kInf;
+  return Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d>(position, Eigen::EigenvaluesOnly).eigenvalues().maxCoeff();
+}
+
+bool CertifiedTrigger::RegionWithinTarget(std::span<const Eigen::Vector3d> p_world_tag, std::span<const double> range_m,
+                                          const SolveResult& estimate,
+                                          const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d>& axes) const {
+  const double limit = options_.accuracy_m * options_.accuracy_m / region_chi2_;  // of the largest variance
+  if (!(axes.eigenvalues().maxCoeff() <= limit)) return false;
+  // From the ends of the region's axes, with the estimate's noise (floored at the model error)
+  // scaled for its correlation.
+  const double scale_m = std::max(ResidualScale(p_world_tag, range_m, estimate.p_world_anchor, estimate.bias_m),
+                                  covariance_.model_error_m);
+  const double factor =
+      covariance_.correlated_noise ? CorrelationFactor(p_world_tag, range_m, estimate.p_world_anchor, estimate.bias_m) : 1.0;
+  for (int i = 0; i < 3; ++i) {
+    const Eigen::Vector3d half_axis =
+        std::sqrt(region_chi2_ * std::max(axes.eigenvalues()(i), 0.0)) * axes.eigenvectors().col(i);
+    for (const double side : {-1.0, 1.0}) {
+      const Eigen::Vector3d end = estimate.p_world_anchor + side * half_axis;
+      if (!(LargestVariance(p_world_tag, end, factor * scale_m * scale_m) <= limit)) return false;
+    }
+  }
+  return true;
+}
+
+bool CertifiedTrigger::Fire(const TriggerInput& in) {
+  if (!cadence_.Due(in)) return false;
+  const SolveResult estimate = solver_->Solve(in.p_world_tag, in.range_m);
+  if (!Succeeded(estimate.status)) return false;
+  const std::optional<Eigen::Vector3d> previous = std::exchange(previous_, estimate.p_world_anchor);
+  // The cheap tests first: the region, then the stability; the alternatives' fits last.
+  const Eigen::Matrix3d covariance = estimate.covariance.topLeftCorner<3, 3>();
+  if (!covariance.allFinite()) return false;
+  const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> axes(covariance);
+  if (!RegionWithinTarget(in.p_world_tag, in.range_m, estimate, axes)) return false;
+  if (!previous || (estimate.p_world_anchor - *previous).norm() > options_.accuracy_m) return false;
+  const Verdict verdict = RuleOutAlternatives(in.p_world_tag, in.range_m, estimate, axes.eigenvectors());
+  refusal_ = verdict == Verdict::kMirror ? std::optional(SolveStatus::kHeightUnobservable) : std::nullopt;
+  return verdict == Verdict::kRuledOut;
+}
+
+}  // namespace anchorbench::estimator

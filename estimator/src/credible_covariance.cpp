@@ -1,0 +1,166 @@
+#include "anchorbench/estimator/credible_covariance.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <vector>
+
+#include "numerics.hpp"
+
+namespace anchorbench::estimator {
+namespace {
+
+constexpr int kMaxDegree = 3;
+constexpr int kMaxHarmonics = 15;
+
+// The unit direction anchor -> tag and its row j = [-u^T, 1] of the range Jacobian.
+struct Row {
+  Eigen::Vector3d unit;
+  Eigen::Vector4d j;
+};
+bool RowAt(const Eigen::Vector3d& p_world_tag, const Eigen::Vector3d& p_world_anchor, Row* row) {
+  const Eigen::Vector3d diff = p_world_tag - p_world_anchor;
+  const double distance_m = diff.norm();
+  if (!(distance_m > 0.0)) return false;
+  row->unit = diff / distance_m;
+  row->j << -row->unit, 1.0;
+  return true;
+}
+
+// Whether the range to the anchor grows from the sample before to the sample after k (+1, -1; 0
+// at the ends and where it is still): the sign the consistency check's travel bias takes.
+double RangeRateSign(std::span<const Eigen::Vector3d> p_world_tag, const Eigen::Vector3d& p_world_anchor, std::size_t k) {
+  if (k == 0 || k + 1 >= p_world_tag.size()) return 0.0;
+  const double change = (p_world_tag[k + 1] - p_world_anchor).norm() - (p_world_tag[k - 1] - p_world_anchor).norm();
+  return change > 0.0 ? 1.0 : change < 0.0 ? -1.0 : 0.0;
+}
+
+}  // namespace
+
+bool CovarianceOptions::IsValid(std::string* why) const {
+  if (!(model_error_m >= 0.0 && model_error_m <= 10.0)) {
+    if (why) *why = "model_error_m must be in [0, 10]";
+    return false;
+  }
+  if (model_error_degree < 1 || model_error_degree > kMaxDegree) {
+    if (why) *why = "model_error_degree must be 1, 2 or 3";
+    return false;
+  }
+  return true;
+}
+
+int HarmonicCount(int degree) { return (degree + 1) * (degree + 1) - 1; }
+
+void Harmonics(const Eigen::Vector3d& u, int degree, double* out) {
+  // Real orthonormal harmonics times sqrt(4 pi): mean square 1 over the sphere.
+  const double x = u.x(), y = u.y(), z = u.z();
+  const double s3 = std::sqrt(3.0), s15 = std::sqrt(15.0);
+  out[0] = s3 * x;
+  out[1] = s3 * y;
+  out[2] = s3 * z;
+  if (degree < 2) return;
+  out[3] = s15 * x * y;
+  out[4] = s15 * y * z;
+  out[5] = s15 * x * z;
+  out[6] = 0.5 * std::sqrt(5.0) * (3.0 * z * z - 1.0);
+  out[7] = 0.5 * s15 * (x * x - y * y);
+  if (degree < 3) return;
+  const double a = std::sqrt(35.0 / 8.0), b = std::sqrt(105.0), c = std::sqrt(21.0 / 8.0), d = std::sqrt(7.0);
+  out[8] = a * y * (3.0 * x * x - y * y);
+  out[9] = b * x * y * z;
+  out[10] = c * y * (5.0 * z * z - 1.0);
+  out[11] = 0.5 * d * z * (5.0 * z * z - 3.0);
+  out[12] = c * x * (5.0 * z * z - 1.0);
+  out[13] = 0.5 * b * z * (x * x - y * y);
+  out[14] = a * x * (x * x - 3.0 * y * y);
+}
+
+Eigen::Matrix4d ModelErrorCovariance(std::span<const Eigen::Vector3d> p_world_tag, const Eigen::Vector3d& p_world_anchor,
+                                     const CovarianceOptions& options, double travel_bias_m) {
+  const int harmonics = options.model_error_m > 0.0 ? HarmonicCount(options.model_error_degree) : 0;
+  const bool travel = options.travel_bias && travel_bias_m != 0.0;
+  if (harmonics == 0 && !travel) return Eigen::Matrix4d::Zero();
+  Eigen::Matrix4d a = Eigen::Matrix4d::Zero();
+  Eigen::Matrix<double, 4, kMaxHarmonics> jt_harmonics = Eigen::Matrix<double, 4, kMaxHarmonics>::Zero();
+  Eigen::Vector4d jt_travel = Eigen::Vector4d::Zero();
+  double y[kMaxHarmonics];
+  for (std::size_t k = 0; k < p_world_tag.size(); ++k) {
+    Row row;
+    if (!RowAt(p_world_tag[k], p_world_anchor, &row)) continue;
+    a.noalias() += row.j * row.j.transpose();
+    if (harmonics > 0) {
+      Harmonics(row.unit, options.model_error_degree, y);
+      for (int h = 0; h < harmonics; ++h) jt_harmonics.col(h) += row.j * y[h];
+    }
+    if (travel) jt_travel += row.j * RangeRateSign(p_world_tag, p_world_anchor, k);
+  }
+  Eigen::Matrix4d a_inverse;
+  if (!internal::InvertNormalMatrix(a, &a_inverse)) return Eigen::Matrix4d::Zero();
+  Eigen::Matrix4d sum = Eigen::Matrix4d::Zero();
+  if (harmonics > 0) {  // equal variances: the RMS over the sphere is model_error_m
+    const double variance = options.model_error_m * options.model_error_m / harmonics;
+    sum.noalias() += variance * jt_harmonics.leftCols(harmonics) * jt_harmonics.leftCols(harmonics).transpose();
+  }
+  if (travel) sum.noalias() += travel_bias_m * travel_bias_m * jt_travel * jt_travel.transpose();
+  return a_inverse * sum * a_inverse;
+}
+
+double CorrelationFactor(std::span<const Eigen::Vector3d> p_world_tag, std::span<const double> range_m,
+                         const Eigen::Vector3d& p_world_anchor, double bias_m) {
+  constexpr std::size_t kMaxLag = 10;
+  constexpr double kClip = 3.0, kMaxFactor = 10.0;
+  const std::size_t n = range_m.size();
+  if (n < 4 * kMaxLag) return 1.0;  // too few residuals for their autocorrelations
+  std::vector<double> r(n);
+  for (std::size_t k = 0; k < n; ++k) r[k] = (p_world_tag[k] - p_world_anchor).norm() + bias_m - range_m[k];
+  std::vector<double> magnitude(n);
+  for (std::size_t k = 0; k < n; ++k) magnitude[k] = std::abs(r[k]);
+  std::nth_element(magnitude.begin(), magnitude.begin() + static_cast<std::ptrdiff_t>(n / 2), magnitude.end());
+  const double clip = kClip * 1.4826 * magnitude[n / 2];  // outliers would decide the correlations
+  double mean = 0.0;
+  for (double& v : r) {
+    v = std::clamp(v, -clip, clip);
+    mean += v;
+  }
+  mean /= static_cast<double>(n);
+  double variance = 0.0;
+  for (double& v : r) {
+    v -= mean;
+    variance += v * v;
+  }
+  if (!(variance > 0.0)) return 1.0;
+  double factor = 1.0;
+  for (std::size_t lag = 1; lag <= kMaxLag; ++lag) {
+    double covariance = 0.0;
+    for (std::size_t k = lag; k < n; ++k) covariance += r[k] * r[k - lag];
+    factor += 2.0 * (1.0 - static_cast<double>(lag) / (kMaxLag + 1)) * covariance / variance;
+  }
+  return std::clamp(factor, 1.0, kMaxFactor);
+}
+
+double ResidualScale(std::span<const Eigen::Vector3d> p_world_tag, std::span<const double> range_m,
+                     const Eigen::Vector3d& p_world_anchor, double bias_m) {
+  if (range_m.size() <= 4) return 0.0;
+  double squares = 0.0;
+  for (std::size_t k = 0; k < range_m.size(); ++k) {
+    const double r = (p_world_tag[k] - p_world_anchor).norm() + bias_m - range_m[k];
+    squares += r * r;
+  }
+  return std::sqrt(squares / static_cast<double>(range_m.size() - 4));
+}
+
+SolveResult CredibleCovarianceSolver::Solve(std::span<const Eigen::Vector3d> p_world_tag,
+                                            std::span<const double> range_m) const {
+  SolveResult result = inner_->Solve(p_world_tag, range_m);
+  if (!Succeeded(result.status) || !result.covariance.allFinite()) return result;
+  if (options_.correlated_noise) {
+    result.covariance *= CorrelationFactor(p_world_tag, range_m, result.p_world_anchor, result.bias_m);
+  }
+  const double travel_bias_m =
+      options_.travel_bias && travel_bias_
+          ? travel_bias_(ResidualScale(p_world_tag, range_m, result.p_world_anchor, result.bias_m))
+          : 0.0;
+  result.covariance += ModelErrorCovariance(p_world_tag, result.p_world_anchor, options_, travel_bias_m);
+  return result;
+}
+
+}  // namespace anchorbench::estimator

@@ -1,0 +1,21 @@
+#pragma once
+
+#include "anchorbench/registry/estimator_config.hpp"
+
+namespace anchorbench::testing {
+
+// The paper's estimator where the defaults are ours (configs/paper.yaml): its two triggers, no
+// mirror check, the fixed cadence alone, the solvers' own covariances. Tests of the paper's
+// behaviour start from it, so they do not move with the defaults for real logs.
+inline registry::EstimatorConfig PaperEstimator() {
+  registry::EstimatorConfig config;
+  config.triggers = {"fixed_window", "pdop_closest_point"};
+  config.initializer.height_check.enabled = false;
+  config.trigger.evaluate_growth = 1.0;
+  config.initializer.covariance.model_error_m = 0.0;
+  config.initializer.covariance.travel_bias = false;
+  config.initializer.covariance.correlated_noise = false;
+  return config;
+}
+
+}  // namespace anchorbench::testing
