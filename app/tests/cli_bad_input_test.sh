@@ -60,7 +60,7 @@ expect_error "unknown trigger" "key 'estimator.triggers': unknown trigger 'pdop_
   --trace "$dir/trace.csv" --out "$dir/out" >/dev/null || { echo "FAIL: replay"; failures=$((failures + 1)); }
 [ "$(head -1 "$dir/trace.csv")" = "t,tag_id,anchor_id,range,accepted,n_accepted,pdop" ] || { echo "FAIL: trace header"; failures=$((failures + 1)); }
 [ "$(($(wc -l <"$dir/trace.csv")))" -eq "$(($(wc -l <"$dir/sim/ranges.csv")))" ] || { echo "FAIL: one trace row per range"; failures=$((failures + 1)); }
-[ "$(head -1 "$dir/out/estimates.csv")" = "anchor_id,method,initialized,t_init,n_used,pdop_est,pdop_true,x,y,z,bias,err_m,status,err_xy,err_z,bias_aware_hdop,bias_aware_vdop" ] || { echo "FAIL: estimates header"; failures=$((failures + 1)); }
+[ "$(head -1 "$dir/out/estimates.csv")" = "anchor_id,method,initialized,t_init,n_used,pdop_est,pdop_true,x,y,z,bias,err_m,status,err_xy,err_z,bias_aware_hdop,bias_aware_vdop,scale" ] || { echo "FAIL: estimates header"; failures=$((failures + 1)); }
 grep -qi nan "$dir/out/estimates.csv" && { echo "FAIL: NaN in estimates"; failures=$((failures + 1)); }
 ls "$dir"/*.tmp.* "$dir"/out/*.tmp.* >/dev/null 2>&1 && { echo "FAIL: temporary files left"; failures=$((failures + 1)); }
 "$bin" replay --help >/dev/null || { echo "FAIL: replay --help"; failures=$((failures + 1)); }

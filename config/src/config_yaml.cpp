@@ -1,5 +1,6 @@
 #include "anchorbench/config/config_yaml.hpp"
 
+#include <algorithm>
 #include <charconv>
 #include <filesystem>
 #include <fstream>
@@ -67,6 +68,11 @@ void CountNodes(const YAML::Node& node, long& budget, const std::string& source)
 
 // The only document of a text; a second one (after '---') would be silently ignored, so it is an error.
 YAML::Node OnlyDocument(const std::string& text, const std::string& source) {
+  // yaml-cpp's LoadAll runs without end on a NUL byte (found by fuzz_config); a config is text.
+  if (const std::size_t nul = text.find('\0'); nul != std::string::npos) {
+    throw InputError(source + ":" + std::to_string(1 + std::count(text.begin(), text.begin() + static_cast<std::ptrdiff_t>(nul), '\n')) +
+                     ": a NUL byte: not a text file");
+  }
   std::vector<YAML::Node> documents = YAML::LoadAll(text);
   if (documents.size() > 1) {
     throw InputError(source + ":" + Line(documents[1].Mark()) +

@@ -165,6 +165,7 @@ void Covariance(V& v, estimator::CovarianceOptions& o) {
   v.Number("model_error_m", o.model_error_m);
   v.Integer("model_error_degree", o.model_error_degree);
   v.Flag("travel_bias", o.travel_bias);
+  v.Number("link_offset_m", o.link_offset_m);
   v.Flag("correlated_noise", o.correlated_noise);
   v.Check(o);
 }
@@ -181,6 +182,7 @@ void Estimator(V& v, registry::EstimatorConfig& o, const registry::Components& p
   v.Section("height_check", [&](auto& s) {
     s.Flag("enabled", o.initializer.height_check.enabled);
     s.Number("min_evidence", o.initializer.height_check.min_evidence);
+    s.Number("min_separation", o.initializer.height_check.min_separation);
     s.Number("trim_fraction", o.initializer.height_check.trim_fraction);
     s.Choice("side", o.initializer.height_check.side, estimator::ParseSide,
              [](auto side) { return estimator::ToString(side); }, "any, above, below");
@@ -193,6 +195,17 @@ void Estimator(V& v, registry::EstimatorConfig& o, const registry::Components& p
     s.Check(o.certificate);
   });
   v.Section("covariance", [&](auto& s) { Covariance(s, o.initializer.covariance); });
+  v.Section("tag_biases", [&](auto& s) {
+    s.Flag("estimate", o.initializer.tag_biases.estimate);
+    s.Integer("iterations", o.initializer.tag_biases.iterations);
+    s.Check(o.initializer.tag_biases);
+  });
+  v.Section("scale", [&](auto& s) {
+    s.Flag("estimate", o.solver_options.scale.estimate);
+    s.Number("max_sigma", o.solver_options.scale.max_sigma);
+    s.Number("max_scale", o.solver_options.scale.max_scale);
+    s.Check(o.solver_options.scale);
+  });
   v.Section("height_prior", [&](auto& s) {
     s.Flag("enabled", o.height_prior.enabled);
     s.Number("sigma_m", o.height_prior.sigma_m);

@@ -324,8 +324,9 @@ TEST(Config, RefusesWhatWouldBeIgnoredOrMisread) {
             std::string::npos);
   std::string bomb = "a0: &a0 [x, x, x, x, x, x, x, x, x]\n";
   for (int i = 1; i <= 10; ++i) {
-    bomb += "a" + std::to_string(i) + ": &a" + std::to_string(i) + " [";
-    for (int k = 0; k < 9; ++k) bomb += std::string(k ? ", " : "") + "*a" + std::to_string(i - 1);
+    // Appended piece by piece: GCC 12 warns falsely (-Wrestrict) on "literal" + std::string.
+    bomb.append("a").append(std::to_string(i)).append(": &a").append(std::to_string(i)).append(" [");
+    for (int k = 0; k < 9; ++k) bomb.append(k ? ", " : "").append("*a").append(std::to_string(i - 1));
     bomb += "]\n";
   }
   EXPECT_NE(Refusal(bomb).find("expands to more than 200000 values"), std::string::npos);

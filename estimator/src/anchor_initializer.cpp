@@ -29,7 +29,7 @@ bool InitializerOptions::IsValid(std::string* why) const {
   if (max_buffered_samples / 2 < min_samples) {
     return fail("max_buffered_samples must be >= 2 min_samples (a thinned buffer keeps half)");
   }
-  return height_check.IsValid(why) && covariance.IsValid(why);
+  return height_check.IsValid(why) && covariance.IsValid(why) && tag_biases.IsValid(why);
 }
 
 AnchorInitializer::AnchorInitializer(int anchor_id, const InitializerOptions& options,
@@ -41,9 +41,6 @@ AnchorInitializer::AnchorInitializer(int anchor_id, const InitializerOptions& op
       trigger_(std::move(trigger)),
       solver_(filter_->AtSolve(std::move(solver))) {
   if (options_.height_check.enabled) solver_ = std::make_shared<HeightCheckedSolver>(solver_, options_.height_check);
-  const OutlierFilter* online_filter = filter_.get();  // owned here: it lives as long as the solver
-  solver_ = std::make_shared<CredibleCovarianceSolver>(
-      solver_, options_.covariance, [online_filter](double scale_m) { return online_filter->TravelBias(scale_m); });
 }
 
 InitEvent AnchorInitializer::SolveNow(double t_s, double pdop) {
@@ -52,11 +49,16 @@ InitEvent AnchorInitializer::SolveNow(double t_s, double pdop) {
   event.t_s = t_s;
   event.n_used = static_cast<int>(range_m_.size());
   event.pdop_estimate = pdop;
-  event.solve = solver_->Solve(p_world_tag_, range_m_);
+  event.solve = SolveWithTagBiases(*solver_, p_world_tag_, range_m_, tag_id_, options_.tag_biases);
+  const OutlierFilter& filter = *filter_;
+  CovarianceOptions covariance = options_.covariance;
+  if (options_.tag_biases.estimate) covariance.link_offset_m = 0.0;  // estimated: their own term
+  MakeCredible(p_world_tag_, range_m_, tag_id_, covariance,
+               [&filter](double scale_m) { return filter.TravelBias(scale_m); }, &event.solve);
   return event;
 }
 
-void AnchorInitializer::Buffer(const Eigen::Vector3d& p_world_tag, double range_m) {
+void AnchorInitializer::Buffer(int tag_id, const Eigen::Vector3d& p_world_tag, double range_m) {
   const std::size_t cap = static_cast<std::size_t>(options_.max_buffered_samples);
   const std::size_t index = n_admitted_ - 1;  // of this sample among the admitted ones
   if (options_.at_cap == BufferPolicy::kThin) {
@@ -68,10 +70,12 @@ void AnchorInitializer::Buffer(const Eigen::Vector3d& p_world_tag, double range_
       for (std::size_t i = 0; 2 * i < range_m_.size(); ++i) {
         p_world_tag_[i] = p_world_tag_[2 * i];
         range_m_[i] = range_m_[2 * i];
+        tag_id_[i] = tag_id_[2 * i];
       }
       samples_not_buffered_ += static_cast<long>(range_m_.size() / 2);
       p_world_tag_.resize((range_m_.size() + 1) / 2);
       range_m_.resize((range_m_.size() + 1) / 2);
+      tag_id_.resize(range_m_.size());
       keep_every_ *= 2;
       if (index % keep_every_ != 0) {
         ++samples_not_buffered_;
@@ -84,12 +88,13 @@ void AnchorInitializer::Buffer(const Eigen::Vector3d& p_world_tag, double range_
   }
   p_world_tag_.push_back(p_world_tag);
   range_m_.push_back(range_m);
+  tag_id_.push_back(tag_id);
 }
 
 void AnchorInitializer::Admit(const Accepted& sample) {
   if (n_admitted_ == 0) t_first_s_ = sample.t_s;
   ++n_admitted_;
-  Buffer(sample.p_world_tag, sample.range_m);
+  Buffer(sample.tag_id, sample.p_world_tag, sample.range_m);
   TriggerInput input;
   input.t_s = sample.t_s;
   input.t_first_s = t_first_s_;
@@ -98,6 +103,7 @@ void AnchorInitializer::Admit(const Accepted& sample) {
   input.sample_range_m = sample.range_m;
   input.p_world_tag = p_world_tag_;
   input.range_m = range_m_;
+  input.tag_id = tag_id_;
   input.pdop = sample.pdop;
   input.eligible = n_admitted_ >= static_cast<std::size_t>(options_.min_samples) && n_admitted_ >= next_attempt_size_;
   if (trigger_->Fire(input) && input.eligible) pending_ = Pending{sample.t_s, sample.pdop};
@@ -112,7 +118,7 @@ FeedResult AnchorInitializer::Feed(const RangeSample& sample) {
   out.pdop = pdop_.Value();
   if (!out.accepted || initialized_) return out;
 
-  const Accepted accepted{sample.t_s, sample.p_world_tag, sample.range_m, out.pdop};
+  const Accepted accepted{sample.t_s, sample.tag_id, sample.p_world_tag, sample.range_m, out.pdop};
   if (pending_) {  // a deferred solve decides whether this sample is still needed
     if (queued_.size() < static_cast<std::size_t>(options_.max_buffered_samples)) {
       queued_.push_back(accepted);

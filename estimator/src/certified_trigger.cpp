@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <numbers>
 #include <utility>
 #include <vector>
 
@@ -14,7 +15,6 @@ namespace anchorbench::estimator {
 namespace {
 
 constexpr double kInf = std::numeric_limits<double>::infinity();
-constexpr double kMinSeparation = 100.0;  // lambda of an alternative that counts: RuleOutAlternatives
 constexpr double kStartDistance = 3.0;    // the alternatives' starts, in units of D from the estimate
 constexpr int kAlternativeIterations = 20;
 
@@ -25,20 +25,6 @@ double MedianResidual(std::span<const Eigen::Vector3d> p_world_tag, std::span<co
   for (std::size_t k = 0; k < range_m.size(); ++k) r[k] = range_m[k] - (p_world_tag[k] - p_world_anchor).norm();
   std::nth_element(r.begin(), r.begin() + static_cast<std::ptrdiff_t>(r.size() / 2), r.end());
   return r.empty() ? 0.0 : r[r.size() / 2];
-}
-
-// lambda = sum over samples of the squared difference of the ranges two fits predict, in units of
-// the first fit's residual variance (RMS with N - 4 degrees of freedom, floored at 1 mm).
-double Separation(std::span<const Eigen::Vector3d> p_world_tag, const SolveResult& estimate,
-                  const Eigen::Vector3d& p_alternative, double bias_alternative_m, double residual_scale_m) {
-  double sum = 0.0;
-  for (const Eigen::Vector3d& p : p_world_tag) {
-    const double difference = (p - estimate.p_world_anchor).norm() + estimate.bias_m - (p - p_alternative).norm() -
-                              bias_alternative_m;
-    sum += difference * difference;
-  }
-  const double scale_m = std::max(residual_scale_m, 1e-3);
-  return sum / (scale_m * scale_m);
 }
 
 // The standard normal quantile (Acklam's rational approximation, |error| < 1.2e-9).
@@ -77,10 +63,18 @@ bool CertificateOptions::IsValid(std::string* why) const {
 }
 
 double ChiSquare3Quantile(double confidence) {
+  // Wilson-Hilferty's start, then Newton on the exact CDF with 3 degrees of freedom:
+  // F(x) = erf(sqrt(x/2)) - sqrt(2x/pi) exp(-x/2), F'(x) = sqrt(x/(2 pi)) exp(-x/2).
   constexpr double k = 3.0;
   const double z = NormalQuantile(confidence);
   const double t = 1.0 - 2.0 / (9.0 * k) + z * std::sqrt(2.0 / (9.0 * k));
-  return k * t * t * t;
+  double x = std::max(k * t * t * t, 1e-6);
+  for (int i = 0; i < 8; ++i) {
+    const double cdf = std::erf(std::sqrt(x / 2.0)) - std::sqrt(2.0 * x / std::numbers::pi) * std::exp(-x / 2.0);
+    const double pdf = std::sqrt(x / (2.0 * std::numbers::pi)) * std::exp(-x / 2.0);
+    x = std::max(x - (cdf - confidence) / pdf, 1e-6);
+  }
+  return x;
 }
 
 namespace {
@@ -95,16 +89,19 @@ NlsOptions L2(NlsOptions nls) {
 
 CertifiedTrigger::CertifiedTrigger(std::shared_ptr<const Solver> solver, const AnchorSolverOptions& solver_options,
                                    const CertificateOptions& options, const HeightCheckOptions& mirror,
-                                   CredibleCovarianceSolver::TravelBias travel_bias, SolveCadence cadence)
-    : solver_(std::make_shared<CredibleCovarianceSolver>(std::move(solver), options.covariance, travel_bias)),
+                                   const TagBiasOptions& tag_biases, TravelBias travel_bias, SolveCadence cadence)
+    : solver_(std::move(solver)),
       refine_(L2(solver_options.nls)),
       height_prior_(solver_options.height_prior),
       mirror_(mirror),
+      tag_biases_(tag_biases),
       options_(options),
       covariance_(options.covariance),
       travel_bias_(std::move(travel_bias)),
       cadence_(cadence),
-      region_chi2_(ChiSquare3Quantile(options.confidence)) {}
+      region_chi2_(ChiSquare3Quantile(options.confidence)) {
+  if (tag_biases_.estimate) covariance_.link_offset_m = 0.0;  // estimated: SolveWithTagBiases' own term
+}
 
 std::vector<CertifiedTrigger::Alternative> CertifiedTrigger::Alternatives(std::span<const Eigen::Vector3d> p_world_tag,
                                                                          std::span<const double> range_m,
@@ -155,15 +152,16 @@ CertifiedTrigger::Verdict CertifiedTrigger::RuleOutAlternatives(std::span<const 
     // A likelihood ratio's own spread grows with the separation it measures (about 2 sqrt(lambda),
     // more with noise in the tag positions: on the flat floor, 1 cm of it swung a lambda ~10 fit
     // from -15 to +28): only a separation no swing crosses counts as evidence.
-    const bool separated = height_prior_ || Separation(p_world_tag, estimate, fit.p_world_anchor, fit.bias_m, scale_m) >=
-                                                kMinSeparation;
+    const bool separated =
+        height_prior_ || Separation(p_world_tag, estimate.p_world_anchor, estimate.bias_m, fit.p_world_anchor,
+                                    fit.bias_m, scale_m) >= mirror_.min_separation;
     if (!separated || !(evidence >= threshold)) return start.mirror ? Verdict::kMirror : Verdict::kOtherMinimum;
   }
   return Verdict::kRuledOut;
 }
 
-double CertifiedTrigger::LargestVariance(std::span<const Eigen::Vector3d> p_world_tag, const Eigen::Vector3d& point,
-                                         double noise_variance) const {
+double CertifiedTrigger::LargestVariance(std::span<const Eigen::Vector3d> p_world_tag, std::span<const int> tag_id,
+                                         const Eigen::Vector3d& point, double noise_variance) const {
   Eigen::Matrix4d a = Eigen::Matrix4d::Zero();
   for (const Eigen::Vector3d& p : p_world_tag) {
     const Eigen::Vector3d diff = p - point;
@@ -176,15 +174,17 @@ double CertifiedTrigger::LargestVariance(std::span<const Eigen::Vector3d> p_worl
   Eigen::Matrix4d a_inverse;
   if (!internal::InvertNormalMatrix(a, &a_inverse)) return kInf;
   const double travel_bias_m = travel_bias_ ? travel_bias_(std::sqrt(noise_variance)) : 0.0;
-  const Eigen::Matrix4d p = noise_variance * a_inverse + ModelErrorCovariance(p_world_tag, point, covariance_, travel_bias_m);
+  const Eigen::Matrix4d p =
+      noise_variance * a_inverse + ModelErrorCovariance(p_world_tag, tag_id, point, covariance_, travel_bias_m);
   const Eigen::Matrix3d position = p.topLeftCorner<3, 3>();
   if (!position.allFinite()) return kInf;
   return Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d>(position, Eigen::EigenvaluesOnly).eigenvalues().maxCoeff();
 }
 
-bool CertifiedTrigger::RegionWithinTarget(std::span<const Eigen::Vector3d> p_world_tag, std::span<const double> range_m,
-                                          const SolveResult& estimate,
+bool CertifiedTrigger::RegionWithinTarget(const TriggerInput& in, const SolveResult& estimate,
                                           const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d>& axes) const {
+  const std::span<const Eigen::Vector3d> p_world_tag = in.p_world_tag;
+  const std::span<const double> range_m = in.range_m;
   const double limit = options_.accuracy_m * options_.accuracy_m / region_chi2_;  // of the largest variance
   if (!(axes.eigenvalues().maxCoeff() <= limit)) return false;
   // From the ends of the region's axes, with the estimate's noise (floored at the model error)
@@ -198,7 +198,7 @@ bool CertifiedTrigger::RegionWithinTarget(std::span<const Eigen::Vector3d> p_wor
         std::sqrt(region_chi2_ * std::max(axes.eigenvalues()(i), 0.0)) * axes.eigenvectors().col(i);
     for (const double side : {-1.0, 1.0}) {
       const Eigen::Vector3d end = estimate.p_world_anchor + side * half_axis;
-      if (!(LargestVariance(p_world_tag, end, factor * scale_m * scale_m) <= limit)) return false;
+      if (!(LargestVariance(p_world_tag, in.tag_id, end, factor * scale_m * scale_m) <= limit)) return false;
     }
   }
   return true;
@@ -206,14 +206,15 @@ bool CertifiedTrigger::RegionWithinTarget(std::span<const Eigen::Vector3d> p_wor
 
 bool CertifiedTrigger::Fire(const TriggerInput& in) {
   if (!cadence_.Due(in)) return false;
-  const SolveResult estimate = solver_->Solve(in.p_world_tag, in.range_m);
+  SolveResult estimate = SolveWithTagBiases(*solver_, in.p_world_tag, in.range_m, in.tag_id, tag_biases_);
   if (!Succeeded(estimate.status)) return false;
+  MakeCredible(in.p_world_tag, in.range_m, in.tag_id, covariance_, travel_bias_, &estimate);
   const std::optional<Eigen::Vector3d> previous = std::exchange(previous_, estimate.p_world_anchor);
   // The cheap tests first: the region, then the stability; the alternatives' fits last.
   const Eigen::Matrix3d covariance = estimate.covariance.topLeftCorner<3, 3>();
   if (!covariance.allFinite()) return false;
   const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> axes(covariance);
-  if (!RegionWithinTarget(in.p_world_tag, in.range_m, estimate, axes)) return false;
+  if (!RegionWithinTarget(in, estimate, axes)) return false;
   if (!previous || (estimate.p_world_anchor - *previous).norm() > options_.accuracy_m) return false;
   const Verdict verdict = RuleOutAlternatives(in.p_world_tag, in.range_m, estimate, axes.eigenvectors());
   refusal_ = verdict == Verdict::kMirror ? std::optional(SolveStatus::kHeightUnobservable) : std::nullopt;

@@ -74,11 +74,21 @@ void Harmonics(const Eigen::Vector3d& u, int degree, double* out) {
   out[14] = a * x * (x * x - 3.0 * y * y);
 }
 
-Eigen::Matrix4d ModelErrorCovariance(std::span<const Eigen::Vector3d> p_world_tag, const Eigen::Vector3d& p_world_anchor,
-                                     const CovarianceOptions& options, double travel_bias_m) {
+Eigen::Matrix4d ModelErrorCovariance(std::span<const Eigen::Vector3d> p_world_tag, std::span<const int> tag_id,
+                                     const Eigen::Vector3d& p_world_anchor, const CovarianceOptions& options,
+                                     double travel_bias_m) {
   const int harmonics = options.model_error_m > 0.0 ? HarmonicCount(options.model_error_degree) : 0;
   const bool travel = options.travel_bias && travel_bias_m != 0.0;
-  if (harmonics == 0 && !travel) return Eigen::Matrix4d::Zero();
+  // The tags in the data, a handful at most (a robot's); one tag's offset is the bias itself.
+  std::vector<int> tags;
+  if (options.link_offset_m > 0.0 && tag_id.size() == p_world_tag.size()) {
+    for (const int tag : tag_id) {
+      if (std::find(tags.begin(), tags.end(), tag) == tags.end()) tags.push_back(tag);
+    }
+  }
+  const bool links = tags.size() >= 2;
+  if (harmonics == 0 && !travel && !links) return Eigen::Matrix4d::Zero();
+  std::vector<Eigen::Vector4d> jt_links(links ? tags.size() : 0, Eigen::Vector4d::Zero());
   Eigen::Matrix4d a = Eigen::Matrix4d::Zero();
   Eigen::Matrix<double, 4, kMaxHarmonics> jt_harmonics = Eigen::Matrix<double, 4, kMaxHarmonics>::Zero();
   Eigen::Vector4d jt_travel = Eigen::Vector4d::Zero();
@@ -92,6 +102,7 @@ Eigen::Matrix4d ModelErrorCovariance(std::span<const Eigen::Vector3d> p_world_ta
       for (int h = 0; h < harmonics; ++h) jt_harmonics.col(h) += row.j * y[h];
     }
     if (travel) jt_travel += row.j * RangeRateSign(p_world_tag, p_world_anchor, k);
+    if (links) jt_links[static_cast<std::size_t>(std::find(tags.begin(), tags.end(), tag_id[k]) - tags.begin())] += row.j;
   }
   Eigen::Matrix4d a_inverse;
   if (!internal::InvertNormalMatrix(a, &a_inverse)) return Eigen::Matrix4d::Zero();
@@ -101,6 +112,7 @@ Eigen::Matrix4d ModelErrorCovariance(std::span<const Eigen::Vector3d> p_world_ta
     sum.noalias() += variance * jt_harmonics.leftCols(harmonics) * jt_harmonics.leftCols(harmonics).transpose();
   }
   if (travel) sum.noalias() += travel_bias_m * travel_bias_m * jt_travel * jt_travel.transpose();
+  for (const Eigen::Vector4d& jt : jt_links) sum.noalias() += options.link_offset_m * options.link_offset_m * jt * jt.transpose();
   return a_inverse * sum * a_inverse;
 }
 
@@ -148,19 +160,18 @@ double ResidualScale(std::span<const Eigen::Vector3d> p_world_tag, std::span<con
   return std::sqrt(squares / static_cast<double>(range_m.size() - 4));
 }
 
-SolveResult CredibleCovarianceSolver::Solve(std::span<const Eigen::Vector3d> p_world_tag,
-                                            std::span<const double> range_m) const {
-  SolveResult result = inner_->Solve(p_world_tag, range_m);
-  if (!Succeeded(result.status) || !result.covariance.allFinite()) return result;
-  if (options_.correlated_noise) {
-    result.covariance *= CorrelationFactor(p_world_tag, range_m, result.p_world_anchor, result.bias_m);
+void MakeCredible(std::span<const Eigen::Vector3d> p_world_tag, std::span<const double> range_m,
+                  std::span<const int> tag_id, const CovarianceOptions& options, const TravelBias& travel_bias,
+                  SolveResult* solve) {
+  if (!Succeeded(solve->status) || !solve->covariance.allFinite()) return;
+  if (options.correlated_noise) {
+    solve->covariance *= CorrelationFactor(p_world_tag, range_m, solve->p_world_anchor, solve->bias_m);
   }
   const double travel_bias_m =
-      options_.travel_bias && travel_bias_
-          ? travel_bias_(ResidualScale(p_world_tag, range_m, result.p_world_anchor, result.bias_m))
+      options.travel_bias && travel_bias
+          ? travel_bias(ResidualScale(p_world_tag, range_m, solve->p_world_anchor, solve->bias_m))
           : 0.0;
-  result.covariance += ModelErrorCovariance(p_world_tag, result.p_world_anchor, options_, travel_bias_m);
-  return result;
+  solve->covariance += ModelErrorCovariance(p_world_tag, tag_id, solve->p_world_anchor, options, travel_bias_m);
 }
 
 }  // namespace anchorbench::estimator

@@ -47,6 +47,7 @@ bool HeightCheckOptions::IsValid(std::string* why) const {
   };
   if (!(min_evidence >= 0.0) || !std::isfinite(min_evidence)) return fail("min_evidence must be >= 0");
   if (!(trim_fraction >= 0.0 && trim_fraction <= 0.5)) return fail("trim_fraction must be in [0, 0.5]");
+  if (!(min_separation >= 0.0) || !std::isfinite(min_separation)) return fail("min_separation must be >= 0");
   return !height_prior || height_prior->IsValid(why);
 }
 
@@ -105,6 +106,17 @@ double FitEvidence(std::span<const Eigen::Vector3d> p_world_tag, std::span<const
   return (TrimmedSquares(b, trim_fraction) - TrimmedSquares(a, trim_fraction)) / (sigma_m * sigma_m);
 }
 
+double Separation(std::span<const Eigen::Vector3d> p_world_tag, const Eigen::Vector3d& p_a, double bias_a_m,
+                  const Eigen::Vector3d& p_b, double bias_b_m, double residual_scale_m) {
+  double sum = 0.0;
+  for (const Eigen::Vector3d& p : p_world_tag) {
+    const double difference = (p - p_a).norm() + bias_a_m - (p - p_b).norm() - bias_b_m;
+    sum += difference * difference;
+  }
+  const double scale_m = std::max(residual_scale_m, 1e-3);
+  return sum / (scale_m * scale_m);
+}
+
 double MirrorEvidence(std::span<const Eigen::Vector3d> p_world_tag, std::span<const double> range_m,
                       const SolveResult& estimate, double trim_fraction) {
   return MirrorOf(p_world_tag, range_m, estimate, trim_fraction).evidence;
@@ -119,7 +131,15 @@ SolveResult HeightCheckedSolver::Solve(std::span<const Eigen::Vector3d> p_world_
     mirror.evidence += options_.height_prior->Chi2(mirror.p_world_mirror.z()) -
                        options_.height_prior->Chi2(result.p_world_anchor.z());
   }
-  if (!mirror.exists || mirror.evidence >= options_.min_evidence) return result;  // the data (and a height prior) decide
+  const auto separated = [&] {
+    double squares = 0.0;
+    for (const double r : Residuals(p_world_tag, range_m, result.p_world_anchor, result.bias_m)) squares += r * r;
+    const double scale_m = std::sqrt(squares / static_cast<double>(std::max<std::size_t>(range_m.size(), 5) - 4));
+    return options_.height_prior || Separation(p_world_tag, result.p_world_anchor, result.bias_m, mirror.p_world_mirror,
+                                               mirror.bias_mirror_m, scale_m) >= options_.min_separation;
+  };
+  // The data (and a height prior) decide.
+  if (!mirror.exists || (mirror.evidence >= options_.min_evidence && separated())) return result;
   // Ambiguous. Without a usable side prior, say so.
   constexpr double kMinNormalZ = 0.5;  // cos(60 deg): a steeper plane has no above and below
   if (options_.side == Side::kAny || mirror.normal.z() < kMinNormalZ) {

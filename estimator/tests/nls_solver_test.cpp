@@ -43,8 +43,8 @@ TEST(NlsSolver, AdaptiveKernelResistsOutliersBetterThanL2) {
     auto data = testing::BoxData(rng, 400, p_anchor, Eigen::Vector3d(6, 0, 1), 5.0, 0.1, 0.1);
     for (double& d : data.range_m)
       if (rng.Uniform() < 0.2) d += rng.Uniform(1.0, 8.0);  // NLOS-like outliers
-    const AnchorSolver l2({{}, Options(KernelMode::kL2), std::nullopt});
-    const AnchorSolver adaptive({{}, Options(KernelMode::kAdaptive), std::nullopt});
+    const AnchorSolver l2({{}, Options(KernelMode::kL2), std::nullopt, {}});
+    const AnchorSolver adaptive({{}, Options(KernelMode::kAdaptive), std::nullopt, {}});
     const SolveResult a = adaptive.Solve(data.p_world_tag, data.range_m);
     const SolveResult b = l2.Solve(data.p_world_tag, data.range_m);
     ASSERT_TRUE(Succeeded(a.status));

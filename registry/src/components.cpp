@@ -30,6 +30,7 @@ estimator::AnchorInitializer MakeInitializer(const Components& components, int a
   std::shared_ptr<const estimator::Solver> solver =
       components.solvers.Create(config.solver, {solver_options, seed, components.tables.get()}, &why);
   if (!solver) throw std::invalid_argument(why);
+  if (solver_options.scale.estimate) solver = std::make_shared<estimator::ScaledSolver>(solver, solver_options.scale);
   std::unique_ptr<estimator::OutlierFilter> filter = components.filters.Create(config.filter.kind, {config.filter, seed}, &why);
   if (!filter) throw std::invalid_argument(why);
   const estimator::OutlierFilter* online_filter = filter.get();

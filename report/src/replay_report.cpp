@@ -16,7 +16,7 @@ using io::FormatOptional;
 
 constexpr const char* kEstimateColumns[] = {"anchor_id", "method", "initialized", "t_init", "n_used", "pdop_est",
                                             "pdop_true", "x", "y", "z", "bias", "err_m", "status", "err_xy", "err_z",
-                                            "bias_aware_hdop", "bias_aware_vdop"};
+                                            "bias_aware_hdop", "bias_aware_vdop", "scale"};
 
 // Three decimals for a terminal, or the shortest text where that would be a wall of digits.
 std::string ForTerminal(double value) { return std::abs(value) < 1e9 ? FormatFixed(value, 3) : FormatNumber(value); }
@@ -51,7 +51,8 @@ std::vector<std::string> EstimateFields(const runner::Attempt& a) {
           ErrorXy(a) ? FormatNumber(*ErrorXy(a)) : "",
           ErrorZ(a) ? FormatNumber(*ErrorZ(a)) : "",
           a.evaluation ? FormatOptional(a.evaluation->bias_aware_hdop) : "",
-          a.evaluation ? FormatOptional(a.evaluation->bias_aware_vdop) : ""};
+          a.evaluation ? FormatOptional(a.evaluation->bias_aware_vdop) : "",
+          has_estimate && a.solve->range_scale_sigma > 0.0 ? FormatNumber(a.solve->range_scale) : ""};
 }
 
 }  // namespace

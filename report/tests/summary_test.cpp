@@ -33,7 +33,9 @@ TEST(Summary, TableColumnsWorkedByHand) {
   missed.method = kFixedWindowTrigger;
   missed.status = "too_few_samples";
   attempts.push_back(missed);
-  const auto summaries = Summarize(attempts, {RowConfig{"", {}, anchorbench::testing::PaperEstimator(), std::nullopt}}, 2, 500, 1);
+  RowConfig row;
+  row.estimator = anchorbench::testing::PaperEstimator();  // its two triggers
+  const auto summaries = Summarize(attempts, {row}, 2, 500, 1);
   ASSERT_EQ(summaries.size(), 2u);  // fixed_window, then pdop_closest_point
   const MethodSummary& fixed = summaries[0];
   EXPECT_EQ(fixed.attempts, 5);

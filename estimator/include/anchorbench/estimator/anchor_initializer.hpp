@@ -17,6 +17,7 @@
 #include "anchorbench/estimator/init_trigger.hpp"
 #include "anchorbench/estimator/outlier_filter.hpp"
 #include "anchorbench/estimator/range_sample.hpp"
+#include "anchorbench/estimator/tag_biases.hpp"
 
 namespace anchorbench::estimator {
 
@@ -45,6 +46,8 @@ struct InitializerOptions {
   HeightCheckOptions height_check;
   // What every solve's covariance adds beyond the solver's noise-only one (credible_covariance.hpp).
   CovarianceOptions covariance;
+  // One bias per tag, with two or more tags (tag_biases.hpp).
+  TagBiasOptions tag_biases;
 
   bool IsValid(std::string* why) const;
 };
@@ -100,6 +103,7 @@ class AnchorInitializer {
   // The buffered data (online triggers: up to the initialization).
   std::span<const Eigen::Vector3d> p_world_tag() const { return p_world_tag_; }
   std::span<const double> range_m() const { return range_m_; }
+  std::span<const int> tag_id() const { return tag_id_; }
   const ClosestPointPdop& pdop() const { return pdop_; }
   // The latest online solve that failed (degenerate, non-finite), if any: why it is not initialized.
   const std::optional<SolveResult>& last_failed_solve() const { return last_failed_solve_; }
@@ -113,6 +117,7 @@ class AnchorInitializer {
  private:
   struct Accepted {
     double t_s;
+    int tag_id;
     Eigen::Vector3d p_world_tag;
     double range_m;
     double pdop;  // closest-point PDOP right after this sample
@@ -123,17 +128,18 @@ class AnchorInitializer {
   };
 
   void Admit(const Accepted& sample);  // buffer it and ask the trigger
-  void Buffer(const Eigen::Vector3d& p_world_tag, double range_m);
+  void Buffer(int tag_id, const Eigen::Vector3d& p_world_tag, double range_m);
   InitEvent SolveNow(double t_s, double pdop);
 
   int anchor_id_;
   InitializerOptions options_;
   std::unique_ptr<OutlierFilter> filter_;
   std::unique_ptr<InitTrigger> trigger_;
-  std::shared_ptr<const Solver> solver_;  // as the filter's solve stage hands it back
+  std::shared_ptr<const Solver> solver_;  // as the filter's solve stage hands it back, mirror-checked
   ClosestPointPdop pdop_;
   std::vector<Eigen::Vector3d> p_world_tag_;
   std::vector<double> range_m_;
+  std::vector<int> tag_id_;
   std::size_t n_admitted_ = 0;   // samples the trigger has seen
   std::size_t keep_every_ = 1;   // BufferPolicy::kThin: buffer every keep_every_-th admitted sample
   double t_first_s_ = 0.0;

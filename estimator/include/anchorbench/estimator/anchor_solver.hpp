@@ -7,6 +7,7 @@
 
 #include "anchorbench/estimator/ls_solver.hpp"
 #include "anchorbench/estimator/nls_solver.hpp"
+#include "anchorbench/estimator/scaled_solver.hpp"
 #include "anchorbench/estimator/solver.hpp"
 
 namespace anchorbench::estimator {
@@ -15,9 +16,10 @@ struct AnchorSolverOptions {
   LsOptions ls;
   NlsOptions nls;
   std::optional<HeightPrior> height_prior;  // one anchor's known height, in both the LS and the NLS
+  ScaleOptions scale;                        // a range scale factor as a fifth unknown (ScaledSolver)
 
   bool IsValid(std::string* why) const {
-    return ls.IsValid(why) && nls.IsValid(why) && (!height_prior || height_prior->IsValid(why));
+    return ls.IsValid(why) && nls.IsValid(why) && (!height_prior || height_prior->IsValid(why)) && scale.IsValid(why);
   }
 };
 

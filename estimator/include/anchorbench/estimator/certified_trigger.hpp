@@ -12,6 +12,7 @@
 #include "anchorbench/estimator/height_check.hpp"
 #include "anchorbench/estimator/init_trigger.hpp"
 #include "anchorbench/estimator/solver.hpp"
+#include "anchorbench/estimator/tag_biases.hpp"
 #include "anchorbench/estimator/triggers.hpp"
 
 namespace anchorbench::estimator {
@@ -27,8 +28,8 @@ struct CertificateOptions {
   bool IsValid(std::string* why) const;
 };
 
-// The chi-square quantile with 3 degrees of freedom (Wilson-Hilferty; within 0.5% from 0.5 to
-// 0.9999): the squared radius, in standard deviations, of a 3-D confidence region.
+// The chi-square quantile with 3 degrees of freedom (Newton on the exact CDF from Wilson-Hilferty's
+// start): the squared radius, in standard deviations, of a 3-D confidence region.
 double ChiSquare3Quantile(double confidence);
 
 // Ours (docs/method.md#the-certified-trigger): fire only once the data rule out, with the bias
@@ -57,10 +58,11 @@ double ChiSquare3Quantile(double confidence);
 // (evaluate_growth > 1) a whole run costs O(N).
 class CertifiedTrigger : public InitTrigger {
  public:
-  // `solver_options` give the L2 refinement of the mirror test its tolerances and the height prior.
+  // `solver_options` give the L2 refinement of the mirror test its tolerances and the height prior;
+  // `tag_biases` are the initializer's, so that the certificate judges the estimate it will report.
   CertifiedTrigger(std::shared_ptr<const Solver> solver, const AnchorSolverOptions& solver_options,
                    const CertificateOptions& options, const HeightCheckOptions& mirror,
-                   CredibleCovarianceSolver::TravelBias travel_bias, SolveCadence cadence);
+                   const TagBiasOptions& tag_biases, TravelBias travel_bias, SolveCadence cadence);
   bool Fire(const TriggerInput& in) override;
   std::optional<SolveStatus> refusal() const override { return refusal_; }
 
@@ -80,19 +82,20 @@ class CertifiedTrigger : public InitTrigger {
   Verdict RuleOutAlternatives(std::span<const Eigen::Vector3d> p_world_tag, std::span<const double> range_m,
                               const SolveResult& estimate, const Eigen::Matrix3d& axes);
   // 2. and 3.: the region, and the covariance from the ends of its axes, within D.
-  bool RegionWithinTarget(std::span<const Eigen::Vector3d> p_world_tag, std::span<const double> range_m,
-                          const SolveResult& estimate, const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d>& axes) const;
+  bool RegionWithinTarget(const TriggerInput& in, const SolveResult& estimate,
+                          const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d>& axes) const;
   // The largest variance of the covariance seen from `point`; +infinity where it is singular.
-  double LargestVariance(std::span<const Eigen::Vector3d> p_world_tag, const Eigen::Vector3d& point,
-                         double noise_variance) const;
+  double LargestVariance(std::span<const Eigen::Vector3d> p_world_tag, std::span<const int> tag_id,
+                         const Eigen::Vector3d& point, double noise_variance) const;
 
-  std::shared_ptr<const Solver> solver_;  // the anchor's, with the credible covariance
+  std::shared_ptr<const Solver> solver_;  // the anchor's
   NlsSolver refine_;                      // L2, for the mirror's basin
   std::optional<HeightPrior> height_prior_;
   HeightCheckOptions mirror_;
+  TagBiasOptions tag_biases_;
   CertificateOptions options_;
   CovarianceOptions covariance_;
-  CredibleCovarianceSolver::TravelBias travel_bias_;
+  TravelBias travel_bias_;
   SolveCadence cadence_;
   double region_chi2_;
   std::optional<SolveStatus> refusal_;

@@ -1,13 +1,12 @@
 #pragma once
 
 #include <functional>
-#include <memory>
 #include <span>
 #include <string>
 
 #include <Eigen/Core>
 
-#include "anchorbench/estimator/solver.hpp"
+#include "anchorbench/estimator/solve_result.hpp"
 
 namespace anchorbench::estimator {
 
@@ -23,12 +22,15 @@ namespace anchorbench::estimator {
 //   differences on one side, so accepted ranges read short while the tag recedes and long while
 //   it approaches, by beta = g(tau / sigma) sigma (ConsistencyFilter::TravelBias), which moves an
 //   anchor along the direction of travel (12 mm at tau = 2 sigma = 0.2 m on Table I's passes).
+// - per-link offsets: a multi-tag robot's tags range to an anchor with offsets of their own (0.1-0.3
+//   m on public recordings) that one bias cannot absorb; with two or more tags in the data, each
+//   tag's samples share a constant error of sigma link_offset_m.
 // - correlated noise: the same check also correlates the accepted noise from sample to sample
 //   (lag-1 autocorrelation ~0.2 at tau = 2 sigma), and slowly varying biases do more; the noise-only
 //   covariance, which takes the samples as independent, is scaled by the Bartlett-weighted sum of
 //   the residuals' autocorrelations, f = 1 + 2 sum_{l=1..L} (1 - l/(L+1)) rho_l (L = 10, residuals
 //   clipped at 3 robust sigmas, f in [1, 10]).
-// The first two enter as range errors e = E c with c ~ N(0, I): the estimate moves by
+// The first three enter as range errors e = E c with c ~ N(0, I): the estimate moves by
 // A^-1 J^T E c, with A = J^T J and rows j_k = [-u_k^T, 1] at the estimate (u_k the unit direction
 // anchor -> tag), so
 //   P = f P_solver + A^-1 (J^T E)(J^T E)^T A^-1.
@@ -36,6 +38,8 @@ struct CovarianceOptions {
   double model_error_m = 0.05;  // RMS of the direction-dependent range error; 0: none
   int model_error_degree = 2;   // 1 to 3
   bool travel_bias = true;      // the consistency check's travel bias (0 where no check runs)
+  double link_offset_m = 0.1;   // sigma of each tag's own offset, with two or more tags and the
+                                // offsets not estimated (tag_biases.hpp: estimated, their own term)
   bool correlated_noise = true; // the autocorrelation factor f
 
   bool IsValid(std::string* why) const;
@@ -47,9 +51,11 @@ void Harmonics(const Eigen::Vector3d& unit, int degree, double* out);
 int HarmonicCount(int degree);
 
 // The added part A^-1 (J^T E)(J^T E)^T A^-1 for an estimate (p_A, gamma), 4x4 over (p_A, gamma);
-// the travel term needs the samples in time order. Zero where A is singular or nothing is added.
-Eigen::Matrix4d ModelErrorCovariance(std::span<const Eigen::Vector3d> p_world_tag, const Eigen::Vector3d& p_world_anchor,
-                                     const CovarianceOptions& options, double travel_bias_m);
+// the travel term needs the samples in time order, the link term their tags (empty: one tag).
+// Zero where A is singular or nothing is added.
+Eigen::Matrix4d ModelErrorCovariance(std::span<const Eigen::Vector3d> p_world_tag, std::span<const int> tag_id,
+                                     const Eigen::Vector3d& p_world_anchor, const CovarianceOptions& options,
+                                     double travel_bias_m);
 
 // f above, from the range residuals of an estimate in time order.
 double CorrelationFactor(std::span<const Eigen::Vector3d> p_world_tag, std::span<const double> range_m,
@@ -60,19 +66,12 @@ double CorrelationFactor(std::span<const Eigen::Vector3d> p_world_tag, std::span
 double ResidualScale(std::span<const Eigen::Vector3d> p_world_tag, std::span<const double> range_m,
                      const Eigen::Vector3d& p_world_anchor, double bias_m);
 
-// A solver whose successful estimates carry the covariance above. `travel_bias` maps the
-// residual scale to the filter's beta (the online filter's ConsistencyFilter::TravelBias; none: 0).
-class CredibleCovarianceSolver : public Solver {
- public:
-  using TravelBias = std::function<double(double residual_scale_m)>;
-  CredibleCovarianceSolver(std::shared_ptr<const Solver> inner, const CovarianceOptions& options, TravelBias travel_bias)
-      : inner_(std::move(inner)), options_(options), travel_bias_(std::move(travel_bias)) {}
-  SolveResult Solve(std::span<const Eigen::Vector3d> p_world_tag, std::span<const double> range_m) const override;
+// The filter's travel bias for a residual scale (OutlierFilter::TravelBias; none: 0).
+using TravelBias = std::function<double(double residual_scale_m)>;
 
- private:
-  std::shared_ptr<const Solver> inner_;
-  CovarianceOptions options_;
-  TravelBias travel_bias_;
-};
+// A successful solve's covariance made credible: f P_solver + the model error's part.
+void MakeCredible(std::span<const Eigen::Vector3d> p_world_tag, std::span<const double> range_m,
+                  std::span<const int> tag_id, const CovarianceOptions& options, const TravelBias& travel_bias,
+                  SolveResult* solve);
 
 }  // namespace anchorbench::estimator

@@ -33,6 +33,11 @@ struct HeightCheckOptions {
   enum class Side { kAny, kAbove, kBelow };
   bool enabled = true;        // on for real logs (ours); the paper's estimator has no such check (configs/paper.yaml)
   double min_evidence = 9.21; // below this the mirror is within a likelihood ratio of 100: ambiguous
+  // ...and the two fits must predict ranges that differ by this much, lambda = sum (difference /
+  // sigma)^2 (ours): the likelihood ratio's own spread grows like 2 sqrt(lambda), more with noise in
+  // the tag positions (on the flat floor 1 cm of it swung a lambda ~10 pair from -15 to +28), so
+  // only a separation no swing crosses counts as evidence.
+  double min_separation = 100.0;
   double trim_fraction = 0.1; // the largest residuals of each fit left out of its sum
   Side side = Side::kAny;     // the anchor's side of the tags' plane, if known
   // The anchor's height prior, if its solver has one (set with the solver's, not configured
@@ -61,6 +66,11 @@ Mirror MirrorOf(std::span<const Eigen::Vector3d> p_world_tag, std::span<const do
 double FitEvidence(std::span<const Eigen::Vector3d> p_world_tag, std::span<const double> range_m,
                    const Eigen::Vector3d& p_a, double bias_a_m, const Eigen::Vector3d& p_b, double bias_b_m,
                    double trim_fraction);
+
+// lambda = sum over samples of the squared difference of the ranges two fits predict, in units of
+// `residual_scale_m` (floored at 1 mm).
+double Separation(std::span<const Eigen::Vector3d> p_world_tag, const Eigen::Vector3d& p_a, double bias_a_m,
+                  const Eigen::Vector3d& p_b, double bias_b_m, double residual_scale_m);
 
 // The evidence against the mirror of `estimate`; +infinity where there is none.
 double MirrorEvidence(std::span<const Eigen::Vector3d> p_world_tag, std::span<const double> range_m,

@@ -21,6 +21,7 @@ struct TriggerInput {
   // buffer reached its cap (InitializerOptions::max_buffered_samples) and thinned them.
   std::span<const Eigen::Vector3d> p_world_tag;
   std::span<const double> range_m;
+  std::span<const int> tag_id;
   double pdop = 0.0;  // the closest-point PDOP of Eq. (4) over all accepted samples (+inf if undefined)
   // Whether the initializer would solve if the trigger fired now (min_samples reached, not waiting
   // for more data after a failed solve). Costly triggers evaluate only then; all may update state.

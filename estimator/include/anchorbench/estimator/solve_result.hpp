@@ -31,6 +31,10 @@ struct SolveResult {
   SolveStatus status = SolveStatus::kNumericalFailure;
   int iterations = 0;
   double final_cost = 0.0;  // sum of rho(r_k / c, alpha), Eq. (12)
+  // The range scale s of d = (1 + s) |p_U - p_A| + gamma, where it was estimated and observable
+  // (ScaledSolver); 0 and sigma 0 otherwise.
+  double range_scale = 0.0;
+  double range_scale_sigma = 0.0;
 };
 
 }  // namespace anchorbench::estimator

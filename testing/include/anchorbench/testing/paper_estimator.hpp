@@ -15,6 +15,8 @@ inline registry::EstimatorConfig PaperEstimator() {
   config.initializer.covariance.model_error_m = 0.0;
   config.initializer.covariance.travel_bias = false;
   config.initializer.covariance.correlated_noise = false;
+  config.initializer.covariance.link_offset_m = 0.0;
+  config.initializer.tag_biases.estimate = false;
   return config;
 }
 

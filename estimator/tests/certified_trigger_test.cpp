@@ -1,0 +1,152 @@
+// The certified trigger (ours, certified_trigger.hpp): it fires once every position farther than D
+// is ruled out, refuses a flat path as height_unobservable and a line of tags for good; and the
+// parts it rests on: the chi-square quantile, the range scale as a fifth unknown, per-tag biases.
+#include "anchorbench/estimator/certified_trigger.hpp"
+
+#include <cmath>
+#include <memory>
+#include <vector>
+
+#include <gtest/gtest.h>
+
+#include "anchorbench/estimator/anchor_initializer.hpp"
+#include "anchorbench/estimator/anchor_solver.hpp"
+#include "anchorbench/estimator/consistency_filter.hpp"
+#include "anchorbench/testing/test_data.hpp"
+
+namespace anchorbench::estimator {
+namespace {
+
+const Eigen::Vector3d kAnchor(3.0, 4.0, 2.5);
+
+// Samples at 10 Hz along `path(t)` for `seconds`, ranges with bias 0.1 m, noise sigma_m and, on
+// `scale`, a distance-proportional error; tag `tag(k)`, its own offset `tag_offset_m` per tag id.
+template <typename Path>
+std::vector<RangeSample> Samples(Path path, double seconds, double sigma_m, std::uint64_t seed, double scale = 0.0,
+                                 int tags = 1, double tag_offset_m = 0.0) {
+  auto rng = testing::TestStream(seed);
+  std::vector<RangeSample> samples;
+  for (int k = 0; 0.1 * k <= seconds; ++k) {
+    const double t = 0.1 * k;
+    const Eigen::Vector3d p = path(t);
+    const int tag = k % tags;
+    const double d = (1.0 + scale) * (p - kAnchor).norm() + 0.1 + tag * tag_offset_m + sigma_m * rng.Normal();
+    samples.push_back({t, tag, 7, d, p});
+  }
+  return samples;
+}
+
+Eigen::Vector3d Wandering(double t) {  // around the anchor, up and down: a good geometry
+  return kAnchor + Eigen::Vector3d(4.0 * std::cos(0.21 * t), 3.0 * std::sin(0.17 * t), -1.5 + 1.2 * std::sin(0.11 * t));
+}
+Eigen::Vector3d FlatFloor(double t) {  // at 0.5 m, within a millimetre
+  return Eigen::Vector3d(3.0 + 5.0 * std::cos(0.2 * t), 4.0 + 4.0 * std::sin(0.13 * t), 0.5 + 0.001 * std::sin(0.7 * t));
+}
+Eigen::Vector3d Line(double t) {  // a straight pass by the anchor
+  return Eigen::Vector3d(-20.0 + 0.5 * t, 1.0, 1.5);
+}
+
+AnchorInitializer Certified(const CertificateOptions& certificate = {}) {
+  const auto solver = std::make_shared<AnchorSolver>();
+  return AnchorInitializer(7, InitializerOptions{}, std::make_unique<ConsistencyFilter>(),
+                           std::make_unique<CertifiedTrigger>(solver, AnchorSolverOptions{}, certificate,
+                                                              HeightCheckOptions{}, TagBiasOptions{},
+                                                              [](double s) { return ConsistencyFilter().TravelBias(s); },
+                                                              SolveCadence(10, 1.1)),
+                           solver);
+}
+
+std::optional<InitEvent> FeedUntilInit(AnchorInitializer& initializer, const std::vector<RangeSample>& samples) {
+  for (const RangeSample& s : samples) {
+    if (std::optional<InitEvent> event = initializer.Feed(s).event) return event;
+  }
+  return std::nullopt;
+}
+
+TEST(ChiSquare3Quantile, MatchesTheTable) {
+  EXPECT_NEAR(ChiSquare3Quantile(0.95), 7.8147, 1e-3);
+  EXPECT_NEAR(ChiSquare3Quantile(0.99), 11.3449, 1e-3);
+  EXPECT_NEAR(ChiSquare3Quantile(0.5), 2.3660, 1e-3);
+}
+
+// A good geometry: it fires, within D, and later for a tighter target.
+TEST(CertifiedTrigger, FiresWithinItsTargetOnAGoodGeometry) {
+  const std::vector<RangeSample> samples = Samples(Wandering, 120.0, 0.05, 1);
+  for (const double target_m : {0.75, 0.3}) {
+    CertificateOptions certificate;
+    certificate.accuracy_m = target_m;
+    AnchorInitializer initializer = Certified(certificate);
+    const std::optional<InitEvent> event = FeedUntilInit(initializer, samples);
+    ASSERT_TRUE(event) << target_m;
+    EXPECT_LT((event->solve.p_world_anchor - kAnchor).norm(), target_m);
+  }
+  CertificateOptions loose, tight;
+  tight.accuracy_m = 0.3;
+  AnchorInitializer a = Certified(loose), b = Certified(tight);
+  EXPECT_LE(FeedUntilInit(a, samples)->n_used, FeedUntilInit(b, samples)->n_used);
+}
+
+// A flat floor: the mirror below fits as well; the trigger never fires and says why.
+TEST(CertifiedTrigger, RefusesAFlatPathAsHeightUnobservable) {
+  AnchorInitializer initializer = Certified();
+  EXPECT_FALSE(FeedUntilInit(initializer, Samples(FlatFloor, 120.0, 0.05, 2)));
+  ASSERT_TRUE(initializer.trigger_refusal());
+  EXPECT_EQ(*initializer.trigger_refusal(), SolveStatus::kHeightUnobservable);
+}
+
+// A straight pass: the anchor can turn about the line, a circle of equal fits; never certified.
+TEST(CertifiedTrigger, RefusesALineOfTags) {
+  AnchorInitializer initializer = Certified();
+  EXPECT_FALSE(FeedUntilInit(initializer, Samples(Line, 80.0, 0.05, 3)));
+}
+
+// A 3% scale error: the fifth unknown recovers it where the geometry pins it, and the anchor with it.
+TEST(ScaledSolver, EstimatesTheRangeScaleWhereItIsObservable) {
+  const std::vector<RangeSample> samples = Samples(Wandering, 120.0, 0.02, 4, 0.03);
+  std::vector<Eigen::Vector3d> p;
+  std::vector<double> d;
+  for (const RangeSample& s : samples) {
+    p.push_back(s.p_world_tag);
+    d.push_back(s.range_m);
+  }
+  const auto inner = std::make_shared<AnchorSolver>();
+  const SolveResult plain = inner->Solve(p, d);
+  const SolveResult scaled = ScaledSolver(inner, {true, 0.01, 0.2}).Solve(p, d);
+  ASSERT_TRUE(Succeeded(scaled.status));
+  EXPECT_NEAR(scaled.range_scale, 0.03, 3.0 * scaled.range_scale_sigma);
+  EXPECT_GT(scaled.range_scale_sigma, 0.0);
+  EXPECT_LT((scaled.p_world_anchor - kAnchor).norm(), 0.5 * (plain.p_world_anchor - kAnchor).norm());
+  // Off, or where the data do not pin it (a short stretch), the 4-unknown solve stands.
+  EXPECT_EQ(ScaledSolver(inner, {false, 0.01, 0.2}).Solve(p, d).range_scale_sigma, 0.0);
+  const std::span<const Eigen::Vector3d> few(p.data(), 30);
+  const std::span<const double> few_d(d.data(), 30);
+  EXPECT_EQ(ScaledSolver(inner, {true, 0.001, 0.2}).Solve(few, few_d).range_scale_sigma, 0.0);
+}
+
+// Three tags with offsets of 0.25 m each: one bias per tag recovers the anchor one bias cannot.
+TEST(TagBiases, EstimateEachTagsOffset) {
+  const std::vector<RangeSample> samples = Samples(Wandering, 120.0, 0.03, 5, 0.0, 3, 0.25);
+  std::vector<Eigen::Vector3d> p;
+  std::vector<double> d;
+  std::vector<int> tags;
+  for (const RangeSample& s : samples) {
+    p.push_back(s.p_world_tag);
+    d.push_back(s.range_m);
+    tags.push_back(s.tag_id);
+  }
+  const AnchorSolver solver;
+  std::vector<double> offsets;
+  const SolveResult per_tag = SolveWithTagBiases(solver, p, d, tags, {true, 4}, &offsets);
+  const SolveResult one = SolveWithTagBiases(solver, p, d, tags, {false, 4});
+  ASSERT_TRUE(Succeeded(per_tag.status));
+  ASSERT_EQ(offsets.size(), 3u);
+  EXPECT_EQ(offsets[0], 0.0);
+  EXPECT_NEAR(offsets[1], 0.25, 0.02);
+  EXPECT_NEAR(offsets[2], 0.50, 0.02);
+  EXPECT_NEAR(per_tag.bias_m, 0.1, 0.03);
+  EXPECT_LT((per_tag.p_world_anchor - kAnchor).norm(), 0.05);
+  EXPECT_GT((one.p_world_anchor - kAnchor).norm(), 2.0 * (per_tag.p_world_anchor - kAnchor).norm());
+}
+
+}  // namespace
+}  // namespace anchorbench::estimator
