@@ -2,7 +2,8 @@
 # Runs the Google Benchmark programs and Table I on 1 and 2 threads, and writes results/benchmarks/
 # (or --out DIR): solvers.csv/.md (every registered solver and a plain Eigen dense LS on the same
 # samples, as ratios), micro.csv (the per-sample costs), table1_threads.csv (speed-up),
-# replay.csv (replay throughput and peak memory on logs of 1e6 and 1e7 ranges), cluster.csv (Table I
+# replay.csv (replay throughput and peak memory on logs of 1e6 and 1e7 ranges), replay_triggers.csv
+# (every trigger's replay of a long multi-tag log, as a ratio to the paper's), cluster.csv (Table I
 # as 2, 4, 8 shards + merge and as MPI jobs, against the plain run) and machine.md
 # (where it ran). Timings, not bytes: they differ from run to run, the ratios much less.
 #   bash scripts/benchmarks.sh [--out DIR] [--quick] [--build DIR]
@@ -44,6 +45,7 @@ for threads in 1 2; do
 done
 # shellcheck disable=SC2086  # $replay_sizes is a list
 /usr/bin/python3 scripts/replay_throughput.py "$build/app/anchorbench" "$staging" $replay_sizes
+/usr/bin/python3 scripts/replay_triggers.py "$build/app/anchorbench" "$staging" "$repetitions"
 # shellcheck disable=SC2086  # $realizations is empty or two words
 /usr/bin/python3 scripts/cluster_overhead.py "$build/app/anchorbench" "$staging" $realizations
 /usr/bin/python3 scripts/benchmark_tables.py "$staging"

@@ -21,6 +21,10 @@ bash scripts/halls.sh
 "$bin" run configs/bias_aware.yaml --out results/bias_aware --quiet --overwrite
 "$bin" run configs/height_check.yaml --out results/height_check --quiet --overwrite
 "$bin" run configs/flat_path.yaml --out results/flat_path --quiet --overwrite
+# Real radios and credible covariances (issue 23): the cone approach, the radio biases, the NEES study
+for run in cone_approach radio_biases credibility; do
+  "$bin" run "configs/$run.yaml" --out "results/$run" --quiet --overwrite
+done
 for sweep in sweep_bias_aware stress stress_ransac; do
   "$bin" sweep "configs/$sweep.yaml" --out "results/$sweep" --quiet --overwrite
 done

@@ -191,6 +191,7 @@ void Estimator(V& v, registry::EstimatorConfig& o, const registry::Components& p
   v.Section("certificate", [&](auto& s) {
     s.Number("accuracy_m", o.certificate.accuracy_m);
     s.Number("confidence", o.certificate.confidence);
+    s.Number("evaluate_growth", o.certificate.evaluate_growth);
     Covariance(s, o.certificate.covariance);
     s.Check(o.certificate);
   });

@@ -49,11 +49,12 @@ InitEvent AnchorInitializer::SolveNow(double t_s, double pdop) {
   event.t_s = t_s;
   event.n_used = static_cast<int>(range_m_.size());
   event.pdop_estimate = pdop;
-  event.solve = SolveWithTagBiases(*solver_, p_world_tag_, range_m_, tag_id_, options_.tag_biases);
+  std::vector<double> fitted_m;  // the ranges less each tag's offset: what the covariance judges
+  event.solve = SolveWithTagBiases(*solver_, p_world_tag_, range_m_, tag_id_, options_.tag_biases, nullptr, &fitted_m);
   const OutlierFilter& filter = *filter_;
   CovarianceOptions covariance = options_.covariance;
   if (options_.tag_biases.estimate) covariance.link_offset_m = 0.0;  // estimated: their own term
-  MakeCredible(p_world_tag_, range_m_, tag_id_, covariance,
+  MakeCredible(p_world_tag_, fitted_m, tag_id_, covariance,
                [&filter](double scale_m) { return filter.TravelBias(scale_m); }, &event.solve);
   return event;
 }

@@ -55,6 +55,10 @@ bool CertificateOptions::IsValid(std::string* why) const {
     if (why) *why = "accuracy_m must be in (0, 1000]";
     return false;
   }
+  if (!(evaluate_growth > 1.0 && evaluate_growth <= 10.0)) {
+    if (why) *why = "evaluate_growth must be in (1, 10]";
+    return false;
+  }
   if (!(confidence >= 0.5 && confidence <= 0.9999)) {
     if (why) *why = "confidence must be in [0.5, 0.9999]";
     return false;
@@ -162,22 +166,30 @@ CertifiedTrigger::Verdict CertifiedTrigger::RuleOutAlternatives(std::span<const 
 
 double CertifiedTrigger::LargestVariance(std::span<const Eigen::Vector3d> p_world_tag, std::span<const int> tag_id,
                                          const Eigen::Vector3d& point, double noise_variance) const {
-  Eigen::Matrix4d a = Eigen::Matrix4d::Zero();
-  for (const Eigen::Vector3d& p : p_world_tag) {
-    const Eigen::Vector3d diff = p - point;
-    const double distance_m = diff.norm();
-    if (!(distance_m > 0.0)) continue;
-    Eigen::Vector4d j;
-    j << -diff / distance_m, 1.0;
-    a.noalias() += j * j.transpose();
+  // The noise part: the (p_A, gamma) block of the information's inverse, with each tag's offset
+  // among the unknowns where they are estimated (tag_biases.hpp).
+  std::vector<int> tags;
+  if (tag_biases_.estimate && tag_id.size() == p_world_tag.size()) {
+    for (const int tag : tag_id) {
+      if (std::find(tags.begin(), tags.end(), tag) == tags.end()) tags.push_back(tag);
+    }
   }
-  Eigen::Matrix4d a_inverse;
-  if (!internal::InvertNormalMatrix(a, &a_inverse)) return kInf;
+  if (tags.empty()) tags.push_back(0);
+  const Eigen::MatrixXd information =
+      TagInformation(p_world_tag, tags.size() > 1 ? tag_id : std::span<const int>(), tags, point);
+  Eigen::Matrix4d noise;
+  if (tags.size() == 1) {
+    if (!internal::InvertNormalMatrix(information.topLeftCorner<4, 4>(), &noise)) return kInf;
+  } else {
+    const Eigen::LDLT<Eigen::MatrixXd> ldlt(information);
+    if (ldlt.info() != Eigen::Success) return kInf;
+    noise = ldlt.solve(Eigen::MatrixXd::Identity(information.rows(), information.cols())).topLeftCorner<4, 4>();
+  }
   const double travel_bias_m = travel_bias_ ? travel_bias_(std::sqrt(noise_variance)) : 0.0;
   const Eigen::Matrix4d p =
-      noise_variance * a_inverse + ModelErrorCovariance(p_world_tag, tag_id, point, covariance_, travel_bias_m);
+      noise_variance * noise + ModelErrorCovariance(p_world_tag, tag_id, point, covariance_, travel_bias_m);
   const Eigen::Matrix3d position = p.topLeftCorner<3, 3>();
-  if (!position.allFinite()) return kInf;
+  if (!position.allFinite() || !(position.diagonal().minCoeff() > 0.0)) return kInf;
   return Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d>(position, Eigen::EigenvaluesOnly).eigenvalues().maxCoeff();
 }
 
@@ -206,19 +218,33 @@ bool CertifiedTrigger::RegionWithinTarget(const TriggerInput& in, const SolveRes
 
 bool CertifiedTrigger::Fire(const TriggerInput& in) {
   if (!cadence_.Due(in)) return false;
-  SolveResult estimate = SolveWithTagBiases(*solver_, in.p_world_tag, in.range_m, in.tag_id, tag_biases_);
+  // Every test below on the ranges as the solve fitted them: less each tag's offset.
+  TriggerInput fitted = in;
+  SolveResult estimate =
+      SolveWithTagBiases(*solver_, in.p_world_tag, in.range_m, in.tag_id, tag_biases_, nullptr, &corrected_m_);
   if (!Succeeded(estimate.status)) return false;
-  MakeCredible(in.p_world_tag, in.range_m, in.tag_id, covariance_, travel_bias_, &estimate);
-  const std::optional<Eigen::Vector3d> previous = std::exchange(previous_, estimate.p_world_anchor);
-  // The cheap tests first: the region, then the stability; the alternatives' fits last.
+  fitted.range_m = corrected_m_;
+  MakeCredible(fitted.p_world_tag, fitted.range_m, fitted.tag_id, covariance_, travel_bias_, &estimate);
+  // 0. Stable since half the data: every estimate from the last evaluation at or before N/2 on
+  // within D of this one. An estimate that slides along a trade-off valley as data come (a wall
+  // anchor seen from the room, range against bias) moves by more than D over a doubling.
+  history_.push_back({in.range_m.size(), estimate.p_world_anchor});
+  std::size_t first = 0;
+  while (first + 1 < history_.size() && 2 * history_[first + 1].samples <= in.range_m.size()) ++first;
+  history_.erase(history_.begin(), history_.begin() + static_cast<std::ptrdiff_t>(first));
+  const bool doubled = 2 * history_.front().samples <= in.range_m.size();
+  const bool stable = doubled && std::all_of(history_.begin(), history_.end(), [&](const Evaluated& e) {
+                        return (e.p_world_anchor - estimate.p_world_anchor).norm() <= options_.accuracy_m;
+                      });
+  // The cheap test first (the region), then the alternatives' fits (whose verdict says why an
+  // estimate is refused: a mirror is height_unobservable), then the stability.
   const Eigen::Matrix3d covariance = estimate.covariance.topLeftCorner<3, 3>();
   if (!covariance.allFinite()) return false;
   const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> axes(covariance);
-  if (!RegionWithinTarget(in, estimate, axes)) return false;
-  if (!previous || (estimate.p_world_anchor - *previous).norm() > options_.accuracy_m) return false;
-  const Verdict verdict = RuleOutAlternatives(in.p_world_tag, in.range_m, estimate, axes.eigenvectors());
+  if (!RegionWithinTarget(fitted, estimate, axes)) return false;
+  const Verdict verdict = RuleOutAlternatives(fitted.p_world_tag, fitted.range_m, estimate, axes.eigenvectors());
   refusal_ = verdict == Verdict::kMirror ? std::optional(SolveStatus::kHeightUnobservable) : std::nullopt;
-  return verdict == Verdict::kRuledOut;
+  return verdict == Verdict::kRuledOut && stable;
 }
 
 }  // namespace anchorbench::estimator

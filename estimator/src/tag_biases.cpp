@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include <Eigen/Cholesky>
+
 #include "numerics.hpp"
 
 namespace anchorbench::estimator {
@@ -17,7 +19,8 @@ bool TagBiasOptions::IsValid(std::string* why) const {
 
 SolveResult SolveWithTagBiases(const Solver& solver, std::span<const Eigen::Vector3d> p_world_tag,
                                std::span<const double> range_m, std::span<const int> tag_id,
-                               const TagBiasOptions& options, std::vector<double>* offsets_m) {
+                               const TagBiasOptions& options, std::vector<double>* offsets_m,
+                               std::vector<double>* corrected_m) {
   std::vector<int> tags;
   if (options.estimate && tag_id.size() == range_m.size()) {
     for (const int tag : tag_id) {
@@ -25,6 +28,7 @@ SolveResult SolveWithTagBiases(const Solver& solver, std::span<const Eigen::Vect
     }
   }
   if (offsets_m) offsets_m->assign(std::max<std::size_t>(tags.size(), 1), 0.0);
+  if (corrected_m) corrected_m->assign(range_m.begin(), range_m.end());
   if (tags.size() < 2) return solver.Solve(p_world_tag, range_m);
   std::vector<std::size_t> index(range_m.size());
   for (std::size_t k = 0; k < range_m.size(); ++k) {
@@ -46,30 +50,56 @@ SolveResult SolveWithTagBiases(const Solver& solver, std::span<const Eigen::Vect
     }
     for (std::size_t t = 1; t < tags.size(); ++t) offset[t] = sum[t] / count[t] - sum[0] / count[0] + offset[0];
   }
-  // Each estimated offset's uncertainty, sigma^2 / n_t, through its tag's rows (A^-1 J^T e_t).
-  Eigen::Matrix4d a = Eigen::Matrix4d::Zero();
-  std::vector<Eigen::Vector4d> jt(tags.size(), Eigen::Vector4d::Zero());
+  // The covariance of (p_A, gamma) with the offsets estimated beside them: the (p_A, gamma) block of
+  // s^2 H^-1, H the information of (p_A, gamma, delta_2..delta_T) (rows [-u_k, 1, e_tag(k)]). Where
+  // the tags see the anchor alike (a rig early in a narrow cone), an offset trades with the
+  // position, which this keeps and a per-offset variance would not.
+  const Eigen::MatrixXd information = TagInformation(p_world_tag, tag_id, tags, result.p_world_anchor);
   double squares = 0.0;
   for (std::size_t k = 0; k < range_m.size(); ++k) {
-    const Eigen::Vector3d diff = p_world_tag[k] - result.p_world_anchor;
-    const double distance_m = diff.norm();
-    if (!(distance_m > 0.0)) continue;
-    Eigen::Vector4d j;
-    j << -diff / distance_m, 1.0;
-    a.noalias() += j * j.transpose();
-    jt[index[k]] += j;
-    const double r = distance_m + result.bias_m + offset[index[k]] - range_m[k];
+    const double r = (p_world_tag[k] - result.p_world_anchor).norm() + result.bias_m + offset[index[k]] - range_m[k];
     squares += r * r;
   }
-  Eigen::Matrix4d a_inverse;
-  if (internal::InvertNormalMatrix(a, &a_inverse) && range_m.size() > 4 + tags.size()) {
-    const double variance = squares / static_cast<double>(range_m.size() - 4 - (tags.size() - 1));
-    Eigen::Matrix4d added = Eigen::Matrix4d::Zero();
-    for (std::size_t t = 1; t < tags.size(); ++t) added.noalias() += variance / count[t] * jt[t] * jt[t].transpose();
-    result.covariance += a_inverse * added * a_inverse;
+  const double dof = static_cast<double>(range_m.size()) - 3.0 - static_cast<double>(tags.size());
+  const Eigen::LDLT<Eigen::MatrixXd> ldlt(information);
+  const Eigen::MatrixXd inverse = ldlt.solve(Eigen::MatrixXd::Identity(information.rows(), information.cols()));
+  if (dof > 0.0 && ldlt.info() == Eigen::Success && inverse.allFinite() && inverse.diagonal().minCoeff() > 0.0) {
+    // The solver's own covariance (robust, where it is) scaled by the ratio of the joint block to
+    // the 4-unknown one: the offsets' share of the uncertainty, on the solver's noise model.
+    const Eigen::Matrix4d joint = squares / dof * inverse.topLeftCorner<4, 4>();
+    Eigen::Matrix4d alone_inverse;
+    if (internal::InvertNormalMatrix(information.topLeftCorner<4, 4>(), &alone_inverse)) {
+      result.covariance += joint - squares / dof * alone_inverse;
+    }
+  } else {
+    result.status = SolveStatus::kDegenerateGeometry;  // an offset the data cannot tell from the position
   }
   if (offsets_m) *offsets_m = offset;
+  if (corrected_m) {
+    for (std::size_t k = 0; k < range_m.size(); ++k) (*corrected_m)[k] = range_m[k] - offset[index[k]];
+  }
   return result;
+}
+
+Eigen::MatrixXd TagInformation(std::span<const Eigen::Vector3d> p_world_tag, std::span<const int> tag_id,
+                               const std::vector<int>& tags, const Eigen::Vector3d& p_world_anchor) {
+  const Eigen::Index unknowns = 3 + static_cast<Eigen::Index>(tags.size());
+  Eigen::MatrixXd information = Eigen::MatrixXd::Zero(unknowns, unknowns);
+  Eigen::VectorXd row(unknowns);
+  for (std::size_t k = 0; k < p_world_tag.size(); ++k) {
+    const Eigen::Vector3d diff = p_world_tag[k] - p_world_anchor;
+    const double distance_m = diff.norm();
+    if (!(distance_m > 0.0)) continue;
+    row.setZero();
+    row.head<3>() = -diff / distance_m;
+    row(3) = 1.0;
+    if (k < tag_id.size()) {  // none: one tag, no offsets
+      const auto t = static_cast<Eigen::Index>(std::find(tags.begin(), tags.end(), tag_id[k]) - tags.begin());
+      if (t > 0) row(3 + t) = 1.0;
+    }
+    information.noalias() += row * row.transpose();
+  }
+  return information;
 }
 
 }  // namespace anchorbench::estimator

@@ -146,7 +146,8 @@ void RegisterBuiltinTriggers(TriggerRegistry& registry) {
                       if (!c.solver) throw std::invalid_argument("needs the anchor's solver");
                       return std::make_unique<estimator::CertifiedTrigger>(
                           c.solver, c.solver_options, c.certificate, c.initializer.height_check,
-                          c.initializer.tag_biases, c.travel_bias, Cadence(c.options));
+                          c.initializer.tag_biases, c.travel_bias,
+                          estimator::SolveCadence(c.options.evaluate_every, c.certificate.evaluate_growth));
                     });
   registry.Register("fixed_window", "the baseline: one solve on all of an anchor's data at the end of the run",
                     [](const std::string&, const Context&) { return std::make_unique<estimator::FixedWindowTrigger>(); });

@@ -73,7 +73,7 @@ void WriteBins(std::ostream& md, const std::vector<PdopCheckpoint>& checkpoints,
 // A DOP used as the trigger: at the first checkpoint of each (realization, anchor) where it is
 // below the threshold (and the NLS solved), the NLS solution there is the initialization.
 struct TriggerOutcome {
-  std::vector<const PdopCheckpoint*> fired;  // one per initialized anchor
+  std::vector<const PdopCheckpoint*> fired;  // one per initialized anchor, where it fired at a checkpoint
   std::vector<double> times, samples, errors;
   int bad = 0;  // errors > 1 m
 };
@@ -98,8 +98,8 @@ TriggerOutcome FireAt(const std::vector<PdopCheckpoint>& checkpoints, Dop dop, d
 
 // "initialized | median t | median n | median error | mean error | > 1 m" cells of an outcome.
 std::string OutcomeCells(const TriggerOutcome& o, int anchors) {
-  const double count = static_cast<double>(o.fired.size());
-  return std::to_string(o.fired.size()) + " / " + std::to_string(anchors) + " | " + FormatFixed(Median(o.times), 1) +
+  const double count = static_cast<double>(o.errors.size());
+  return std::to_string(o.errors.size()) + " / " + std::to_string(anchors) + " | " + FormatFixed(Median(o.times), 1) +
          " | " + FormatFixed(Median(o.samples), 0) + " | " + FormatFixed(Median(o.errors), 3) + " | " +
          FormatFixed(Mean(o.errors), 3) + " | " + (count > 0 ? FormatFixed(100.0 * o.bad / count, 1) + "%" : "-");
 }
@@ -151,6 +151,32 @@ void WriteBiasAware(std::ostream& md, const std::vector<PdopCheckpoint>& checkpo
   }
 }
 
+// The certified trigger (ours) on the same runs, measured as the DOP triggers above, with why the
+// anchors it did not initialize were left.
+void WriteCertified(std::ostream& md, const std::vector<runner::CertifiedOutcome>& outcomes, double accuracy_m,
+                    int anchors) {
+  TriggerOutcome o;
+  std::map<std::string, int> left;  // status -> anchors not initialized
+  for (const runner::CertifiedOutcome& c : outcomes) {
+    if (!c.error_m) {
+      ++left[c.status];
+      continue;
+    }
+    o.times.push_back(*c.t_s);
+    o.samples.push_back(c.n);
+    o.errors.push_back(*c.error_m);
+    o.bad += *c.error_m > 1.0;
+  }
+  md << "\n## The certified trigger (ours, D = " << FormatNumber(accuracy_m)
+     << " m) on the same runs, with the configured estimator\n\n"
+        "| trigger | initialized | median t (s) | median n | median error (m) | mean error (m) | > 1 m | not initialized |\n"
+        "|---|---|---|---|---|---|---|---|\n| certified | "
+     << OutcomeCells(o, anchors) << " | ";
+  std::string reasons;
+  for (const auto& [status, count] : left) reasons += (reasons.empty() ? "" : ", ") + std::to_string(count) + " " + status;
+  md << (reasons.empty() ? "-" : reasons) << " |\n";
+}
+
 }  // namespace
 
 void WritePdopTrace(std::ostream& out, const std::vector<PdopCheckpoint>& checkpoints) { WriteTraceRows(out, checkpoints); }
@@ -183,6 +209,7 @@ void WritePdopStudyMarkdown(std::ostream& md, const runner::ExperimentConfig& co
                   {"dop4_confidence", &PdopCheckpoint::dop4_confidence, trigger.confidence_threshold},
                   {"dop4_true (oracle)", &PdopCheckpoint::bias_aware_dop, trigger.bias_aware_threshold}},
                  study.anchors);
+  WriteCertified(md, study.certified, config.estimator.certificate.accuracy_m, study.anchors);
 }
 
 }  // namespace anchorbench::report

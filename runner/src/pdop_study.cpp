@@ -14,6 +14,7 @@
 #include "anchorbench/estimator/triggers.hpp"
 #include "anchorbench/eval/true_geometry.hpp"
 #include "anchorbench/io/input_error.hpp"
+#include "anchorbench/runner/attempt.hpp"
 #include "anchorbench/sim/scenario.hpp"
 
 namespace anchorbench::runner {
@@ -25,6 +26,7 @@ constexpr double kInf = std::numeric_limits<double>::infinity();
 struct AnchorStudy {
   std::vector<PdopCheckpoint> checkpoints;
   UnderestimateStats stats;
+  double t_first_s = 0.0;  // the anchor's first accepted sample
 };
 
 // In the trigger's place, never firing: it sees every accepted sample with the closest-point PDOP
@@ -38,6 +40,7 @@ class StudyProbe : public estimator::InitTrigger {
         confidence_sigmas_(confidence_sigmas), solver_(std::move(solver)), truth_(anchor.p_world_anchor), out_(out) {}
 
   bool Fire(const estimator::TriggerInput& in) override {
+    out_->t_first_s = in.t_first_s;
     truth_.Add(in.sample_p_world_tag);
     measured_.Add(in.sample_p_world_tag, in.sample_range_m);
     UpdateIdeal(in);
@@ -115,6 +118,33 @@ class StudyProbe : public estimator::InitTrigger {
   AnchorStudy* out_;
 };
 
+// The certified chain's event (or refusal) per anchor, measured against the truth.
+std::vector<CertifiedOutcome> CertifiedOutcomes(const sim::Scenario& scenario, estimator::FrontEnd& front_end,
+                                                const std::map<int, AnchorStudy>& by_anchor, int realization) {
+  std::map<int, estimator::InitEvent> fired;
+  for (const estimator::FrontEndEvent& event : front_end.TakeEvents()) {
+    if (event.chain == 1) fired[event.anchor_id] = event.init;
+  }
+  std::vector<CertifiedOutcome> outcomes;
+  for (const sim::SimAnchor& anchor : scenario.anchors) {
+    CertifiedOutcome o;
+    o.realization = realization;
+    o.anchor_id = anchor.id;
+    o.status = "waiting";
+    if (const auto it = fired.find(anchor.id); it != fired.end()) {
+      const estimator::InitEvent& event = it->second;
+      o.t_s = event.t_s - by_anchor.at(anchor.id).t_first_s;
+      o.n = event.n_used;
+      o.status = estimator::ToString(event.solve.status);
+      if (estimator::Succeeded(event.solve.status)) o.error_m = (event.solve.p_world_anchor - anchor.p_world_anchor).norm();
+    } else if (const auto refusal = front_end.chains(anchor.id).at(1).trigger_refusal()) {
+      o.status = estimator::ToString(*refusal);
+    }
+    outcomes.push_back(std::move(o));
+  }
+  return outcomes;
+}
+
 PdopStudy StudyRealization(const ExperimentConfig& config, const registry::Components& components, int realization,
                            int every) {
   const sim::Scenario scenario =
@@ -134,6 +164,9 @@ PdopStudy StudyRealization(const ExperimentConfig& config, const registry::Compo
                                               estimator.trigger.confidence_sigmas, solver, &by_anchor[anchor_id]);
     std::vector<estimator::AnchorInitializer> chain;
     chain.emplace_back(anchor_id, estimator.initializer, std::move(filter), std::move(probe), solver);
+    chain.push_back(registry::MakeInitializer(components, anchor_id, estimator, "certified",
+                                              SolverSeed(config.seed, static_cast<std::uint64_t>(realization), anchor_id),
+                                              anchor.p_world_anchor));
     return chain;
   });
   for (const sim::SimAnchor& anchor : scenario.anchors) front_end.AddAnchor(anchor.id);
@@ -147,6 +180,7 @@ PdopStudy StudyRealization(const ExperimentConfig& config, const registry::Compo
     study.checkpoints.insert(study.checkpoints.end(), anchor.checkpoints.begin(), anchor.checkpoints.end());
     study.stats.Add(anchor.stats);
   }
+  study.certified = CertifiedOutcomes(scenario, front_end, by_anchor, realization);
   return study;
 }
 
@@ -191,6 +225,7 @@ PdopStudy RunPdopStudy(const ExperimentConfig& config, const registry::Component
   PdopStudy study;
   for (PdopStudy& r : per_realization) {
     study.checkpoints.insert(study.checkpoints.end(), r.checkpoints.begin(), r.checkpoints.end());
+    study.certified.insert(study.certified.end(), r.certified.begin(), r.certified.end());
     study.stats.Add(r.stats);
     study.anchors += r.anchors;
   }

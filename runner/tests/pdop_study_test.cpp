@@ -44,6 +44,18 @@ TEST(PdopStudy, IdenticalForAnyThreadCountAndConsistent) {
     }
   }
   EXPECT_EQ(one.anchors, 6);  // one anchor per realization, counted from the scenarios
+  ASSERT_EQ(one.certified.size(), 6u);  // the certified chain's outcome for every anchor
+  for (std::size_t i = 0; i < one.certified.size(); ++i) {
+    const CertifiedOutcome& a = one.certified[i];
+    const CertifiedOutcome& b = two.certified[i];
+    EXPECT_EQ(a.status, b.status);
+    EXPECT_EQ(a.n, b.n);
+    EXPECT_EQ(a.error_m, b.error_m);
+    if (a.error_m) {
+      EXPECT_TRUE(a.t_s.has_value());
+      EXPECT_LT(*a.error_m, 0.75) << "certified within D, realization " << a.realization;
+    }
+  }
   EXPECT_EQ(one.stats.below, two.stats.below);
   EXPECT_LE(one.stats.below, one.stats.samples);
   EXPECT_LE(one.stats.ideal_below_precondition, one.stats.ideal_samples_precondition);

@@ -4,6 +4,8 @@
 #include <string>
 #include <vector>
 
+#include <Eigen/Core>
+
 #include "anchorbench/estimator/solver.hpp"
 
 namespace anchorbench::estimator {
@@ -20,10 +22,18 @@ struct TagBiasOptions {
 
 // The solve with each tag's offset: alternately the solver on the ranges less the offsets, and each
 // offset as the mean residual of its tag's ranges against the first tag's. With one tag it is the
-// solver's solve. `offsets_m` gets each tag's delta, in the order `tag_id` first shows them.
-// The covariance gains each offset's uncertainty, sigma^2 / n_t, through the rows of its tag.
+// solver's solve. `offsets_m` gets each tag's delta, in the order `tag_id` first shows them, and
+// `corrected_m` the ranges less their tag's delta (what the solve fitted; the ranges with one tag).
+// The covariance is the (p_A, gamma) block of the joint one (TagInformation); an offset the data
+// cannot tell from the position makes the solve kDegenerateGeometry.
 SolveResult SolveWithTagBiases(const Solver& solver, std::span<const Eigen::Vector3d> p_world_tag,
                                std::span<const double> range_m, std::span<const int> tag_id,
-                               const TagBiasOptions& options, std::vector<double>* offsets_m = nullptr);
+                               const TagBiasOptions& options, std::vector<double>* offsets_m = nullptr,
+                               std::vector<double>* corrected_m = nullptr);
+
+// The information of (p_A, gamma, delta_2..delta_T) at an anchor position: rows [-u_k, 1, e_tag(k)]
+// (the first of `tags` has no offset of its own). O(N T^2).
+Eigen::MatrixXd TagInformation(std::span<const Eigen::Vector3d> p_world_tag, std::span<const int> tag_id,
+                               const std::vector<int>& tags, const Eigen::Vector3d& p_world_anchor);
 
 }  // namespace anchorbench::estimator

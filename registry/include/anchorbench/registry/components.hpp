@@ -74,7 +74,7 @@ void RegisterBuiltinSolvers(SolverRegistry& registry);
 // none, consistency, ransac.
 void RegisterBuiltinFilters(FilterRegistry& registry);
 // pdop_closest_point, pdop_ls, pdop_nls, dop4_closest_point, dop4_confidence, hdop_closest_point,
-// fixed_window, sample_count, timeout.
+// certified, fixed_window, sample_count, timeout.
 void RegisterBuiltinTriggers(TriggerRegistry& registry);
 // All three.
 void RegisterBuiltins(Components& components);

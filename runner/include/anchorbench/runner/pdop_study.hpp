@@ -2,6 +2,7 @@
 
 #include <array>
 #include <optional>
+#include <string>
 #include <vector>
 
 #include "anchorbench/registry/components.hpp"
@@ -48,15 +49,28 @@ struct UnderestimateStats {
   void Add(const UnderestimateStats& other);  // other's samples after this one's
 };
 
+// The certified trigger (ours) on the same samples, beside the probe: when it fired, on how many
+// samples, and the error of the estimate it reported; or why it did not (its refusal, or "waiting").
+struct CertifiedOutcome {
+  int realization = 0;
+  int anchor_id = 0;
+  std::optional<double> t_s;  // since the anchor's first accepted range; empty if it never fired
+  int n = 0;
+  std::optional<double> error_m;
+  std::string status;  // the event's status, or the trigger's refusal, or "waiting"
+};
+
 struct PdopStudy {
   std::vector<PdopCheckpoint> checkpoints;  // realization by realization, anchor by anchor
+  std::vector<CertifiedOutcome> certified;  // in the same order, one per anchor
   UnderestimateStats stats;
   int anchors = 0;  // over all realizations
 };
 
 // Runs the config's base scenario for every realization through the online front end: each
 // anchor's chain is the configured filter and a probe in the trigger's place, which sees every
-// accepted sample and takes one checkpoint every `every` of them. Parallel over realizations,
+// accepted sample and takes one checkpoint every `every` of them; a second chain, the configured
+// estimator with the certified trigger, runs beside it. Parallel over realizations,
 // identical for any thread count. The filter comes from `components` by name.
 PdopStudy RunPdopStudy(const ExperimentConfig& config, const registry::Components& components, int every, int threads);
 
