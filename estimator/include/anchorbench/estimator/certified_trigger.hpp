@@ -22,9 +22,7 @@ struct CertificateOptions {
   double accuracy_m = 0.75;  // D: every anchor position farther than this from the estimate must be ruled out
   double confidence = 0.99;  // of the region that must lie within D
   // Its own geometric cadence (with trigger.evaluate_every), whatever the other solving triggers
-  // use: a run then costs N g / (g - 1) samples' worth of solves, not O(N^2 / every). 1.25: on
-  // Table I 2.9 ms an attempt and 1812 initializations of row 1's 3000, where 1.1 took 5.2 ms for
-  // 1894 and 1.5 2.0 ms for 1623.
+  // use: a run then costs N g / (g - 1) samples' worth of solves, not O(N^2 / every).
   double evaluate_growth = 1.25;
   // The covariance the certificate judges: its own, so that it stays honest where the reported
   // one is configured as the paper's (estimator.covariance).
@@ -39,7 +37,8 @@ double ChiSquare3Quantile(double confidence);
 
 // Ours (docs/method.md#the-certified-trigger): fire only once the data rule out, with the bias
 // refit, every anchor position farther than D from the estimate. On its cadence it solves (the
-// anchor's solver) and judges the estimate four ways, all without the truth:
+// anchor's solver) and judges the estimate four ways, all without the truth (tested as 2-3, 1, 0:
+// the cheap region first, and a mirror's verdict before the stability, so a refusal says why):
 // 0. It must be stable: every estimate since half the data (from the last evaluation at or before
 //    N/2) within D of it; an estimate that slides along a trade-off valley, or flips between basins,
 //    is no certificate.
