@@ -11,6 +11,7 @@
 #include <yaml-cpp/depthguard.h>
 
 #include "anchorbench/io/input_error.hpp"
+#include "one_document.hpp"
 
 namespace anchorbench::config {
 
@@ -66,28 +67,19 @@ void CountNodes(const YAML::Node& node, long& budget, const std::string& source)
   }
 }
 
-// The only document of a text; a second one (after '---') would be silently ignored, so it is an error.
-YAML::Node OnlyDocument(const std::string& text, const std::string& source) {
-  // yaml-cpp's LoadAll runs without end on a NUL byte (found by fuzz_config); a config is text.
-  if (const std::size_t nul = text.find('\0'); nul != std::string::npos) {
-    throw InputError(source + ":" + std::to_string(1 + std::count(text.begin(), text.begin() + static_cast<std::ptrdiff_t>(nul), '\n')) +
-                     ": a NUL byte: not a text file");
-  }
-  std::vector<YAML::Node> documents = YAML::LoadAll(text);
-  if (documents.size() > 1) {
-    throw InputError(source + ":" + Line(documents[1].Mark()) +
-                     ": a second YAML document (after '---'): a config is one document");
-  }
+// The node budget holds for the only document: an alias bomb is refused before it is walked.
+YAML::Node CheckedDocument(const std::string& text, const std::string& source) {
+  YAML::Node document = OnlyDocument(text, source);
   long budget = kMaxConfigNodes;
-  if (!documents.empty()) CountNodes(documents.front(), budget, source);
-  return documents.empty() ? YAML::Node() : documents.front();
+  CountNodes(document, budget, source);
+  return document;
 }
 
 // A config's text as a mapping of keys (an empty text is an empty mapping).
 YAML::Node ParseText(const std::string& text, const std::string& source) {
   YAML::Node root;
   try {
-    root = OnlyDocument(text, source);
+    root = CheckedDocument(text, source);
   } catch (const YAML::DeepRecursion& e) {
     throw InputError(source + ":" + Line(e.mark) + ": nested deeper than the YAML reader allows (" +
                      std::to_string(e.depth()) + " levels)");
