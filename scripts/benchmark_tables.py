@@ -26,31 +26,36 @@ def milliseconds(b):
     return b["real_time"] * scale
 
 
-# Solvers side by side: each against the dense Eigen baseline and against lm_l2 at the same size.
+# Solvers side by side: each against the dense Eigen baseline and against lm_l2 on the same data
+# (N samples, outlier share); names are BM_Solver/<solver>/n:<N>/outlier_percent:<P>.
 context, compare = medians("bench_compare")
-by_size = {}
+by_data = {}
 for name, b in compare.items():
     parts = name.split("/")
-    solver = "eigen_dense_ls (baseline)" if parts[0] == "BM_EigenDenseLs" else "/".join(parts[1:-1])
-    by_size.setdefault(int(parts[-1]), {})[solver] = b
+    solver = "eigen_dense_ls (baseline)" if parts[0] == "BM_EigenDenseLs" else "/".join(parts[1:-2])
+    key = (int(parts[-1].split(":")[1]), int(parts[-2].split(":")[1]))  # (outlier percent, N)
+    by_data.setdefault(key, {})[solver] = b
 with open(os.path.join(folder, "solvers.csv"), "w", newline="") as f:
     w = csv.writer(f, lineterminator="\n")
-    w.writerow(["solver", "samples", "time_ms", "x_eigen_dense_ls", "x_lm_l2", "error_m", "iterations"])
-    md = ["| solver | samples | time (ms) | x dense Eigen LS | x lm_l2 | error (m) | iterations |",
-          "|---|---|---|---|---|---|---|"]
-    for size in sorted(by_size):
-        rows = by_size[size]
+    w.writerow(["solver", "samples", "outlier_pct", "time_ms", "x_eigen_dense_ls", "x_lm_l2", "error_m", "iterations"])
+    md = ["| solver | samples | outliers | time (ms) | x dense Eigen LS | x lm_l2 | error (m) | iterations |",
+          "|---|---|---|---|---|---|---|---|"]
+    for outliers, size in sorted(by_data):
+        rows = by_data[(outliers, size)]
         base = milliseconds(rows["eigen_dense_ls (baseline)"])
         l2 = milliseconds(rows["lm_l2"])
         for solver, b in rows.items():
             t = milliseconds(b)
             iterations = int(b["solver_iterations"]) if "solver_iterations" in b else ""  # none for the baseline
-            fields = [solver, size, f"{t:.4g}", f"{t / base:.3g}", f"{t / l2:.3g}", f"{b['error_m']:.3g}", iterations]
+            fields = [solver, size, outliers, f"{t:.4g}", f"{t / base:.3g}", f"{t / l2:.3g}", f"{b['error_m']:.3g}",
+                      iterations]
             w.writerow(fields)
-            md.append("| " + " | ".join(str(x) for x in fields) + " |")
+            md.append("| " + " | ".join(str(x) for x in fields[:2]) + f" | {outliers}% | " +
+                      " | ".join(str(x) for x in fields[3:]) + " |")
 with open(os.path.join(folder, "solvers.md"), "w") as f:
-    f.write("Every registered solver on the same samples (a pass by a wall anchor with 5% NLOS outliers, "
-            "registry/bench/bench_compare.cpp); times are medians, ratios within this run.\n\n")
+    f.write("Every registered solver and both RANSAC schemes on the same samples (a pass by a wall anchor with "
+            "5, 10 and 20% NLOS outliers, registry/bench/bench_compare.cpp); times are medians, ratios within this "
+            "run.\n\n")
     f.write("\n".join(md) + "\n")
 
 # The per-sample costs of the other programs.

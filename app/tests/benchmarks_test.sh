@@ -11,8 +11,12 @@ bash "$source_dir/scripts/benchmarks.sh" --quick --build "$build_dir" --out "$wo
 for file in solvers.csv solvers.md micro.csv table1_threads.csv machine.md; do
   [ -s "$work/benchmarks/$file" ] || { echo "missing $file"; exit 1; }
 done
-for solver in "eigen_dense_ls (baseline)" ls_single ls_double lm_l2 lm_huber lm_cauchy lm_adaptive nlopt:LN_BOBYQA; do
-  [ "$(grep -c "^$solver,10000," "$work/benchmarks/solvers.csv")" = 1 ] || { echo "no $solver at 10000 samples"; exit 1; }
+for solver in "eigen_dense_ls (baseline)" ls_single ls_double lm_l2 lm_huber lm_cauchy lm_adaptive nlopt:LN_BOBYQA \
+  "ransac_minimal(lm_adaptive)" "ransac_full_solve(lm_adaptive)"; do
+  for outliers in 5 10 20; do
+    [ "$(grep -cF "$solver,10000,$outliers," "$work/benchmarks/solvers.csv")" = 1 ] ||
+      { echo "no $solver at 10000 samples and $outliers% outliers"; exit 1; }
+  done
 done
 grep -q "^bench_pdop,BM_ClosestPointPdopPerSample/1000000," "$work/benchmarks/micro.csv" || { echo "no PDOP row"; exit 1; }
 [ "$(wc -l <"$work/benchmarks/table1_threads.csv")" = 3 ] || { echo "table1_threads.csv: expected 2 rows"; exit 1; }

@@ -46,7 +46,8 @@ expect_exit 2 "replay_trace_refuses_an_existing_file_without_overwrite" "exists;
 
 # --- Impossible settings and sizes: refused before any work --------------------------------------
 expect_exit 2 "ransac_with_no_possible_clean_subset" "key 'estimator.filter.ransac.subset_size'" \
-  "$bin" run "$dir/small.yaml" --set estimator.filter.ransac.subset_size=200 --set estimator.filter.ransac.outlier_fraction=0.99 --out "$dir/x"
+  "$bin" run "$dir/small.yaml" --set estimator.filter.ransac.scheme=full_solve --set estimator.filter.ransac.subset_size=200 \
+  --set estimator.filter.ransac.outlier_fraction=0.99 --out "$dir/x"
 expect_exit 2 "outlier_probability_beyond_what_bursts_can_produce" "must be <= L/(L+1)" \
   "$bin" run "$dir/small.yaml" --set scenario.ranging.outlier_probability=0.99 --out "$dir/x"
 expect_exit 2 "retry_growth_that_would_overflow" "key 'estimator.trigger.retry_growth': must be in (1, 100]" \

@@ -103,10 +103,14 @@ void Filter(V& v, registry::FilterConfig& o, const registry::Components& parts) 
   v.Integer("reseed_after_rejections", o.consistency.reseed_after_rejections);
   v.Check(o.consistency);
   v.Section("ransac", [&](auto& r) {
+    r.Choice("scheme", o.ransac.scheme, estimator::ParseRansacScheme, [](auto m) { return estimator::ToString(m); },
+             "minimal, full_solve");
     r.Number("success_probability", o.ransac.success_probability);
     r.Integer("subset_size", o.ransac.subset_size);
     r.Number("outlier_fraction", o.ransac.outlier_fraction);
     r.Number("inlier_threshold_m", o.ransac.inlier_threshold_m);
+    r.Integer("min_subsets", o.ransac.min_subsets);
+    r.Integer("max_subsets", o.ransac.max_subsets);
     r.Check(o.ransac);
   });
 }

@@ -117,7 +117,7 @@ TEST(Config, CrossFieldChecksNameTheKeyOrTheSection) {
   EXPECT_EQ(ErrorFor("estimator:\n  height_prior: {enabled: true, sigma_m: 0.2, from_reference: true, offset_m: -1}\n"
                      "  trigger: {horizontal_threshold: 0.8}\n  triggers: [hdop_closest_point]\n"),
             "");
-  error = ErrorFor("estimator:\n  filter: {ransac: {subset_size: 200, outlier_fraction: 0.99}}\n");
+  error = ErrorFor("estimator:\n  filter: {ransac: {scheme: full_solve, subset_size: 200, outlier_fraction: 0.99}}\n");
   EXPECT_NE(error.find("key 'estimator.filter.ransac.subset_size'"), std::string::npos) << error;
 }
 

@@ -9,6 +9,7 @@
 
 #include <Eigen/Dense>
 
+#include "anchorbench/estimator/ransac_solver.hpp"
 #include "anchorbench/registry/components.hpp"
 #include "bench_data.hpp"
 
@@ -34,8 +35,14 @@ Eigen::Vector3d DenseEigenLs(const std::vector<Eigen::Vector3d>& p, const std::v
   return a.colPivHouseholderQr().solve(b);
 }
 
+// Benchmark arguments: N samples, the outlier share in percent.
+anchorbench::bench::PassByAnchor Data(const benchmark::State& state) {
+  return anchorbench::bench::MakePassByAnchor(static_cast<std::size_t>(state.range(0)),
+                                              static_cast<double>(state.range(1)) / 100.0);
+}
+
 void BM_EigenDenseLs(benchmark::State& state) {
-  const auto data = anchorbench::bench::MakePassByAnchor(static_cast<std::size_t>(state.range(0)));
+  const auto data = Data(state);
   Eigen::Vector3d p_world_anchor = Eigen::Vector3d::Zero();
   for (auto _ : state) {
     p_world_anchor = DenseEigenLs(data.p_world_tag, data.range_m);
@@ -44,29 +51,59 @@ void BM_EigenDenseLs(benchmark::State& state) {
   state.counters["error_m"] = (p_world_anchor - data.p_world_anchor).norm();
 }
 
-void BM_Solver(benchmark::State& state, const std::string& name) {
-  const auto data = anchorbench::bench::MakePassByAnchor(static_cast<std::size_t>(state.range(0)));
-  registry::Components components;
-  registry::RegisterBuiltins(components);
+std::shared_ptr<const est::Solver> Registered(const std::string& name, std::string* why) {
+  static registry::Components components = [] {
+    registry::Components c;
+    registry::RegisterBuiltins(c);
+    return c;
+  }();
   registry::SolverContext context;
   context.tables = components.tables.get();
-  std::string why;
-  const std::unique_ptr<est::Solver> solver = components.solvers.Create(name, context, &why);
-  if (!solver) {
-    state.SkipWithError(why.c_str());
-    return;
-  }
+  return components.solvers.Create(name, context, why);
+}
+
+void Measure(benchmark::State& state, const est::Solver& solver) {
+  const auto data = Data(state);
   est::SolveResult result;
   for (auto _ : state) {
-    result = solver->Solve(data.p_world_tag, data.range_m);
+    result = solver.Solve(data.p_world_tag, data.range_m);
     benchmark::DoNotOptimize(result);
   }
   state.counters["error_m"] = (result.p_world_anchor - data.p_world_anchor).norm();
   state.counters["solver_iterations"] = result.iterations;
 }
 
-// The sizes of bench_solver: a pass at 10 Hz (600), longer logs, and 10^4 (the buffer's scale).
-void Sizes(benchmark::internal::Benchmark* b) { b->Arg(600)->Arg(2400)->Arg(10000)->Unit(benchmark::kMillisecond); }
+void BM_Solver(benchmark::State& state, const std::string& name) {
+  std::string why;
+  const auto solver = Registered(name, &why);
+  if (!solver) {
+    state.SkipWithError(why.c_str());
+    return;
+  }
+  Measure(state, *solver);
+}
+
+// RANSAC around lm_adaptive, in each scheme: ours (the default) and the Table II baseline
+// (p = 0.95, s = 60, e = 0.1: 1666 subsets, each solved in full).
+void BM_Ransac(benchmark::State& state, est::RansacScheme scheme) {
+  est::RansacOptions options;
+  options.scheme = scheme;
+  if (scheme == est::RansacScheme::kFullSolve) {
+    options.success_probability = 0.95;
+    options.subset_size = 60;
+  }
+  std::string why;
+  const est::RansacSolver ransac(options, Registered("lm_adaptive", &why), 1);
+  Measure(state, ransac);
+}
+
+// A pass at 10 Hz (600), longer logs, and 10^4 (the buffer's scale), each at 5, 10 and 20% outliers.
+void Sizes(benchmark::internal::Benchmark* b) {
+  for (const int outlier_percent : {5, 10, 20}) {
+    for (const int n : {600, 2400, 10000}) b->Args({n, outlier_percent});
+  }
+  b->ArgNames({"n", "outlier_percent"})->Unit(benchmark::kMillisecond);
+}
 
 const int kRegistered = [] {
   BENCHMARK(BM_EigenDenseLs)->Apply(Sizes);
@@ -74,6 +111,10 @@ const int kRegistered = [] {
                            "nlopt:LN_BOBYQA"}) {
     benchmark::RegisterBenchmark((std::string("BM_Solver/") + name).c_str(), BM_Solver, std::string(name))
         ->Apply(Sizes);
+  }
+  for (const auto scheme : {est::RansacScheme::kMinimal, est::RansacScheme::kFullSolve}) {
+    const std::string name = "BM_Solver/ransac_" + std::string(est::ToString(scheme)) + "(lm_adaptive)";
+    benchmark::RegisterBenchmark(name.c_str(), BM_Ransac, scheme)->Apply(Sizes);
   }
   return 0;
 }();

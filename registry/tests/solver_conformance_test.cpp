@@ -19,6 +19,7 @@ using namespace estimator;  // the solvers under test
 
 // RANSAC is a filter stage, not a registered solver; it wraps one, and must conform like one.
 constexpr const char* kRansacAroundLmL2 = "ransac(lm_l2)";
+constexpr const char* kFullSolveRansacAroundLmL2 = "ransac_full_solve(lm_l2)";
 
 std::vector<std::string> SolverNames() {
   std::vector<std::string> names;
@@ -29,11 +30,17 @@ std::vector<std::string> SolverNames() {
     names.push_back(std::string("nlopt:") + algorithm);
   }
   names.push_back(kRansacAroundLmL2);
+  names.push_back(kFullSolveRansacAroundLmL2);
   return names;
 }
 
 std::unique_ptr<Solver> Make(const std::string& name) {
   if (name == kRansacAroundLmL2) return std::make_unique<RansacSolver>(RansacOptions{}, Make("lm_l2"), 42);
+  if (name == kFullSolveRansacAroundLmL2) {
+    RansacOptions options;
+    options.scheme = RansacScheme::kFullSolve;
+    return std::make_unique<RansacSolver>(options, Make("lm_l2"), 42);
+  }
   AnchorSolverOptions options;
   options.nls.kernel_scale_m = 0.1;
   std::string why;
@@ -101,7 +108,19 @@ INSTANTIATE_TEST_SUITE_P(AllRegistered, SolverConformance, ::testing::ValuesIn(S
 // e = 0.1 give 1666 (its printed formula omits the log in the denominator, its number does not).
 TEST(Ransac, IterationsOfThePapersTableII) {
   RansacOptions options;
+  options.scheme = RansacScheme::kFullSolve;
+  options.success_probability = 0.95;
+  options.subset_size = 60;
   EXPECT_EQ(options.Iterations(), 1666);
+}
+
+// The adaptive count: log(1 - p) / log(1 - w^s), at least one draw, at most the cap.
+TEST(Ransac, AdaptiveDrawsFollowTheInlierShare) {
+  EXPECT_EQ(AdaptiveDraws(1.0, 6, 0.99, 2000), 1);
+  EXPECT_EQ(AdaptiveDraws(0.9, 6, 0.99, 2000), 7);    // 0.9^6 = 0.531: log(0.01) / log(0.469) = 6.09
+  EXPECT_EQ(AdaptiveDraws(0.5, 6, 0.99, 2000), 293);  // 0.5^6 = 1/64: log(0.01) / log(63/64) = 292.4
+  EXPECT_EQ(AdaptiveDraws(0.0, 6, 0.99, 2000), 2000);
+  EXPECT_EQ(AdaptiveDraws(0.01, 6, 0.99, 2000), 2000);
 }
 
 TEST(SolverRegistry, UnknownNamesAreRefusedWithAReason) {
