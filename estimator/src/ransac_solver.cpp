@@ -104,17 +104,23 @@ class Scorer {
   Scorer(std::span<const Eigen::Vector3d> p, std::span<const double> d, double threshold_m)
       : samples_(p, d), threshold_m_(threshold_m), threshold_squared_(threshold_m * threshold_m), inlier_(d.size()) {}
 
-  // MSAC's score, sum min(r_k^2, t^2) (Torr and Zisserman 2000), or +infinity as soon as the sum
-  // so far reaches `to_beat`: such a hypothesis cannot win.
-  double Score(const Eigen::Vector4d& theta, double to_beat) {
+  // MSAC's score, sum min(r_k^2, t^2) (Torr and Zisserman 2000), with the count of |r_k| < t
+  // from the same pass; or a score of +infinity as soon as the sum so far reaches `to_beat`: such
+  // a hypothesis cannot win.
+  struct Scored {
     double score = 0.0;
+    std::size_t inliers = 0;
+  };
+  Scored Score(const Eigen::Vector4d& theta, double to_beat) {
+    Scored scored;
     for (Eigen::Index start = 0; start < samples_.size(); start += kBlock) {
       const Eigen::Index size = std::min<Eigen::Index>(kBlock, samples_.size() - start);
       residuals_.At(samples_, start, size, theta, false);
-      score += residuals_.r.square().min(threshold_squared_).sum();
-      if (score >= to_beat) return std::numeric_limits<double>::infinity();
+      scored.score += residuals_.r.square().min(threshold_squared_).sum();
+      if (scored.score >= to_beat) return {std::numeric_limits<double>::infinity(), 0};
+      scored.inliers += static_cast<std::size_t>((residuals_.r.abs() < threshold_m_).count());
     }
-    return score;
+    return scored;
   }
 
   // Marks the samples with |r_k| < t at theta; returns how many.
@@ -194,11 +200,11 @@ Hypothesis BestHypothesis(const RansacOptions& options, std::span<const Eigen::V
     const SolveResult candidate = SolveDoubleDifferenceLs(drawer.p(), drawer.d());
     if (!Succeeded(candidate.status) || !candidate.p_world_anchor.allFinite()) continue;
     const Eigen::Vector4d theta = ThetaOf(candidate);
-    const double score = scorer.Score(theta, best.score);
-    if (!(score < best.score)) continue;
+    const Scorer::Scored scored = scorer.Score(theta, best.score);
+    if (!(scored.score < best.score)) continue;
     best.theta = theta;
-    best.score = score;
-    const double share = static_cast<double>(scorer.Consensus(theta)) / static_cast<double>(d.size());
+    best.score = scored.score;
+    const double share = static_cast<double>(scored.inliers) / static_cast<double>(d.size());
     required = AdaptiveDraws(share, options.subset_size, options.success_probability, options.max_subsets);
   }
   return best;
