@@ -164,17 +164,22 @@ CertifiedTrigger::Verdict CertifiedTrigger::RuleOutAlternatives(std::span<const 
   return Verdict::kRuledOut;
 }
 
-double CertifiedTrigger::LargestVariance(std::span<const Eigen::Vector3d> p_world_tag, std::span<const int> tag_id,
-                                         const Eigen::Vector3d& point, double noise_variance) const {
-  // The noise part: the (p_A, gamma) block of the information's inverse, with each tag's offset
-  // among the unknowns where they are estimated (tag_biases.hpp).
+std::vector<int> CertifiedTrigger::EstimatedTags(std::span<const int> tag_id, std::size_t samples) const {
   std::vector<int> tags;
-  if (tag_biases_.estimate && tag_id.size() == p_world_tag.size()) {
+  if (tag_biases_.estimate && tag_id.size() == samples) {
     for (const int tag : tag_id) {
       if (std::find(tags.begin(), tags.end(), tag) == tags.end()) tags.push_back(tag);
     }
   }
   if (tags.empty()) tags.push_back(0);
+  return tags;
+}
+
+double CertifiedTrigger::LargestVariance(std::span<const Eigen::Vector3d> p_world_tag, std::span<const int> tag_id,
+                                         const std::vector<int>& tags, const Eigen::Vector3d& point,
+                                         double noise_variance) const {
+  // The noise part: the (p_A, gamma) block of the information's inverse, with each tag's offset
+  // among the unknowns where they are estimated (tag_biases.hpp).
   const Eigen::MatrixXd information =
       TagInformation(p_world_tag, tags.size() > 1 ? tag_id : std::span<const int>(), tags, point);
   Eigen::Matrix4d noise;
@@ -205,12 +210,13 @@ bool CertifiedTrigger::RegionWithinTarget(const TriggerInput& in, const SolveRes
                                   covariance_.model_error_m);
   const double factor =
       covariance_.correlated_noise ? CorrelationFactor(p_world_tag, range_m, estimate.p_world_anchor, estimate.bias_m) : 1.0;
+  const std::vector<int> tags = EstimatedTags(in.tag_id, p_world_tag.size());
   for (int i = 0; i < 3; ++i) {
     const Eigen::Vector3d half_axis =
         std::sqrt(region_chi2_ * std::max(axes.eigenvalues()(i), 0.0)) * axes.eigenvectors().col(i);
     for (const double side : {-1.0, 1.0}) {
       const Eigen::Vector3d end = estimate.p_world_anchor + side * half_axis;
-      if (!(LargestVariance(p_world_tag, in.tag_id, end, factor * scale_m * scale_m) <= limit)) return false;
+      if (!(LargestVariance(p_world_tag, in.tag_id, tags, end, factor * scale_m * scale_m) <= limit)) return false;
     }
   }
   return true;

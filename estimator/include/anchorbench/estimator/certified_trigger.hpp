@@ -90,9 +90,12 @@ class CertifiedTrigger : public InitTrigger {
   // 2. and 3.: the region, and the covariance from the ends of its axes, within D.
   bool RegionWithinTarget(const TriggerInput& in, const SolveResult& estimate,
                           const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d>& axes) const;
-  // The largest variance of the covariance seen from `point`; +infinity where it is singular.
+  // The tags whose offsets are among the unknowns ({0}: one bias for all).
+  std::vector<int> EstimatedTags(std::span<const int> tag_id, std::size_t samples) const;
+  // The largest variance of the covariance seen from `point`, with `tags` as EstimatedTags gave
+  // them; +infinity where it is singular.
   double LargestVariance(std::span<const Eigen::Vector3d> p_world_tag, std::span<const int> tag_id,
-                         const Eigen::Vector3d& point, double noise_variance) const;
+                         const std::vector<int>& tags, const Eigen::Vector3d& point, double noise_variance) const;
 
   std::shared_ptr<const Solver> solver_;  // the anchor's
   NlsSolver refine_;                      // L2, for the mirror's basin
