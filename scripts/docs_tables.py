@@ -410,10 +410,15 @@ def ransac_cost():
             f"(`scheme: minimal`), costs ~{minimal:.0f}x the check there.")
 
 
+def solver_rows():
+    """{(solver, N, outlier percent): row} of results/benchmarks/solvers.csv (bench_compare)."""
+    return {(r["solver"], int(r["samples"]), int(r["outlier_pct"])): r for r in read("benchmarks/solvers.csv")}
+
+
 def ransac_speed():
     """Both RANSAC schemes beside lm_adaptive alone, per N and outlier share, from
     results/benchmarks/solvers.csv (bench_compare)."""
-    rows = {(r["solver"], int(r["samples"]), int(r["outlier_pct"])): r for r in read("benchmarks/solvers.csv")}
+    rows = solver_rows()
     names = [("lm_adaptive", "lm_adaptive alone"), ("ransac_minimal(lm_adaptive)", "RANSAC, minimal (ours)"),
              ("ransac_full_solve(lm_adaptive)", "RANSAC, full_solve (Table II)")]
     out = []
@@ -550,7 +555,7 @@ def pdop_triggers_table():
 
 
 def performance_bullets():
-    solvers = {(r["solver"], int(r["samples"])): r for r in read("benchmarks/solvers.csv") if r["outlier_pct"] == "5"}
+    solvers = {(solver, n): r for (solver, n, outliers), r in solver_rows().items() if outliers == 5}
 
     def x(solver, field="x_eigen_dense_ls"):
         return " / ".join(f"{float(solvers[(solver, n)][field]):.3g}" for n in (600, 10000)) + "x"
@@ -586,7 +591,7 @@ def performance_bullets():
 
 
 def ransac_bullet():
-    rows = {(r["solver"], int(r["samples"]), int(r["outlier_pct"])): r for r in read("benchmarks/solvers.csv")}
+    rows = solver_rows()
     cells = [(n, o) for n in (600, 2400, 10000) for o in (5, 10, 20)]
 
     def span(solver, field):
