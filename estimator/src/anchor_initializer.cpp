@@ -43,7 +43,7 @@ AnchorInitializer::AnchorInitializer(int anchor_id, const InitializerOptions& op
   if (options_.height_check.enabled) solver_ = std::make_shared<HeightCheckedSolver>(solver_, options_.height_check);
 }
 
-InitEvent AnchorInitializer::SolveNow(double t_s, double pdop) {
+InitEvent AnchorInitializer::SolveNow(double t_s, double pdop) const {
   InitEvent event;
   event.anchor_id = anchor_id_;
   event.t_s = t_s;
@@ -107,7 +107,7 @@ void AnchorInitializer::Admit(const Accepted& sample) {
   input.tag_id = tag_id_;
   input.pdop = sample.pdop;
   input.eligible = n_admitted_ >= static_cast<std::size_t>(options_.min_samples) && n_admitted_ >= next_attempt_size_;
-  if (trigger_->Fire(input) && input.eligible) pending_ = Pending{sample.t_s, sample.pdop};
+  if (trigger_->Fire(input) && input.eligible) pending_ = input;
 }
 
 FeedResult AnchorInitializer::Feed(const RangeSample& sample) {
@@ -136,15 +136,30 @@ FeedResult AnchorInitializer::Feed(const RangeSample& sample) {
 
 std::optional<InitEvent> AnchorInitializer::RunPendingSolve() {
   if (!pending_) return std::nullopt;
-  InitEvent event = SolveNow(pending_->t_s, pending_->pdop);
+  return CompletePendingSolve(WorkPendingSolve());
+}
+
+PendingWork AnchorInitializer::WorkPendingSolve() {
+  PendingWork work;
+  if (!pending_ || !trigger_->Evaluate(*pending_)) return work;
+  work.solved = true;
+  work.event = SolveNow(pending_->t_s, pending_->pdop);
+  return work;
+}
+
+std::optional<InitEvent> AnchorInitializer::CompletePendingSolve(const PendingWork& work) {
+  if (!pending_) return std::nullopt;
   pending_.reset();
-  if (Succeeded(event.solve.status)) {
+  if (work.solved && Succeeded(work.event.solve.status)) {
     initialized_ = true;
     queued_.clear();
-    return event;
+    return work.event;
   }
-  last_failed_solve_ = event.solve;
-  next_attempt_size_ = static_cast<std::size_t>(std::ceil(static_cast<double>(n_admitted_) * options_.retry_growth));
+  if (work.solved) {  // failed: wait for more data before the next attempt
+    last_failed_solve_ = work.event.solve;
+    next_attempt_size_ =
+        static_cast<std::size_t>(std::ceil(static_cast<double>(n_admitted_) * options_.retry_growth));
+  }
   // Catch up on what arrived while the solve was pending (nothing, when solving inline).
   while (!queued_.empty() && !pending_) {
     Admit(queued_.front());

@@ -222,8 +222,7 @@ bool CertifiedTrigger::RegionWithinTarget(const TriggerInput& in, const SolveRes
   return true;
 }
 
-bool CertifiedTrigger::Fire(const TriggerInput& in) {
-  if (!cadence_.Due(in)) return false;
+bool CertifiedTrigger::Evaluate(const TriggerInput& in) {
   // Every test below on the ranges as the solve fitted them: less each tag's offset.
   TriggerInput fitted = in;
   SolveResult estimate =

@@ -139,6 +139,7 @@ bool NlsOptions::IsValid(std::string* why) const {
   if (!(step_tolerance_m > 0.0) || !std::isfinite(step_tolerance_m)) return fail("step_tolerance_m must be > 0");
   if (!(alpha_tolerance > 0.0) || !std::isfinite(alpha_tolerance)) return fail("alpha_tolerance must be > 0");
   if (!(initial_damping >= 0.0) || !std::isfinite(initial_damping)) return fail("initial_damping must be >= 0");
+  if (max_passes < 0) return fail("max_passes must be >= 0 (0: no budget)");
   return true;
 }
 
@@ -147,14 +148,22 @@ NlsSolver::NlsSolver(const NlsOptions& options, std::shared_ptr<const LogPartiti
   if (options_.kernel != KernelMode::kAdaptive) {
     table_.reset();
   } else if (!table_ || table_->truncation() != options_.truncation || table_->alpha_min() != options_.alpha_min) {
-    table_ = std::make_shared<const LogPartitionTable>(options_.truncation, options_.alpha_min);
+    table_ = options_.truncation == kDefaultTruncation && options_.alpha_min == kDefaultAlphaMin
+                 ? DefaultLogPartitionTable()
+                 : std::make_shared<const LogPartitionTable>(options_.truncation, options_.alpha_min);
   }
 }
 
 NlsSolver::Stage NlsSolver::Refine(const internal::SampleArrays& samples, const Eigen::Vector4d& theta_initial,
                                    std::optional<double> fixed_alpha, double step_tolerance_m,
-                                   const std::optional<HeightPrior>& height_prior) const {
-  using internal::Pass;
+                                   const std::optional<HeightPrior>& height_prior, long* passes_left) const {
+  // Every pass over the samples spends the budget; none left: the solve stops where it is.
+  const auto Pass = [passes_left](const internal::SampleArrays& all, const Vector4& at, double scale_m,
+                                   const internal::PassRequest& request) {
+    if (*passes_left > 0) --*passes_left;
+    return internal::Pass(all, at, scale_m, request);
+  };
+  const auto spent = [passes_left] { return *passes_left == 0; };
   const bool adaptive = !fixed_alpha.has_value();
   const double c = options_.kernel_scale_m;
   const PriorTerm prior(height_prior, c);
@@ -175,6 +184,10 @@ NlsSolver::Stage NlsSolver::Refine(const internal::SampleArrays& samples, const 
   internal::PassResult eq = Pass(samples, stage.theta, c, {stage.alpha, true, true, adaptive ? &*selector : nullptr});
   while (stage.iterations < options_.max_iterations) {
     const double previous_alpha = stage.alpha;
+    if (spent()) {
+      stage.status = SolveStatus::kBudgetSpent;
+      return stage;
+    }
     if (adaptive) {  // Eq. (12): the alpha step of the alternation
       const double alpha = selector->Select(stage.iterations == 0 ? std::nullopt : std::optional<double>(stage.alpha));
       if (stage.iterations == 0 || std::abs(alpha - stage.alpha) >= options_.alpha_tolerance) {
@@ -193,7 +206,7 @@ NlsSolver::Stage NlsSolver::Refine(const internal::SampleArrays& samples, const 
     const double cost = eq.cost + prior.Cost(stage.theta);
     bool accepted = false;
     Vector4 delta = Vector4::Zero();
-    for (int attempt = 0; attempt < kMaxDampingIncreases && !accepted; ++attempt) {
+    for (int attempt = 0; attempt < kMaxDampingIncreases && !accepted && !spent(); ++attempt) {
       Eigen::Matrix4d damped = information;
       damped.diagonal() += damping * information.diagonal().cwiseMax(kMinDiagonal);
       delta = damped.ldlt().solve(-gradient);
@@ -211,6 +224,10 @@ NlsSolver::Stage NlsSolver::Refine(const internal::SampleArrays& samples, const 
       }
     }
     ++stage.iterations;
+    if (!accepted && spent()) {
+      stage.status = SolveStatus::kBudgetSpent;
+      return stage;
+    }
     if (!accepted) {
       // No step lowers the cost: theta is a minimum for this alpha.
       stage.status = SolveStatus::kConverged;
@@ -240,21 +257,22 @@ SolveResult NlsSolver::Solve(std::span<const Eigen::Vector3d> p_world_tag, std::
   theta << p_world_anchor_initial, bias_initial_m;
   Stage stage{theta, 2.0, 0, SolveStatus::kConverged};
   const internal::SampleArrays samples(p_world_tag, range_m);
+  long passes_left = options_.max_passes > 0 ? options_.max_passes : -1;
   if (options_.kernel == KernelMode::kL2) {
-    stage = Refine(samples, theta, 2.0, options_.step_tolerance_m, height_prior);
+    stage = Refine(samples, theta, 2.0, options_.step_tolerance_m, height_prior, &passes_left);
   } else {
     if (options_.l2_warm_start) {  // only into the basin: 10x the step tolerance
-      stage = Refine(samples, theta, 2.0, 10.0 * options_.step_tolerance_m, height_prior);
+      stage = Refine(samples, theta, 2.0, 10.0 * options_.step_tolerance_m, height_prior, &passes_left);
     }
-    if (stage.status != SolveStatus::kNumericalFailure) {
+    if (stage.status != SolveStatus::kNumericalFailure && stage.status != SolveStatus::kBudgetSpent) {
       const int used = stage.iterations;
       const std::optional<double> alpha =
           options_.kernel == KernelMode::kFixed ? std::optional<double>(options_.fixed_alpha) : std::nullopt;
-      stage = Refine(samples, stage.theta, alpha, options_.step_tolerance_m, height_prior);
+      stage = Refine(samples, stage.theta, alpha, options_.step_tolerance_m, height_prior, &passes_left);
       stage.iterations += used;
     }
   }
-  if (stage.status == SolveStatus::kNumericalFailure) {
+  if (stage.status == SolveStatus::kNumericalFailure || stage.status == SolveStatus::kBudgetSpent) {
     result.status = stage.status;
     return result;
   }

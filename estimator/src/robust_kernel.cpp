@@ -148,7 +148,14 @@ LogPartitionTable::LogPartitionTable(double truncation, double alpha_min)
   }
 }
 
+std::shared_ptr<const LogPartitionTable> DefaultLogPartitionTable() {
+  static const std::shared_ptr<const LogPartitionTable> table =
+      std::make_shared<const LogPartitionTable>(kDefaultTruncation, kDefaultAlphaMin);
+  return table;
+}
+
 std::shared_ptr<const LogPartitionTable> LogPartitionTables::Get(double truncation, double alpha_min) {
+  if (truncation == kDefaultTruncation && alpha_min == kDefaultAlphaMin) return DefaultLogPartitionTable();
   std::lock_guard<std::mutex> lock(mutex_);
   for (const auto& table : tables_) {
     if (table->truncation() == truncation && table->alpha_min() == alpha_min) return table;

@@ -11,6 +11,7 @@ std::string_view ToString(SolveStatus status) {
     case SolveStatus::kDegenerateGeometry: return "degenerate_geometry";
     case SolveStatus::kNumericalFailure: return "numerical_failure";
     case SolveStatus::kHeightUnobservable: return "height_unobservable";
+    case SolveStatus::kBudgetSpent: return "budget_spent";
   }
   return "unknown";
 }

@@ -27,8 +27,7 @@ bool TriggerOptions::IsValid(std::string* why) const {
   return true;
 }
 
-bool EstimatePdopTrigger::Fire(const TriggerInput& in) {
-  if (!cadence_.Due(in)) return false;
+bool EstimatePdopTrigger::Evaluate(const TriggerInput& in) {
   const SolveResult estimate = solver_->Solve(in.p_world_tag, in.range_m);
   return Succeeded(estimate.status) && GeometryPdop(in.p_world_tag, in.range_m, estimate.p_world_anchor) < threshold_;
 }
@@ -47,8 +46,7 @@ double WorstBiasAwareDop(std::span<const Eigen::Vector3d> p_world_tag, const Sol
   return worst;
 }
 
-bool ConfidenceRegionDopTrigger::Fire(const TriggerInput& in) {
-  if (!cadence_.Due(in)) return false;
+bool ConfidenceRegionDopTrigger::Evaluate(const TriggerInput& in) {
   const SolveResult estimate = solver_->Solve(in.p_world_tag, in.range_m);
   return Succeeded(estimate.status) && WorstBiasAwareDop(in.p_world_tag, estimate, sigmas_) < threshold_;
 }

@@ -135,6 +135,19 @@ TEST(AnchorInitializer, TheBufferStaysWithinItsCap) {
   }
 }
 
+// A solve whose budget runs out is a failed solve: the anchor is not initialized on it, the
+// failure is kept, and the initializer waits for more data before it tries again.
+TEST(AnchorInitializer, ASpentSolveBudgetIsAFailedSolve) {
+  AnchorSolverOptions solver;
+  solver.nls.max_passes = 1;
+  AnchorInitializer initializer(7, InitializerOptions{}, std::make_unique<ConsistencyFilter>(),
+                                std::make_unique<SampleCountTrigger>(25), std::make_shared<AnchorSolver>(solver));
+  for (const RangeSample& s : PassBy(Eigen::Vector3d(0, 4, 3), 0.05, 8)) EXPECT_FALSE(initializer.Feed(s).event);
+  EXPECT_FALSE(initializer.initialized());
+  ASSERT_TRUE(initializer.last_failed_solve().has_value());
+  EXPECT_EQ(initializer.last_failed_solve()->status, SolveStatus::kBudgetSpent);
+}
+
 TEST(InitializerOptions, ValidationNamesTheProblem) {
   InitializerOptions options;
   std::string why;

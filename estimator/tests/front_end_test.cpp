@@ -1,13 +1,13 @@
 #include "anchorbench/estimator/front_end.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <tuple>
 
 #include <gtest/gtest.h>
 
 #include "anchorbench/estimator/ransac_solver.hpp"
 #include "anchorbench/estimator/triggers.hpp"
-#include "anchorbench/sim/scenario.hpp"
 #include "anchorbench/testing/test_data.hpp"
 
 namespace anchorbench::estimator {
@@ -48,25 +48,39 @@ std::vector<EventKey> Keys(const std::vector<FrontEndEvent>& events) {
   return keys;
 }
 
+// Eight anchors around a hall, a tag on a loop through it at 20 Hz for 120 s, 5% outliers.
+std::vector<RangeSample> HallRanges() {
+  auto rng = testing::TestStream(3);
+  std::vector<Eigen::Vector3d> p_world_anchor;
+  for (int a = 0; a < 8; ++a) {
+    const double angle = 0.785 * a;
+    p_world_anchor.emplace_back(15.0 * std::cos(angle), 10.0 * std::sin(angle), 2.0 + 0.5 * (a % 3));
+  }
+  std::vector<RangeSample> samples;
+  for (int k = 0; k < 2400; ++k) {
+    const double t_s = 0.05 * k;
+    const Eigen::Vector3d p(10.0 * std::sin(0.05 * t_s), 6.0 * std::sin(0.1 * t_s), 1.0 + 0.3 * std::sin(0.2 * t_s));
+    const int anchor = k % 8;
+    double range_m = (p - p_world_anchor[anchor]).norm() + 0.1 + 0.05 * rng.Normal();
+    if (rng.Bernoulli(0.05)) range_m += rng.Uniform(0.5, 5.0);
+    samples.push_back({t_s, 0, anchor + 1, range_m, p});
+  }
+  return samples;
+}
+
 TEST(FrontEnd, DeferredSolvesGiveTheInlineEventsForEveryAnchorAndChain) {
-  sim::ScenarioOptions options;
-  options.environment = sim::EnvironmentKind::kHall;
-  options.hall.num_anchors = 8;
-  options.trajectory.hall_duration_s = 120.0;
-  options.ranging.outlier_probability = 0.05;
-  const sim::Scenario scenario = sim::GenerateScenario(options, 3, 0);
+  const std::vector<RangeSample> samples = HallRanges();
   FrontEnd inline_solves(ThreeChains());
   FrontEndOptions defer;
   defer.defer_solves = true;
   FrontEnd deferred(ThreeChains(), defer);
   std::size_t fed = 0;
-  for (const sim::SimRange& r : scenario.ranges) {
-    const RangeSample sample{r.t_s, r.tag_id, r.anchor_id, r.range_m, scenario.p_world_tag_reported[0][r.epoch]};
+  for (const RangeSample& sample : samples) {
     inline_solves.AddSample(sample);
     deferred.AddSample(sample);
     if (++fed % 97 == 0) deferred.RunPendingSolves();  // as a navigation stack's idle loop would
   }
-  const double t_end_s = scenario.t_s.back();
+  const double t_end_s = samples.back().t_s;
   inline_solves.Finish(t_end_s);
   deferred.Finish(t_end_s);
   const auto expected = Keys(inline_solves.TakeEvents());

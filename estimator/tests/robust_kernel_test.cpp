@@ -6,6 +6,7 @@
 
 #include <gtest/gtest.h>
 
+#include "anchorbench/estimator/nls_solver.hpp"
 #include "anchorbench/testing/test_data.hpp"
 
 namespace anchorbench::estimator {
@@ -68,6 +69,24 @@ TEST(LogPartitionTable, InterpolationMatchesDirectIntegralOffGrid) {
   for (double alpha : {1.99, 1.234, 0.005, -0.777, -3.3333, -9.995}) {
     EXPECT_NEAR(table->LogZ(alpha), std::log(LogPartitionTable::IntegrateZ(alpha, 10.0)), 2e-5) << alpha;
   }
+}
+
+// Solvers with the default settings share one table without being handed it; other settings
+// build their own, and a table handed over for other settings is not used.
+TEST(LogPartitionTable, TheDefaultSettingsShareOneTable) {
+  const auto shared = DefaultLogPartitionTable();
+  EXPECT_EQ(shared, DefaultLogPartitionTable());
+  EXPECT_EQ(LogPartitionTables().Get(kDefaultTruncation, kDefaultAlphaMin), shared);
+  EXPECT_EQ(NlsSolver().table(), shared);
+  EXPECT_EQ(NlsSolver(NlsOptions{}, std::make_shared<const LogPartitionTable>(50.0, -10.0)).table(), shared);
+  NlsOptions other;
+  other.truncation = 20.0;
+  const NlsSolver own(other);
+  ASSERT_NE(own.table(), nullptr);
+  EXPECT_NE(own.table(), shared);
+  EXPECT_EQ(own.table()->truncation(), 20.0);
+  other.kernel = KernelMode::kL2;
+  EXPECT_EQ(NlsSolver(other).table(), nullptr);
 }
 
 std::vector<double> GaussianWithOutliers(int n, double outlier_fraction, std::uint64_t seed) {

@@ -2,19 +2,50 @@
 // callbacks would see it: a pose callback and a range callback, and an idle step that runs the
 // deferred solves outside the callbacks. Prints every initialization as it happens.
 //   online_front_end poses.csv ranges.csv
-// The estimator core is all this needs at run time: typed options, no names, no files.
+// It links the estimator core alone: typed options, no names, no files. The two CSVs (the
+// formats of `anchorbench simulate`, README "Formats") stand in for the topics; a robot's driver
+// would deliver the messages instead, so this reader checks only what it needs.
 #include <cmath>
 #include <cstdio>
+#include <fstream>
+#include <sstream>
+#include <stdexcept>
+#include <string>
 #include <vector>
 
 #include "anchorbench/estimator/front_end.hpp"
-#include "anchorbench/io/input_error.hpp"
-#include "anchorbench/io/recorded_data.hpp"
 
 namespace est = anchorbench::estimator;
-namespace io = anchorbench::io;
 
 namespace {
+
+// The rows of a CSV of `columns` numbers after its header line; a bad row names the file and line.
+std::vector<std::vector<double>> ReadRows(const char* path, std::size_t columns) {
+  std::ifstream in(path);
+  if (!in) throw std::runtime_error(std::string(path) + ": cannot open");
+  std::vector<std::vector<double>> rows;
+  std::string line;
+  for (int number = 1; std::getline(in, line); ++number) {
+    if (number == 1) continue;  // the header
+    std::vector<double> row;
+    std::stringstream cells(line);
+    for (std::string cell; std::getline(cells, cell, ',');) {
+      std::size_t used = 0;
+      try {
+        row.push_back(std::stod(cell, &used));
+      } catch (const std::exception&) {
+        used = 0;
+      }
+      if (used == 0 || !std::isfinite(row.back())) break;
+    }
+    if (row.size() != columns) {
+      throw std::runtime_error(std::string(path) + ":" + std::to_string(number) + ": expected " +
+                               std::to_string(columns) + " numbers");
+    }
+    rows.push_back(std::move(row));
+  }
+  return rows;
+}
 
 // What a navigation stack would hold: the front end, built once with the paper's chain per anchor.
 class AnchorInitNode {
@@ -26,14 +57,15 @@ class AnchorInitNode {
     return options;
   }
 
+  // The adaptive kernel's table is built here, once, not in the first range callback.
   AnchorInitNode()
-      : tables_(std::make_shared<est::LogPartitionTables>()),
+      : table_(est::DefaultLogPartitionTable()),
         front_end_(
             [this](int anchor_id) {
               est::PaperChainOptions options;
               options.filter.tau_m = 0.2;  // ~2 sigma_d for 0.1 m range noise
               std::vector<est::AnchorInitializer> chains;
-              chains.push_back(est::MakePaperInitializer(anchor_id, options, tables_->Get(10.0, -10.0)));
+              chains.push_back(est::MakePaperInitializer(anchor_id, options, table_));
               return chains;
             },
             Deferred()) {}
@@ -64,7 +96,7 @@ class AnchorInitNode {
                 std::sqrt(s.covariance.topLeftCorner<3, 3>().trace()), e.init.pdop_estimate, e.init.n_used);
   }
 
-  std::shared_ptr<est::LogPartitionTables> tables_;
+  std::shared_ptr<const est::LogPartitionTable> table_;
   est::FrontEnd front_end_;
 };
 
@@ -76,26 +108,26 @@ int main(int argc, char** argv) {
     return 2;
   }
   try {
-    const std::vector<io::PoseRecord> poses = io::LoadPoses(argv[1]);
-    const std::vector<io::RangeRecord> ranges = io::LoadRanges(argv[2]);
+    const std::vector<std::vector<double>> poses = ReadRows(argv[1], 5);   // t,tag_id,x,y,z
+    const std::vector<std::vector<double>> ranges = ReadRows(argv[2], 4);  // t,tag_id,anchor_id,range
     AnchorInitNode node;
     // The log's messages in arrival order (a pose before a range of the same time), one at a time.
     std::size_t i = 0, j = 0;
     double t_s = 0.0;
     while (i < poses.size() || j < ranges.size()) {
-      if (j == ranges.size() || (i < poses.size() && poses[i].t_s <= ranges[j].t_s)) {
-        t_s = poses[i].t_s;
-        node.OnPose(t_s, poses[i].tag_id, poses[i].p_world_tag);
-        ++i;
+      if (j == ranges.size() || (i < poses.size() && poses[i][0] <= ranges[j][0])) {
+        const std::vector<double>& pose = poses[i++];
+        t_s = pose[0];
+        node.OnPose(t_s, static_cast<int>(pose[1]), Eigen::Vector3d(pose[2], pose[3], pose[4]));
         node.Idle();
       } else {
-        t_s = ranges[j].t_s;
-        node.OnRange(t_s, ranges[j].tag_id, ranges[j].anchor_id, ranges[j].range_m);
-        ++j;
+        const std::vector<double>& range = ranges[j++];
+        t_s = range[0];
+        node.OnRange(t_s, static_cast<int>(range[1]), static_cast<int>(range[2]), range[3]);
       }
     }
     node.Shutdown(t_s);
-  } catch (const io::InputError& e) {
+  } catch (const std::runtime_error& e) {
     std::fprintf(stderr, "online_front_end: %s\n", e.what());
     return 2;
   }

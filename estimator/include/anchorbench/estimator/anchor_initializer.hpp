@@ -35,7 +35,7 @@ struct InitializerOptions {
   // After a failed solve (degenerate or non-finite), retry once the accepted data has grown by
   // this factor, so a bad geometry does not cost a solve per sample.
   double retry_growth = 1.2;
-  // The memory bound of one initializer: at most this many samples (32 bytes each) are kept for
+  // The memory bound of one initializer: at most this many samples (36 bytes each) are kept for
   // the solve, whatever the run's length; the closest-point PDOP still counts every sample. The
   // default holds 80 minutes of one tag at 10 Hz, beyond every committed experiment (largest:
   // 6002 samples), so it changes none of their numbers.
@@ -70,15 +70,34 @@ struct FeedResult {
   bool solve_pending = false;      // deferred solves: a solve waits for RunPendingSolve()
 };
 
+// The work of a pending solve: the trigger's evaluation and, if it said solve, the solve.
+struct PendingWork {
+  bool solved = false;  // false: the trigger's evaluation did not fire (event unset)
+  InitEvent event;
+};
+
 // Online initializer for one anchor (Fig. 2): filter -> trigger -> solver. Fed one sample at a
 // time in time order; no I/O, no global state, bounded memory, so a navigation stack can own one
 // per anchor. The closest-point PDOP is kept for every trigger (traces, reports). After an online
 // initialization the filter and the PDOP keep updating but no more data is buffered.
 //
-// Solves run inside Feed() by default. With SetDeferSolves(true), Feed() only marks the solve as
-// pending and queues later samples; RunPendingSolve() runs it when the caller likes (outside a
-// sensor callback, on another thread) and then catches up on the queued samples. The results
-// are identical to solving inline.
+// Solves run inside Feed() by default. With SetDeferSolves(true), Feed() is O(1) and allocation-
+// free apart from its queue: a trigger that fires (or, for a trigger that solves, whose cadence is
+// due: InitTrigger::Evaluate) leaves a solve pending, later samples are queued, and
+// RunPendingSolve() runs the evaluation and the solve when the caller likes, then catches up on
+// the queued samples. The results are identical to solving inline (tested).
+//
+// Threading: not thread-safe. One thread, the owner, makes every call, with one exception: while
+// a solve is pending, WorkPendingSolve() may run on one other thread while the owner goes on
+// calling Feed(); the owner then hands its result to CompletePendingSolve() and makes no other
+// call in between. The work reads only the frozen buffer, the trigger (which sees no call while a
+// solve is pending), the const solver and the filter's TravelBias(); Feed() touches only the
+// filter's online stage, the PDOP and the queue. Initializers share nothing mutable (solvers are
+// const, kernel tables immutable), so distinct initializers may each live on their own thread.
+//
+// Memory: at most max_buffered_samples samples buffered (36 bytes each, in vectors that may hold
+// up to twice that) plus as many queued behind a deferred solve (56 bytes each): at most ~5.2 MB
+// at the default cap, whatever the run's length.
 class AnchorInitializer {
  public:
   AnchorInitializer(int anchor_id, const InitializerOptions& options, std::unique_ptr<OutlierFilter> filter,
@@ -88,9 +107,14 @@ class AnchorInitializer {
 
   void SetDeferSolves(bool defer) { defer_solves_ = defer; }
   bool solve_pending() const { return pending_.has_value(); }
-  // Runs the pending solve; the event if it initialized the anchor. After a failed solve the
-  // queued samples are fed to the trigger, which may leave another solve pending.
+  // Runs the pending solve; the event if it initialized the anchor. After a failed solve (or an
+  // evaluation that did not fire) the queued samples are fed to the trigger, which may leave
+  // another solve pending. RunPendingSolve() is CompletePendingSolve(WorkPendingSolve()).
   std::optional<InitEvent> RunPendingSolve();
+  // The two halves, for a solve on a worker thread (see Threading above). WorkPendingSolve()
+  // requires solve_pending().
+  PendingWork WorkPendingSolve();
+  std::optional<InitEvent> CompletePendingSolve(const PendingWork& work);
 
   // End of data. Pending solves run first (their event, if one initializes). An offline trigger
   // (fixed window) then solves on everything buffered and returns the event, possibly with a
@@ -122,14 +146,10 @@ class AnchorInitializer {
     double range_m;
     double pdop;  // closest-point PDOP right after this sample
   };
-  struct Pending {
-    double t_s;
-    double pdop;
-  };
 
   void Admit(const Accepted& sample);  // buffer it and ask the trigger
   void Buffer(int tag_id, const Eigen::Vector3d& p_world_tag, double range_m);
-  InitEvent SolveNow(double t_s, double pdop);
+  InitEvent SolveNow(double t_s, double pdop) const;
 
   int anchor_id_;
   InitializerOptions options_;
@@ -147,7 +167,7 @@ class AnchorInitializer {
   std::size_t next_attempt_size_ = 0;
   std::optional<SolveResult> last_failed_solve_;
   bool defer_solves_ = false;
-  std::optional<Pending> pending_;
+  std::optional<TriggerInput> pending_;  // what the trigger fired on; the buffer stays as it saw it
   std::deque<Accepted> queued_;  // accepted while a deferred solve was pending
   long samples_not_buffered_ = 0;
   long samples_dropped_while_pending_ = 0;

@@ -69,7 +69,8 @@ class CertifiedTrigger : public InitTrigger {
   CertifiedTrigger(std::shared_ptr<const Solver> solver, const AnchorSolverOptions& solver_options,
                    const CertificateOptions& options, const HeightCheckOptions& mirror,
                    const TagBiasOptions& tag_biases, TravelBias travel_bias, SolveCadence cadence);
-  bool Fire(const TriggerInput& in) override;
+  bool Fire(const TriggerInput& in) override { return cadence_.Due(in); }
+  bool Evaluate(const TriggerInput& in) override;
   std::optional<SolveStatus> refusal() const override { return refusal_; }
 
  private:

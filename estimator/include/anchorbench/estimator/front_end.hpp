@@ -62,6 +62,16 @@ struct FrontEndCounters {
 // chain: e.g. one per trigger), feeds them, and reports initializations as events. Memory is
 // bounded: a sliding pose history, a bounded queue of ranges waiting for their pose, and each
 // initializer's bounded buffer. No I/O, no global state.
+//
+// Threading: not thread-safe; one thread makes every call. With defer_solves, AddPose/AddRange/
+// AddSample never solve (every trigger's O(N) evaluation waits too: InitTrigger::Evaluate), and
+// RunPendingSolves() runs them where the caller likes, e.g. in an idle step of the same thread.
+// A stack that wants the solves on a worker thread owns AnchorInitializers directly, whose
+// pending solve can run on another thread while Feed() goes on (anchor_initializer.hpp).
+//
+// Memory: at most max_anchors anchors, each with its chains' bounded buffers (~5.2 MB per chain
+// at most, at the default caps: AnchorInitializer), max_waiting_ranges waiting ranges (24 bytes each) and
+// the pose history of PoseBufferOptions.
 class FrontEnd {
  public:
   // The chains of a new anchor; may throw std::invalid_argument (the front end passes it on).

@@ -31,12 +31,25 @@ struct TriggerInput {
 // When to initialize an anchor (Sec. III-C): one interface, so the paper's comparisons (closest-
 // point PDOP vs the PDOP at the LS or NLS estimate vs the true PDOP vs a fixed window) are a
 // configuration choice. One instance per anchor; it may keep state between samples.
+//
+// A decision has two steps, so that an initializer with deferred solves keeps every O(N) step out
+// of Feed(): Fire() runs after every accepted sample and is O(1); a trigger that solves for an
+// estimate (pdop_ls, pdop_nls, dop4_confidence, certified) answers true there when its cadence is
+// due, and decides in Evaluate(), O(N), which the initializer runs where it runs its solves
+// (inline, or in RunPendingSolve() / WorkPendingSolve()). While an evaluation or a solve is pending
+// the trigger sees no other call: the samples that arrive meanwhile reach Fire() afterwards, in
+// order, so deferred and inline decisions are the same.
 class InitTrigger {
  public:
   virtual ~InitTrigger() = default;
 
-  // Called after every accepted sample until the anchor is initialized: true to solve now.
+  // Called after every accepted sample until the anchor is initialized, O(1): true to solve now,
+  // or, for a trigger that solves, to evaluate now.
   virtual bool Fire(const TriggerInput& input) = 0;
+
+  // After Fire() returned true, on the same input (its buffered data unchanged): true to solve.
+  // O(N) for a trigger that solves; the others fire on Fire() alone.
+  virtual bool Evaluate(const TriggerInput& /*input*/) { return true; }
 
   // False for the fixed-window baseline: it never fires online, and the initializer solves once,
   // on all of the anchor's data, at Finish().

@@ -26,10 +26,10 @@ bool ParseKernelMode(std::string_view name, KernelMode* kernel);
 
 struct NlsOptions {
   KernelMode kernel = KernelMode::kAdaptive;
-  double alpha_min = -10.0;       // lower end of the alpha search; 2 is the upper end
+  double alpha_min = kDefaultAlphaMin;  // lower end of the alpha search; 2 is the upper end
   double fixed_alpha = 1.0;       // KernelMode::kFixed
   double kernel_scale_m = 0.1;    // c of Eq. (13); the residual scale the kernel treats as "normal"
-  double truncation = 10.0;       // |r/c| bound of the truncated density's normalizer Z~(alpha)
+  double truncation = kDefaultTruncation;  // |r/c| bound of the truncated density's normalizer Z~(alpha)
   int max_iterations = 50;        // LM iterations per stage (L2 warm start, adaptive)
   double step_tolerance_m = 1e-3;  // converged when ||delta theta|| falls below this (1 mm: far below
                                    // any UWB accuracy; the L2 warm start stops at 10x this)...
@@ -40,6 +40,12 @@ struct NlsOptions {
   // alpha_min and the kernel has no gradient left to follow; the L2 stage brings the estimate
   // into the basin first. (Our choice; the paper does not say how the alternation is started.)
   bool l2_warm_start = true;
+  // The work budget of one solve for a live stack, in O(N) passes over the samples (every LM
+  // iteration takes one, and one more per rejected damping; both stages count): once spent, the
+  // solve stops with kBudgetSpent, a failure, and the initializer retries on more data. The time
+  // of a pass is linear in N (bench_solver measures it). The summary adds at most two passes.
+  // 0: no budget beyond max_iterations x 12 dampings per stage (the experiments' setting).
+  int max_passes = 0;
 
   bool IsValid(std::string* why) const;
 };
@@ -58,9 +64,9 @@ SolveResult SummarizeSolution(std::span<const Eigen::Vector3d> p_world_tag, std:
 // with 4x4 normal equations; nothing is allocated inside the loop.
 class NlsSolver {
  public:
-  // The adaptive kernel needs the log-partition table of (truncation, alpha_min); pass a shared
-  // one (LogPartitionTables) to avoid building it (~40 ms) per solver. Without one, or with one
-  // for other settings, the solver builds its own.
+  // The adaptive kernel needs the log-partition table of (truncation, alpha_min). Without one (or
+  // with one for other settings) the solver takes DefaultLogPartitionTable() for the default
+  // settings and builds its own (~40 ms) for others: pass a shared one (LogPartitionTables) then.
   explicit NlsSolver(const NlsOptions& options = {}, std::shared_ptr<const LogPartitionTable> table = nullptr);
 
   // With a height prior, the cost gains 0.5 ((z_A - z_prior) / sigma)^2 (quadratic: the prior is
@@ -70,6 +76,8 @@ class NlsSolver {
                     const std::optional<HeightPrior>& height_prior = std::nullopt) const;
 
   const NlsOptions& options() const { return options_; }
+  // The adaptive kernel's log-partition table (none for the other kernels).
+  const std::shared_ptr<const LogPartitionTable>& table() const { return table_; }
 
  private:
   struct Stage {
@@ -84,8 +92,9 @@ class NlsSolver {
     double weighted_squares = 0.0;
   };
   // LM from theta with the kernel shape fixed at *fixed_alpha, or adaptive when it is empty.
+  // `passes_left` is the budget left to the solve (<0: none), spent here.
   Stage Refine(const internal::SampleArrays& samples, const Eigen::Vector4d& theta, std::optional<double> fixed_alpha,
-               double step_tolerance_m, const std::optional<HeightPrior>& height_prior) const;
+               double step_tolerance_m, const std::optional<HeightPrior>& height_prior, long* passes_left) const;
 
   NlsOptions options_;
   std::shared_ptr<const LogPartitionTable> table_;  // only for KernelMode::kAdaptive

@@ -73,8 +73,18 @@ class LogPartitionTable {
   std::vector<double> log_z_;
 };
 
-// Tables by (truncation, alpha_min), each built on first request (~40 ms) and then shared by every
-// solver that asks. Owned by whoever builds the solvers (the registry's Components, or your code):
+// The default settings of the adaptive kernel (NlsOptions): the table every solver with them shares.
+constexpr double kDefaultTruncation = 10.0;
+constexpr double kDefaultAlphaMin = -10.0;
+
+// The table of the default settings, built on the first call (~40 ms; thread-safe) and shared
+// read-only from then on: a constant of the process, not state (the same values whoever asks
+// first). Solvers with the default settings use it unless given a table; a navigation stack that
+// calls it at start-up keeps the build out of its first range callback.
+std::shared_ptr<const LogPartitionTable> DefaultLogPartitionTable();
+
+// Tables by (truncation, alpha_min), each built on first request (~40 ms; the default settings'
+// is DefaultLogPartitionTable()) and then shared by every solver that asks. Owned by whoever builds the solvers (the registry's Components, or your code):
 // no process-wide state. Thread-safe.
 class LogPartitionTables {
  public:

@@ -15,6 +15,7 @@ enum class SolveStatus {
   kDegenerateGeometry,  // normal equations numerically singular (e.g. collinear tag positions)
   kNumericalFailure,    // a non-finite value appeared; no estimate
   kHeightUnobservable,  // the estimate's mirror through the tags' plane fits as well (HeightCheckedSolver)
+  kBudgetSpent,         // the caller's work budget ran out first (NlsOptions::max_passes): no trusted estimate
 };
 
 std::string_view ToString(SolveStatus status);

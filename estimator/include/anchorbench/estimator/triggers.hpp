@@ -74,7 +74,8 @@ class EstimatePdopTrigger : public InitTrigger {
  public:
   EstimatePdopTrigger(std::shared_ptr<const Solver> solver, double threshold, SolveCadence cadence)
       : solver_(std::move(solver)), threshold_(threshold), cadence_(cadence) {}
-  bool Fire(const TriggerInput& in) override;
+  bool Fire(const TriggerInput& in) override { return cadence_.Due(in); }
+  bool Evaluate(const TriggerInput& in) override;
 
  private:
   std::shared_ptr<const Solver> solver_;
@@ -112,7 +113,8 @@ class ConfidenceRegionDopTrigger : public InitTrigger {
  public:
   ConfidenceRegionDopTrigger(std::shared_ptr<const Solver> solver, double threshold, SolveCadence cadence, double sigmas)
       : solver_(std::move(solver)), threshold_(threshold), cadence_(cadence), sigmas_(sigmas) {}
-  bool Fire(const TriggerInput& in) override;
+  bool Fire(const TriggerInput& in) override { return cadence_.Due(in); }
+  bool Evaluate(const TriggerInput& in) override;
 
  private:
   std::shared_ptr<const Solver> solver_;

@@ -1,12 +1,15 @@
 #pragma once
 
+#include <algorithm>
 #include <cmath>
+#include <cstdint>
+#include <numbers>
+#include <random>
 #include <vector>
 
 #include <Eigen/Core>
 
 #include "anchorbench/estimator/range_sample.hpp"
-#include "anchorbench/sim/random_stream.hpp"
 
 namespace anchorbench::testing {
 
@@ -18,10 +21,44 @@ struct AnchorData {
   std::vector<double> range_m;
 };
 
-// Tests draw from a stream id of their own (above the simulator's).
-inline sim::RandomStream TestStream(std::uint64_t realization) {
-  return sim::RandomStream(12345, realization, sim::kFirstFreeStreamId);
+// The tests' random numbers: std::mt19937_64 (a sequence the C++ standard fixes) with our own
+// uniform and normal transforms, so the data are the same with every standard library; the
+// estimator's tests need no simulator.
+class TestRng {
+ public:
+  explicit TestRng(std::uint64_t seed) : engine_(seed) {}
+  double Uniform() { return static_cast<double>(engine_() >> 11) * 0x1.0p-53; }  // [0, 1)
+  double Uniform(double low, double high) { return low + (high - low) * Uniform(); }
+  double Normal() {  // Box-Muller, both values used
+    if (has_spare_) {
+      has_spare_ = false;
+      return spare_;
+    }
+    const double u = 1.0 - Uniform();  // (0, 1]
+    const double radius = std::sqrt(-2.0 * std::log(u));
+    const double angle = 2.0 * std::numbers::pi * Uniform();
+    spare_ = radius * std::sin(angle);
+    has_spare_ = true;
+    return radius * std::cos(angle);
+  }
+  double Normal(double mean, double sigma) { return mean + sigma * Normal(); }
+  bool Bernoulli(double probability) { return Uniform() < probability; }
+
+ private:
+  std::mt19937_64 engine_;
+  double spare_ = 0.0;
+  bool has_spare_ = false;
+};
+
+// The median of `values` (taken by value: sorted here).
+inline double Median(std::vector<double> values) {
+  std::sort(values.begin(), values.end());
+  const std::size_t n = values.size();
+  return n % 2 == 1 ? values[n / 2] : 0.5 * (values[n / 2 - 1] + values[n / 2]);
 }
+
+// One stream per test realization.
+inline TestRng TestStream(std::uint64_t realization) { return TestRng(12345 + 0x9E3779B97F4A7C15ull * realization); }
 
 // A vector of three draws, z first, then y, then x, each sequenced: draws written as the three
 // arguments of one constructor would come in an order the compiler chooses (the tests' data were
@@ -35,13 +72,13 @@ Eigen::Vector3d Draw3(Draw draw) {
 }
 
 // Uniform in the box [low, high] per axis.
-inline Eigen::Vector3d UniformIn(sim::RandomStream& rng, const Eigen::Vector3d& low, const Eigen::Vector3d& high) {
+inline Eigen::Vector3d UniformIn(TestRng& rng, const Eigen::Vector3d& low, const Eigen::Vector3d& high) {
   return Draw3([&](int axis) { return rng.Uniform(low[axis], high[axis]); });
 }
 
 // n tag positions uniformly in a box of half-size `spread_m` around `center`, ranges by Eq. (1)
 // with bias and Gaussian noise.
-inline AnchorData BoxData(sim::RandomStream& rng, int n, const Eigen::Vector3d& p_anchor,
+inline AnchorData BoxData(TestRng& rng, int n, const Eigen::Vector3d& p_anchor,
                           const Eigen::Vector3d& center, double spread_m, double bias_m, double sigma_m) {
   AnchorData data{p_anchor, bias_m, {}, {}};
   for (int k = 0; k < n; ++k) {
