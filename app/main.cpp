@@ -9,7 +9,7 @@
 
 #include "anchorbench/eval/oracles.hpp"
 #include "anchorbench/io/format.hpp"
-#include "anchorbench/io/input_error.hpp"
+#include "anchorbench/schema/input_error.hpp"
 #include "commands.hpp"
 #ifdef ANCHORBENCH_MPI
 #include "mpi_job.hpp"
@@ -237,7 +237,7 @@ int RunCommandLine(int argc, char** argv, const anchorbench::registry::Component
   }
   try {
     return Dispatch(command_line, {parts, app::BuildRevision(), executor});
-  } catch (const anchorbench::io::InputError& e) {
+  } catch (const anchorbench::schema::InputError& e) {
     std::cerr << "anchorbench: error: " << e.what() << '\n';
     return 2;
   } catch (const std::exception& e) {

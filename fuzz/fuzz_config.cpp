@@ -1,19 +1,19 @@
 // libFuzzer harness for the config loader: YAML text in, a validated experiment config or one
-// io::InputError out. A `base:` names files relative to a folder that does not exist.
+// schema::InputError out. A `base:` names files relative to a folder that does not exist.
 #include <cstddef>
 #include <cstdint>
 #include <string>
 
 #include "anchorbench/config/load_config.hpp"
 #include "anchorbench/eval/oracles.hpp"
-#include "anchorbench/io/input_error.hpp"
+#include "anchorbench/schema/input_error.hpp"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   static const anchorbench::registry::Components parts = anchorbench::eval::MakeComponentsWithOracles();
   try {
     anchorbench::config::LoadConfigText(std::string(reinterpret_cast<const char*>(data), size),
                                         "/nonexistent/fuzz.yaml", {}, parts);
-  } catch (const anchorbench::io::InputError&) {
+  } catch (const anchorbench::schema::InputError&) {
   }
   return 0;
 }

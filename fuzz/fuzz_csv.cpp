@@ -1,13 +1,13 @@
 // libFuzzer harness for the CSV readers: the first byte picks poses.csv, ranges.csv or
 // anchors.csv, read strictly or under lenient policies (drops counted, rows sorted in a window,
-// repeated poses averaged), the rest is the file. A reader must return records or throw one io::InputError;
+// repeated poses averaged), the rest is the file. A reader must return records or throw one schema::InputError;
 // anything else (a crash, a leak, another exception, undefined behaviour) is a finding.
 #include <cstddef>
 #include <cstdint>
 #include <sstream>
 #include <string>
 
-#include "anchorbench/io/input_error.hpp"
+#include "anchorbench/schema/input_error.hpp"
 #include "anchorbench/io/recorded_data.hpp"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
@@ -26,7 +26,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
       case 3: anchorbench::io::ReadRanges(in, "anchor_3.csv", lenient, &drops); break;
       default: anchorbench::io::ReadAnchors(in, "anchors.csv"); break;
     }
-  } catch (const anchorbench::io::InputError&) {
+  } catch (const anchorbench::schema::InputError&) {
   }
   return 0;
 }

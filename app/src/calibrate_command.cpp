@@ -11,7 +11,7 @@
 #include "anchorbench/io/atomic_file.hpp"
 #include "anchorbench/io/format.hpp"
 #include "anchorbench/io/hash.hpp"
-#include "anchorbench/io/input_error.hpp"
+#include "anchorbench/schema/input_error.hpp"
 #include "anchorbench/report/paper_cells.hpp"
 #include "anchorbench/report/summary.hpp"
 #include "anchorbench/runner/monte_carlo.hpp"
@@ -23,11 +23,11 @@ namespace {
 
 namespace fs = std::filesystem;
 using calibrate::Fit;
-using io::InputError;
+using schema::InputError;
 using report::PaperCell;
 
 // The experiment with these overrides, run and compared with the paper's cells.
-std::vector<PaperCell> RunCells(const runner::CalibrationSpec& spec, std::vector<std::string> overrides,
+std::vector<PaperCell> RunCells(const schema::CalibrationSpec& spec, std::vector<std::string> overrides,
                                 std::uint64_t seed, std::optional<int> realizations, bool intervals, int threads,
                                 const AppContext& app) {
   overrides.push_back("seed=" + std::to_string(seed));
@@ -35,39 +35,39 @@ std::vector<PaperCell> RunCells(const runner::CalibrationSpec& spec, std::vector
   if (!intervals) overrides.push_back("bootstrap_resamples=0");  // the fit needs no intervals
   // The paper's cells are of its two triggers: the others an experiment runs beside them (ours:
   // certified in Table I) would cost without changing a cell.
-  overrides.push_back(std::string("estimator.triggers=[") + runner::kFixedWindowTrigger + "," + runner::kPaperTrigger + "]");
-  const runner::ExperimentConfig config = config::LoadConfig(spec.experiment_path, overrides, app.parts);
-  const std::vector<runner::RowConfig> rows = runner::RowsOf(config);
+  overrides.push_back(std::string("estimator.triggers=[") + schema::kFixedWindowTrigger + "," + schema::kPaperTrigger + "]");
+  const schema::ExperimentConfig config = config::LoadConfig(spec.experiment_path, overrides, app.parts);
+  const std::vector<schema::RowConfig> rows = schema::RowsOf(config);
   runner::CheckWork(config);
   runner::CheckRows(rows, app.parts);
   const work::Plan plan({config});
-  const std::vector<runner::Attempt> attempts = work::RunWholePlan(plan, app.executor, threads).front().attempts;
+  const std::vector<schema::Attempt> attempts = work::RunWholePlan(plan, app.executor, threads).front().attempts;
   return report::CompareWithPaper(
       report::Summarize(attempts, rows, config.realizations, config.bootstrap_resamples, config.seed), rows);
 }
 
 // The experiment's own value of each parameter, inside its bounds; and the experiment valid at
 // each bound, so no evaluation of the search can fail on input.
-std::vector<double> CheckParameters(const runner::CalibrationSpec& spec, const runner::ExperimentConfig& experiment,
+std::vector<double> CheckParameters(const schema::CalibrationSpec& spec, const schema::ExperimentConfig& experiment,
                                     const AppContext& app) {
   const std::string resolved = config::ToYaml(experiment);
   std::vector<double> hand;
   for (std::size_t p = 0; p < spec.parameters.size(); ++p) {
-    const runner::FreeParameter& parameter = spec.parameters[p];
+    const schema::FreeParameter& parameter = spec.parameters[p];
     const std::string what = spec.path + ": parameters[" + std::to_string(p) + "]";
     hand.push_back(config::NumberAt(resolved, parameter.key, what));
     if (hand.back() < parameter.min || hand.back() > parameter.max) {
-      throw InputError(what + " (" + parameter.key + "): the experiment's value " + io::FormatNumber(hand.back()) +
+      throw schema::InputError(what + " (" + parameter.key + "): the experiment's value " + io::FormatNumber(hand.back()) +
                        " lies outside [min, max]; widen the bounds");
     }
     for (double u : {0.0, 1.0}) {
       const std::string assignment = parameter.key + "=" + Fit::ValueText(parameter, u);
       try {
-        const runner::ExperimentConfig at_bound = config::LoadConfig(spec.experiment_path, {assignment}, app.parts);
+        const schema::ExperimentConfig at_bound = config::LoadConfig(spec.experiment_path, {assignment}, app.parts);
         runner::CheckWork(at_bound);
-        runner::CheckRows(runner::RowsOf(at_bound), app.parts);
-      } catch (const InputError& e) {
-        throw InputError(what + " (" + parameter.key + ") at its " + (u == 0.0 ? "min" : "max") + ": " + e.what());
+        runner::CheckRows(schema::RowsOf(at_bound), app.parts);
+      } catch (const schema::InputError& e) {
+        throw schema::InputError(what + " (" + parameter.key + ") at its " + (u == 0.0 ? "min" : "max") + ": " + e.what());
       }
     }
   }
@@ -76,17 +76,17 @@ std::vector<double> CheckParameters(const runner::CalibrationSpec& spec, const r
 
 // What decides an evaluation's cells besides the parameters: lines of a log made with anything
 // else are not reused.
-std::uint64_t Context(const runner::CalibrationSpec& spec, const runner::ExperimentConfig& experiment) {
+std::uint64_t Context(const schema::CalibrationSpec& spec, const schema::ExperimentConfig& experiment) {
   return io::Fnv1a64(config::ToYaml(experiment) + "\nfit seed " + std::to_string(spec.seed) +
                             "\nfit realizations " + std::to_string(spec.realizations));
 }
 
 // The evaluation log, seeded with what --reuse and a killed run's running log already hold.
-calibrate::EvaluationLog OpenLog(const CalibrateArgs& args, const runner::CalibrationSpec& spec,
-                                 const runner::ExperimentConfig& experiment, const std::vector<PaperCell>& targets,
+calibrate::EvaluationLog OpenLog(const CalibrateArgs& args, const schema::CalibrationSpec& spec,
+                                 const schema::ExperimentConfig& experiment, const std::vector<PaperCell>& targets,
                                  const std::vector<std::string>& row_names, const fs::path& running_log) {
   std::vector<std::string> keys, cell_names;
-  for (const runner::FreeParameter& parameter : spec.parameters) keys.push_back(parameter.key);
+  for (const schema::FreeParameter& parameter : spec.parameters) keys.push_back(parameter.key);
   for (const PaperCell& cell : targets) cell_names.push_back(calibrate::CellName(cell, row_names));
   calibrate::EvaluationLog log(keys, cell_names, Context(spec, experiment));
   for (const fs::path& source : {fs::path(args.reuse), running_log}) {
@@ -94,10 +94,10 @@ calibrate::EvaluationLog OpenLog(const CalibrateArgs& args, const runner::Calibr
     int reused = 0;
     try {
       reused = log.Reuse(source);
-    } catch (const InputError& e) {
+    } catch (const schema::InputError& e) {
       const std::string what = e.what();
       if (source != running_log || what.find(":1: ") == std::string::npos) throw;  // a line of it: cut that line
-      throw InputError(what + "; it is the log of a killed calibration of other parameters: remove it to start afresh");
+      throw schema::InputError(what + "; it is the log of a killed calibration of other parameters: remove it to start afresh");
     }
     if (!args.quiet) std::cerr << "calibrate: " << reused << " evaluations known from " << source.string() << "\n";
   }
@@ -107,7 +107,7 @@ calibrate::EvaluationLog OpenLog(const CalibrateArgs& args, const runner::Calibr
 
 // Our cells at the fit's seed and size, with Init and >1m (counts over all attempts) scaled up to
 // the experiment's size before they meet the paper's.
-calibrate::CellEvaluator FitEvaluator(const runner::CalibrationSpec& spec, int full_realizations, int threads,
+calibrate::CellEvaluator FitEvaluator(const schema::CalibrationSpec& spec, int full_realizations, int threads,
                                       const AppContext& app) {
   const double count_scale = static_cast<double>(full_realizations) / spec.realizations;
   return [&spec, count_scale, threads, &app](const std::vector<std::string>& overrides) {
@@ -123,7 +123,7 @@ calibrate::CellEvaluator FitEvaluator(const runner::CalibrationSpec& spec, int f
 }
 
 // The experiment as configured and as calibrated (`best`), full size, on the unseen seeds.
-std::vector<calibrate::Verification> Verify(const runner::CalibrationSpec& spec, const std::vector<std::string>& best,
+std::vector<calibrate::Verification> Verify(const schema::CalibrationSpec& spec, const std::vector<std::string>& best,
                                             int threads, Progress& progress, const AppContext& app) {
   std::vector<calibrate::Verification> verification;
   for (std::uint64_t seed : spec.verify_seeds) {
@@ -139,7 +139,7 @@ constexpr std::uintmax_t kCalibratedConfigBytes = 1 << 16;
 
 // Every file the calibration reads (never replaced or removed): the calibration file, the
 // experiment and its bases, the reused log.
-std::vector<fs::path> Inputs(const CalibrateArgs& args, const runner::CalibrationSpec& spec) {
+std::vector<fs::path> Inputs(const CalibrateArgs& args, const schema::CalibrationSpec& spec) {
   std::vector<fs::path> inputs;
   for (const std::string& file : config::ConfigFiles(args.config)) inputs.emplace_back(file);
   for (const std::string& file : config::ConfigFiles(spec.experiment_path)) inputs.emplace_back(file);
@@ -150,22 +150,22 @@ std::vector<fs::path> Inputs(const CalibrateArgs& args, const runner::Calibratio
 void CheckReuse(const std::string& reuse) {
   if (reuse.empty()) return;
   std::error_code error;
-  if (!fs::exists(reuse, error)) throw InputError("--reuse " + reuse + ": no such file");
-  if (fs::is_directory(reuse, error)) throw InputError("--reuse " + reuse + ": is a folder, not an evaluation log");
-  if (!fs::is_regular_file(reuse, error)) throw InputError("--reuse " + reuse + ": is not a regular file");
+  if (!fs::exists(reuse, error)) throw schema::InputError("--reuse " + reuse + ": no such file");
+  if (fs::is_directory(reuse, error)) throw schema::InputError("--reuse " + reuse + ": is a folder, not an evaluation log");
+  if (!fs::is_regular_file(reuse, error)) throw schema::InputError("--reuse " + reuse + ": is not a regular file");
 }
 
 }  // namespace
 
 int CalibrateCommand(const CalibrateArgs& args, const AppContext& app) {
   // Every input checked, and every output place claimed, before the first evaluation.
-  const runner::CalibrationSpec spec = config::LoadCalibrationSpec(args.config);
-  const runner::ExperimentConfig experiment = config::LoadConfig(spec.experiment_path, {}, app.parts);
-  const std::vector<runner::RowConfig> rows = runner::RowsOf(experiment);
+  const schema::CalibrationSpec spec = config::LoadCalibrationSpec(args.config);
+  const schema::ExperimentConfig experiment = config::LoadConfig(spec.experiment_path, {}, app.parts);
+  const std::vector<schema::RowConfig> rows = schema::RowsOf(experiment);
   const std::vector<PaperCell> targets = report::PaperTargets(rows);
   if (targets.empty()) {
-    throw InputError(spec.experiment_path + ": no row carries the paper's values (`paper:`) and runs both " +
-                     runner::kFixedWindowTrigger + " and " + runner::kPaperTrigger + ": nothing to calibrate to");
+    throw schema::InputError(spec.experiment_path + ": no row carries the paper's values (`paper:`) and runs both " +
+                     schema::kFixedWindowTrigger + " and " + schema::kPaperTrigger + ": nothing to calibrate to");
   }
   const std::vector<double> hand = CheckParameters(spec, experiment, app);
   CheckReuse(args.reuse);
@@ -181,11 +181,11 @@ int CalibrateCommand(const CalibrateArgs& args, const AppContext& app) {
   io::AtomicFile calibrated(experiment_path.parent_path() / (experiment_path.stem().string() + ".calibrated.yaml"),
                             args.overwrite, inputs, kCalibratedConfigBytes);
   std::vector<std::string> row_names;
-  for (const runner::RowConfig& row : rows) row_names.push_back(row.name);
+  for (const schema::RowConfig& row : rows) row_names.push_back(row.name);
   const fs::path running_log = setup.out.string() + ".evaluations.csv";  // beside the folder: resumable
   std::error_code error;
   if (fs::exists(running_log, error) && !fs::is_regular_file(running_log, error)) {
-    throw InputError(running_log.string() + ": is a folder (or not a regular file), not the evaluation log of a " +
+    throw schema::InputError(running_log.string() + ": is a folder (or not a regular file), not the evaluation log of a " +
                      "killed calibration; move it away");
   }
   calibrate::EvaluationLog log = OpenLog(args, spec, experiment, targets, row_names, running_log);
@@ -213,7 +213,7 @@ int CalibrateCommand(const CalibrateArgs& args, const AppContext& app) {
   std::ostringstream markdown;
   calibrate::WriteCalibrationMarkdown(markdown, outcome);
   out.Write("calibration.md", markdown.str());
-  const runner::ExperimentConfig calibrated_experiment = config::LoadConfig(spec.experiment_path, best, app.parts);
+  const schema::ExperimentConfig calibrated_experiment = config::LoadConfig(spec.experiment_path, best, app.parts);
   std::vector<std::string> command_line{"calibrate " + args.config};
   if (!args.reuse.empty()) command_line.push_back("--reuse " + args.reuse);
   out.Write("manifest.json", report::ManifestJson(calibrated_experiment,

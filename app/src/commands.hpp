@@ -1,7 +1,7 @@
 #pragma once
 // The subcommands as plain functions on their arguments; main.cpp maps the command line onto them
 // (and is the only file that sees CLI11). Each returns the process exit code; bad input throws
-// io::InputError, which main() reports (exit 2).
+// schema::InputError, which main() reports (exit 2).
 
 #include <cstdint>
 #include <optional>

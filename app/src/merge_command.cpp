@@ -4,7 +4,7 @@
 #include <memory>
 
 #include "anchorbench/config/load_config.hpp"
-#include "anchorbench/io/input_error.hpp"
+#include "anchorbench/schema/input_error.hpp"
 #include "anchorbench/io/result_folder.hpp"
 #include "anchorbench/work/shard_folder.hpp"
 #include "monte_carlo_command.hpp"
@@ -13,7 +13,7 @@ namespace anchorbench::app {
 namespace {
 
 namespace fs = std::filesystem;
-using io::InputError;
+using schema::InputError;
 
 // The shards' identities: one plan (command, config and build), every shard of it exactly once.
 std::vector<work::ShardInfo> CheckShards(const std::vector<std::string>& folders) {
@@ -27,21 +27,21 @@ std::vector<work::ShardInfo> CheckShards(const std::vector<std::string>& folders
                              std::to_string(info.shard.count);
     if (info.shard.count != first.shard.count || info.plan != first.plan || info.command != first.command ||
         info.name != first.name) {
-      throw InputError(name + " is of another run than " + folders.front() + " (plan " + info.plan + " vs " +
+      throw schema::InputError(name + " is of another run than " + folders.front() + " (plan " + info.plan + " vs " +
                        first.plan + ", " + std::to_string(info.shard.count) + " vs " +
                        std::to_string(first.shard.count) + " shards)");
     }
     if (info.revision != first.revision) {
-      throw InputError(name + " was run by build " + info.revision + ", " + folders.front() + " by " + first.revision +
+      throw schema::InputError(name + " was run by build " + info.revision + ", " + folders.front() + " by " + first.revision +
                        ": shards of one run need one build");
     }
     if (!seen.emplace(info.shard.index, folder).second) {
-      throw InputError(name + " is given twice (also " + seen[info.shard.index] + ")");
+      throw schema::InputError(name + " is given twice (also " + seen[info.shard.index] + ")");
     }
   }
   for (int i = 0; i < infos.front().shard.count; ++i) {
     if (!seen.count(i)) {
-      throw InputError("shard " + std::to_string(i) + "/" + std::to_string(infos.front().shard.count) +
+      throw schema::InputError("shard " + std::to_string(i) + "/" + std::to_string(infos.front().shard.count) +
                        " is missing: every shard of the run is needed");
     }
   }
@@ -56,13 +56,13 @@ work::Plan CheckInputs(const std::vector<std::string>& folders, const work::Shar
   inputs = work::ReadShardInputs(first);
   const work::Plan plan = work::RebuildPlan(inputs, parts);
   if (plan.identity() != info.plan) {
-    throw InputError((first / "config.yaml").string() + ": with axes.txt gives plan " + plan.identity() +
+    throw schema::InputError((first / "config.yaml").string() + ": with axes.txt gives plan " + plan.identity() +
                      ", shard.csv says " + info.plan + " (edited after the run?)");
   }
   for (std::size_t s = 1; s < folders.size(); ++s) {
     const work::ShardInputs other = work::ReadShardInputs(folders[s]);
     if (other.config_yaml != inputs.config_yaml || runner::DescribeAxes(other.axes) != runner::DescribeAxes(inputs.axes)) {
-      throw InputError((fs::path(folders[s]) / "config.yaml").string() + ": with axes.txt differs from " +
+      throw schema::InputError((fs::path(folders[s]) / "config.yaml").string() + ": with axes.txt differs from " +
                        (first / "config.yaml").string() + "'s: shards of one run hold the same (edited after the run?)");
     }
   }
@@ -106,7 +106,7 @@ int MergeCommand(const MergeArgs& args, const AppContext& app) {
   info.resolved_config_json = config::ToJson(config::LoadConfigText(inputs.config_yaml, "config.yaml", {}, app.parts));
   std::string markdown;
   if (infos.front().command == "run") {
-    runner::ExperimentConfig config = plan.experiments().front();
+    schema::ExperimentConfig config = plan.experiments().front();
     config.name = infos.front().name;
     markdown = CommitRun(*out, config, joined.front(), info);
   } else {

@@ -89,9 +89,9 @@ void RemoveStore(const io::ResultFolder& out) {
   std::filesystem::remove_all(work::ChunkStorePath(out.target()), error);
 }
 
-std::string CommitRun(io::ResultFolder& out, const runner::ExperimentConfig& config,
+std::string CommitRun(io::ResultFolder& out, const schema::ExperimentConfig& config,
                       const work::ExperimentAttempts& run, const report::RunInfo& info) {
-  const std::vector<runner::RowConfig> rows = runner::RowsOf(config);
+  const std::vector<schema::RowConfig> rows = schema::RowsOf(config);
   // Every file into the new folder, then the folder in place: an error leaves the old results intact.
   out.Write("attempts.csv", [&](std::ostream& file) { report::WriteAttemptLines(file, run.lines); });
   const std::vector<report::MethodSummary> summaries =
@@ -112,13 +112,13 @@ std::string CommitSweep(io::ResultFolder& out, const std::string& name, const st
   const std::vector<runner::SweepPoint> grid = runner::SweepGrid(axes);
   std::vector<report::SweepPointResult> results;
   for (std::size_t p = 0; p < grid.size(); ++p) {
-    const runner::ExperimentConfig& config = plan.experiments()[p];
+    const schema::ExperimentConfig& config = plan.experiments()[p];
     report::SweepPointResult result{grid[p], plan.rows(static_cast<int>(p)), {}};
     result.summaries =
         report::Summarize(points[p].attempts, result.rows, config.realizations, config.bootstrap_resamples, config.seed);
     results.push_back(std::move(result));
   }
-  const runner::ExperimentConfig& first = plan.experiments().front();
+  const schema::ExperimentConfig& first = plan.experiments().front();
   out.Write("sweep.csv", [&](std::ostream& file) { report::WriteSweepCsv(file, axes, results); });
   out.Write("timing.csv", [&](std::ostream& file) { report::WriteSweepTiming(file, axes, results); });
   std::ostringstream md;
@@ -131,7 +131,7 @@ std::string CommitSweep(io::ResultFolder& out, const std::string& name, const st
 }
 
 report::RunInfo RunInfoOf(const MonteCarloArgs& args, const MonteCarloSetup& setup, const AppContext& app,
-                          const runner::ExperimentConfig& config, double wall_time_s,
+                          const schema::ExperimentConfig& config, double wall_time_s,
                           std::vector<std::string> more_command_line) {
   report::RunInfo info;
   info.config_path = args.config;

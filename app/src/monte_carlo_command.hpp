@@ -10,7 +10,7 @@
 
 #include "anchorbench/io/result_folder.hpp"
 #include "anchorbench/report/run_outputs.hpp"
-#include "anchorbench/runner/experiment.hpp"
+#include "anchorbench/schema/experiment.hpp"
 #include "anchorbench/runner/sweep.hpp"
 #include "anchorbench/work/run_plan.hpp"
 #include "anchorbench/work/shard_folder.hpp"
@@ -60,7 +60,7 @@ void RemoveStore(const io::ResultFolder& out);
 
 // A run's results from its attempts (run and merge write the same): attempts.csv, summary.csv,
 // summary.md, timing.csv and manifest.json into `out`, committed; returns summary.md's text.
-std::string CommitRun(io::ResultFolder& out, const runner::ExperimentConfig& config,
+std::string CommitRun(io::ResultFolder& out, const schema::ExperimentConfig& config,
                       const work::ExperimentAttempts& run, const report::RunInfo& info);
 
 // A sweep's results (sweep and merge): sweep.csv, timing.csv, sweep.md and manifest.json, committed;
@@ -72,7 +72,7 @@ std::string CommitSweep(io::ResultFolder& out, const std::string& name, const st
 // The manifest's record: the command line's changes (--realizations and any `more`), threads,
 // wall time, revision and the resolved config.
 report::RunInfo RunInfoOf(const MonteCarloArgs& args, const MonteCarloSetup& setup, const AppContext& app,
-                          const runner::ExperimentConfig& config, double wall_time_s,
+                          const schema::ExperimentConfig& config, double wall_time_s,
                           std::vector<std::string> more_command_line = {});
 
 }  // namespace anchorbench::app

@@ -9,7 +9,7 @@
 #include <stdexcept>
 #include <thread>
 
-#include "anchorbench/io/input_error.hpp"
+#include "anchorbench/schema/input_error.hpp"
 
 namespace anchorbench::app {
 namespace {
@@ -81,7 +81,7 @@ void MpiExecutor::Compute(const work::Plan& plan, const std::vector<int>& chunks
     const std::string text = Receive(MPI_ANY_SOURCE, MPI_ANY_TAG, status);
     const std::string rank = "rank " + std::to_string(status.MPI_SOURCE);
     if (status.MPI_TAG == kError) {
-      if (text.rfind("2", 0) == 0) throw io::InputError(rank + ": " + text.substr(1));
+      if (text.rfind("2", 0) == 0) throw schema::InputError(rank + ": " + text.substr(1));
       throw std::runtime_error(rank + ": " + text.substr(1));
     }
     const std::vector<std::string> fields = Unpack(text);  // thread [, chunk, chunk text]
@@ -132,11 +132,11 @@ void ServeThread(const work::Plan* plan, const std::string& plan_error, int thre
     if (chunk_text.empty()) return;
     const int chunk = std::stoi(chunk_text);
     try {
-      if (!plan) throw io::InputError(plan_error);
+      if (!plan) throw schema::InputError(plan_error);
       const work::ChunkResult result = work::ComputeChunk(*plan, chunk, components, samples);
       request = Pack({std::to_string(thread), chunk_text, work::ChunkText(*plan, chunk, result)});
       tag = kResult;
-    } catch (const io::InputError& e) {
+    } catch (const schema::InputError& e) {
       request = std::string("2") + e.what();
       tag = kError;
     } catch (const std::exception& e) {

@@ -4,7 +4,7 @@
 #include "anchorbench/config/load_config.hpp"
 #include "anchorbench/io/result_folder.hpp"
 #include "anchorbench/io/format.hpp"
-#include "anchorbench/io/input_error.hpp"
+#include "anchorbench/schema/input_error.hpp"
 #include "anchorbench/report/pdop_study_report.hpp"
 #include "anchorbench/runner/pdop_study.hpp"
 #include "monte_carlo_command.hpp"
@@ -12,13 +12,13 @@
 namespace anchorbench::app {
 
 int PdopStudyCommand(const PdopStudyArgs& args, const AppContext& app) {
-  runner::ExperimentConfig config = config::LoadConfig(args.config, {}, app.parts);
+  schema::ExperimentConfig config = config::LoadConfig(args.config, {}, app.parts);
   if (args.realizations) config.realizations = *args.realizations;
-  if (args.every < 1 || args.every > 1000000) throw io::InputError("--every: must be in [1, 1000000]");
+  if (args.every < 1 || args.every > 1000000) throw schema::InputError("--every: must be in [1, 1000000]");
   // The summary's bins cover Fig. 7's first 120 s: at least 0.01 s (12,000 bins), at most all of it.
-  if (!(args.bin_s >= 0.01 && args.bin_s <= 120.0)) throw io::InputError("--bin-s: must be in [0.01, 120] seconds");
+  if (!(args.bin_s >= 0.01 && args.bin_s <= 120.0)) throw schema::InputError("--bin-s: must be in [0.01, 120] seconds");
   const double anchors = static_cast<double>(config.realizations) * config.scenario.NumAnchors();
-  if (anchors > 1e6) throw io::InputError(args.config + ": realizations x anchors above 1e6 for a PDOP study");
+  if (anchors > 1e6) throw schema::InputError(args.config + ": realizations x anchors above 1e6 for a PDOP study");
   const MonteCarloSetup setup = SetUpMonteCarlo(args, config.name);
   // A checkpoint line (~150 bytes) every `every` samples, a few thousand samples per anchor.
   const std::unique_ptr<io::ResultFolder> out =

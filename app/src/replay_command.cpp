@@ -4,7 +4,7 @@
 
 #include "anchorbench/config/load_config.hpp"
 #include "anchorbench/io/atomic_file.hpp"
-#include "anchorbench/io/input_error.hpp"
+#include "anchorbench/schema/input_error.hpp"
 #include "anchorbench/io/log_reader.hpp"
 #include "anchorbench/io/recorded_data.hpp"
 #include "anchorbench/io/result_folder.hpp"
@@ -48,14 +48,14 @@ io::LogSurvey Survey(const io::LogFiles& files, const io::LogPolicy& policy, boo
 }  // namespace
 
 int ReplayCommand(const ReplayArgs& args, const AppContext& app) {
-  runner::ExperimentConfig config;  // the defaults, unless --config names a file
+  schema::ExperimentConfig config;  // the defaults, unless --config names a file
   if (!args.config.empty()) config = config::LoadConfig(args.config, {}, app.parts);
   const io::LogPolicy policy = PolicyOf(args);
   const io::LogFiles files{args.poses, args.ranges};
   const io::LogSurvey survey = Survey(files, policy, args.quiet);
-  std::map<int, eval::AnchorTruth> truth;
+  std::map<int, schema::AnchorTruth> truth;
   if (!args.anchors.empty()) truth = io::LoadAnchors(args.anchors);
-  const std::map<int, eval::AnchorTruth>* known = args.anchors.empty() ? nullptr : &truth;
+  const std::map<int, schema::AnchorTruth>* known = args.anchors.empty() ? nullptr : &truth;
   runner::CheckReplayable(survey.anchor_ids, known, config.estimator, app.parts);
 
   // The outputs, before any work: never an input, never earlier results without --overwrite.
@@ -71,7 +71,7 @@ int ReplayCommand(const ReplayArgs& args, const AppContext& app) {
   runner::TraceSink trace;
   if (!args.trace.empty()) {
     if (out && io::IsInside(args.trace, out->target())) {
-      throw io::InputError("--trace " + args.trace + ": lies inside --out " + args.out +
+      throw schema::InputError("--trace " + args.trace + ": lies inside --out " + args.out +
                            ", which is replaced as a whole; put the trace beside it");
     }
     constexpr std::uintmax_t kBytesPerTraceRow = 64;

@@ -2,7 +2,7 @@
 
 #include "anchorbench/config/load_config.hpp"
 #include "anchorbench/io/result_folder.hpp"
-#include "anchorbench/io/input_error.hpp"
+#include "anchorbench/schema/input_error.hpp"
 #include "anchorbench/runner/monte_carlo.hpp"
 #include "anchorbench/runner/sweep.hpp"
 #include "monte_carlo_command.hpp"
@@ -11,14 +11,14 @@ namespace anchorbench::app {
 namespace {
 
 // Every grid point parsed and validated before the first trial runs.
-std::vector<runner::ExperimentConfig> PointConfigs(const SweepArgs& args, const std::vector<runner::SweepPoint>& grid,
+std::vector<schema::ExperimentConfig> PointConfigs(const SweepArgs& args, const std::vector<runner::SweepPoint>& grid,
                                                    const AppContext& app) {
-  std::vector<runner::ExperimentConfig> configs;
+  std::vector<schema::ExperimentConfig> configs;
   for (const runner::SweepPoint& point : grid) {
-    runner::ExperimentConfig config = config::LoadConfig(args.config, point.overrides, app.parts);
+    schema::ExperimentConfig config = config::LoadConfig(args.config, point.overrides, app.parts);
     if (args.realizations) config.realizations = *args.realizations;
     runner::CheckWork(config);
-    runner::CheckRows(runner::RowsOf(config), app.parts);
+    runner::CheckRows(schema::RowsOf(config), app.parts);
     configs.push_back(std::move(config));
   }
   return configs;
@@ -27,31 +27,31 @@ std::vector<runner::ExperimentConfig> PointConfigs(const SweepArgs& args, const 
 }  // namespace
 
 int SweepCommand(const SweepArgs& args, const AppContext& app) {
-  const runner::ExperimentConfig base = config::LoadConfig(args.config, {}, app.parts);
+  const schema::ExperimentConfig base = config::LoadConfig(args.config, {}, app.parts);
   const std::vector<runner::SweepAxis> axes = runner::SweepAxes(base.sweep, args.axes);
-  if (axes.empty()) throw io::InputError(args.config + ": nothing to sweep: give --set KEY=VALUES or a 'sweep' section");
+  if (axes.empty()) throw schema::InputError(args.config + ": nothing to sweep: give --set KEY=VALUES or a 'sweep' section");
   for (const runner::SweepAxis& axis : axes) {
     if (args.realizations && axis.key == "realizations") {
-      throw io::InputError("--realizations " + std::to_string(*args.realizations) +
+      throw schema::InputError("--realizations " + std::to_string(*args.realizations) +
                            " and the sweep axis 'realizations' both set the realizations: give one of them");
     }
   }
   const std::vector<runner::SweepPoint> grid = runner::SweepGrid(axes);
-  const std::vector<runner::ExperimentConfig> configs = PointConfigs(args, grid, app);
+  const std::vector<schema::ExperimentConfig> configs = PointConfigs(args, grid, app);
   const MonteCarloSetup setup = SetUpMonteCarlo(args, base.name);
   const work::Plan plan(configs);
   // Per point, row and trigger a line of ~200 bytes in each of three files; a shard's chunk files.
   std::uintmax_t lines = 0;
-  for (const runner::ExperimentConfig& config : configs) {
-    for (const runner::RowConfig& row : runner::RowsOf(config)) lines += row.estimator.triggers.size();
+  for (const schema::ExperimentConfig& config : configs) {
+    for (const schema::RowConfig& row : schema::RowsOf(config)) lines += row.estimator.triggers.size();
   }
   const std::uintmax_t bytes = args.shard.empty() ? 600 * lines + (1 << 16) : RunResultBytes(plan, args);
   const std::unique_ptr<io::ResultFolder> out = OpenResultFolder(args, setup, bytes);
-  runner::ExperimentConfig resolved = base;
+  schema::ExperimentConfig resolved = base;
   if (args.realizations) resolved.realizations = *args.realizations;
   const work::ShardInputs inputs{config::ToYaml(resolved), axes};
   if (!args.shard.empty() && work::RebuildPlan(inputs, app.parts).identity() != plan.identity()) {
-    throw io::InputError(args.config + ": this sweep does not rebuild from its config and axes (an axis on "
+    throw schema::InputError(args.config + ": this sweep does not rebuild from its config and axes (an axis on "
                          "'realizations' with --realizations?): it cannot be sharded");
   }
 

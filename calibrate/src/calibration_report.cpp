@@ -17,10 +17,10 @@ using report::PaperCell;
 namespace {
 
 std::string ShortMethod(const std::string& method) {
-  return method == runner::kFixedWindowTrigger ? "fixed" : method == runner::kPaperTrigger ? "gated" : method;
+  return method == schema::kFixedWindowTrigger ? "fixed" : method == schema::kPaperTrigger ? "gated" : method;
 }
 
-bool Fitted(const runner::CalibrationSpec& spec, const PaperCell& cell) {
+bool Fitted(const schema::CalibrationSpec& spec, const PaperCell& cell) {
   return report::ValueOf(spec.fit_weight, cell.column) > 0.0;
 }
 
@@ -31,7 +31,7 @@ struct Counts {
   int held_out_within = 0, held_out = 0;       // scored cells of held-out columns
 };
 
-Counts Count(const runner::CalibrationSpec& spec, const std::vector<PaperCell>& cells) {
+Counts Count(const schema::CalibrationSpec& spec, const std::vector<PaperCell>& cells) {
   Counts c;
   const report::PaperScore score = report::ScoreCells(cells);
   c.within = score.within, c.scored = score.cells, c.inside = score.inside_interval, c.with_interval = score.with_interval;
@@ -56,7 +56,7 @@ std::string Spread(const std::vector<int>& values) {
          std::to_string(*hi) + ")";
 }
 
-std::string Columns(const runner::CalibrationSpec& spec, bool fitted) {
+std::string Columns(const schema::CalibrationSpec& spec, bool fitted) {
   std::string text;
   for (report::PaperColumn column : report::kPaperColumns) {
     const double w = report::ValueOf(spec.fit_weight, column);
@@ -71,7 +71,7 @@ void WriteParameters(std::ostream& out, const CalibrationOutcome& o) {
   const std::vector<Evaluation>& all = o.log.evaluations();
   out << "## Parameters\n\n| key | bounds | provenance | as configured | calibrated |\n|---|---|---|---|---|\n";
   for (std::size_t p = 0; p < o.spec.parameters.size(); ++p) {
-    const runner::FreeParameter& parameter = o.spec.parameters[p];
+    const schema::FreeParameter& parameter = o.spec.parameters[p];
     out << "| `" << parameter.key << "` | [" << FormatNumber(parameter.min) << ", " << FormatNumber(parameter.max)
         << "] | " << parameter.provenance << " | " << all[o.result.hand].values[p] << " | "
         << all[o.result.best].values[p] << " |\n";
@@ -296,7 +296,7 @@ std::string CalibratedConfigYaml(const CalibrationOutcome& o, const std::string&
   // Keys in the spec's order, nested: each path's sections opened where they differ from the last.
   std::vector<std::string> open;
   for (std::size_t p = 0; p < o.spec.parameters.size(); ++p) {
-    const runner::FreeParameter& parameter = o.spec.parameters[p];
+    const schema::FreeParameter& parameter = o.spec.parameters[p];
     std::vector<std::string> parts;
     for (std::size_t start = 0;;) {
       const std::size_t dot = parameter.key.find('.', start);

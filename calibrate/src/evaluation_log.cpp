@@ -9,7 +9,7 @@
 #include "anchorbench/io/csv_reader.hpp"
 #include "anchorbench/io/format.hpp"
 #include "anchorbench/io/hash.hpp"
-#include "anchorbench/io/input_error.hpp"
+#include "anchorbench/schema/input_error.hpp"
 
 namespace anchorbench::calibrate {
 
@@ -71,7 +71,7 @@ int EvaluationLog::Reuse(const std::filesystem::path& path) {
   std::string header;
   std::getline(lines, header);
   if (header != Header()) {
-    throw io::InputError(path.string() + ":1: the log is of other parameters or cells (its header is not '" +
+    throw schema::InputError(path.string() + ":1: the log is of other parameters or cells (its header is not '" +
                          Header() + "')");
   }
   lines.seekg(0);
@@ -120,10 +120,10 @@ void EvaluationLog::AppendTo(const std::filesystem::path& path) {
     if (WholeLines(text) != text.size()) std::filesystem::resize_file(path, WholeLines(text), error);
   }
   file_.open(path, std::ios::app);
-  if (!file_) throw io::InputError(path.string() + ": cannot open the evaluation log for appending: " + std::strerror(errno));
+  if (!file_) throw schema::InputError(path.string() + ": cannot open the evaluation log for appending: " + std::strerror(errno));
   path_ = path;
   if (fresh) file_ << Header() << '\n' << std::flush;
-  if (!file_) throw io::InputError(path.string() + ": writing the evaluation log failed: " + std::strerror(errno));
+  if (!file_) throw schema::InputError(path.string() + ": writing the evaluation log failed: " + std::strerror(errno));
 }
 
 void EvaluationLog::Record(const Evaluation& evaluation, bool computed) {
@@ -131,7 +131,7 @@ void EvaluationLog::Record(const Evaluation& evaluation, bool computed) {
   known_[evaluation.values] = evaluation.ours;
   if (!computed || !file_.is_open()) return;
   file_ << Line(evaluations_.size() - 1) << '\n' << std::flush;
-  if (!file_) throw io::InputError(path_.string() + ": writing the evaluation log failed: " + std::strerror(errno));
+  if (!file_) throw schema::InputError(path_.string() + ": writing the evaluation log failed: " + std::strerror(errno));
 }
 
 }  // namespace anchorbench::calibrate

@@ -20,7 +20,7 @@ double Quantize(double u) { return std::round(std::clamp(u, 0.0, 1.0) * kGrid) /
 
 }  // namespace
 
-Fit::Fit(const runner::CalibrationSpec& spec, std::vector<report::PaperCell> targets, std::vector<double> hand_values,
+Fit::Fit(const schema::CalibrationSpec& spec, std::vector<report::PaperCell> targets, std::vector<double> hand_values,
          CellEvaluator evaluate, EvaluationLog* log, std::function<void(int, int)> progress)
     : spec_(spec),
       targets_(std::move(targets)),
@@ -29,7 +29,7 @@ Fit::Fit(const runner::CalibrationSpec& spec, std::vector<report::PaperCell> tar
       log_(log),
       progress_(std::move(progress)) {}
 
-std::string Fit::ValueText(const runner::FreeParameter& parameter, double u) {
+std::string Fit::ValueText(const schema::FreeParameter& parameter, double u) {
   char text[32];
   std::snprintf(text, sizeof(text), "%.6g", parameter.min + Quantize(u) * (parameter.max - parameter.min));
   return text;
@@ -82,7 +82,7 @@ std::size_t Fit::Best() const {
   return best;
 }
 
-void Fit::RunStage(const runner::OptimizerStage& stage, const std::string& name, std::vector<double>* u) {
+void Fit::RunStage(const schema::OptimizerStage& stage, const std::string& name, std::vector<double>* u) {
   if (stage.max_evaluations == 0) return;
   const unsigned dimension = static_cast<unsigned>(u->size());
   nlopt::opt optimizer(static_cast<nlopt::algorithm>(estimator::NloptSolver::AlgorithmNumber(stage.algorithm)),
@@ -122,7 +122,7 @@ FitResult Fit::Run() {
   std::vector<std::string> hand_texts;
   std::vector<double> hand_u;
   for (std::size_t p = 0; p < hand_values_.size(); ++p) {
-    const runner::FreeParameter& parameter = spec_.parameters[p];
+    const schema::FreeParameter& parameter = spec_.parameters[p];
     hand_texts.push_back(io::FormatNumber(hand_values_[p]));  // exactly the configured value
     hand_u.push_back((hand_values_[p] - parameter.min) / (parameter.max - parameter.min));
   }

@@ -24,7 +24,7 @@ double CellCost(const report::PaperCell& cell, double band) {
   return outside * outside;
 }
 
-double Objective(const std::vector<report::PaperCell>& cells, const runner::PaperCells& weight, bool held_out,
+double Objective(const std::vector<report::PaperCell>& cells, const schema::PaperCells& weight, bool held_out,
                  double band) {
   double sum = 0.0, weights = 0.0;
   for (const report::PaperCell& cell : cells) {

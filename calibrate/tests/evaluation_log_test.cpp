@@ -7,7 +7,7 @@
 #include <gtest/gtest.h>
 
 #include "anchorbench/io/hash.hpp"
-#include "anchorbench/io/input_error.hpp"
+#include "anchorbench/schema/input_error.hpp"
 
 namespace anchorbench::calibrate {
 namespace {
@@ -83,7 +83,7 @@ TEST_F(EvaluationLogTest, RefusesALogOfOtherParameters) {
   try {
     log.Reuse(path);
     FAIL() << "expected an error";
-  } catch (const io::InputError& e) {
+  } catch (const schema::InputError& e) {
     EXPECT_NE(std::string(e.what()).find("log.csv:1: the log is of other parameters or cells"), std::string::npos);
   }
 }
@@ -106,7 +106,7 @@ TEST_F(EvaluationLogTest, RefusesEditedLinesAndNamesTheLineToCut) {
     std::ofstream(path) << lines[0] << '\n' << line_2 << '\n' << lines[2] << '\n';
     try {
       Log().Reuse(path);
-    } catch (const io::InputError& e) {
+    } catch (const schema::InputError& e) {
       return std::string(e.what());
     }
     return std::string("accepted");
@@ -140,7 +140,7 @@ TEST_F(EvaluationLogTest, AFailedWriteSaysWhy) {
     log.AppendTo("/dev/full");
     log.Record(At("0.5", 0.25), true);
     FAIL() << "writing to /dev/full succeeded";
-  } catch (const io::InputError& e) {
+  } catch (const schema::InputError& e) {
     EXPECT_NE(std::string(e.what()).find("/dev/full: writing the evaluation log failed: No space left on device"),
               std::string::npos)
         << e.what();

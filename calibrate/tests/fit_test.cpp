@@ -18,8 +18,8 @@ using report::PaperColumn;
 
 // Two parameters and two cells whose log-ratios are linear in them: the objective is the quadratic
 // ((x - 3)^2 + 4 (y - 0.25)^2) / 2, least at x = 3, y = 0.25.
-runner::CalibrationSpec Spec() {
-  runner::CalibrationSpec spec;
+schema::CalibrationSpec Spec() {
+  schema::CalibrationSpec spec;
   spec.parameters = {{"scenario.x", 0.0, 10.0, "test"}, {"scenario.y", -1.0, 1.0, "test"}};
   spec.fit_weight = {1.0, 1.0, 0.0, 0.0, 0.0};
   spec.global = {"GN_DIRECT_L", 40};
@@ -31,7 +31,7 @@ std::vector<PaperCell> Targets() {
   std::vector<PaperCell> cells(2);
   cells[0].column = PaperColumn::kAvg, cells[0].paper = 1.0, cells[0].scored = true;
   cells[1].column = PaperColumn::kMed, cells[1].paper = 1.0, cells[1].scored = true;
-  for (PaperCell& c : cells) c.method = runner::kFixedWindowTrigger;
+  for (PaperCell& c : cells) c.method = schema::kFixedWindowTrigger;
   return cells;
 }
 
@@ -44,7 +44,7 @@ struct FitRun {
   std::vector<std::string> best_values;
 };
 
-FitRun Calibrate(const runner::CalibrationSpec& spec, const fs::path& reuse = {}, const fs::path& append = {}) {
+FitRun Calibrate(const schema::CalibrationSpec& spec, const fs::path& reuse = {}, const fs::path& append = {}) {
   FitRun run;
   EvaluationLog log({"scenario.x", "scenario.y"}, {"1.fixed.avg_m", "1.fixed.med_m"}, 1);
   if (!reuse.empty()) log.Reuse(reuse);
@@ -94,7 +94,7 @@ TEST(FitTest, AKilledRunResumesToTheSameEvaluations) {
 }
 
 TEST(FitTest, ValuesAreEvaluatedOnAGridAndPrintedAsEvaluated) {
-  const runner::FreeParameter p{"scenario.x", 6.0, 24.0, "test"};
+  const schema::FreeParameter p{"scenario.x", 6.0, 24.0, "test"};
   EXPECT_EQ(Fit::ValueText(p, 0.0), "6");
   EXPECT_EQ(Fit::ValueText(p, 1.0), "24");
   EXPECT_EQ(Fit::ValueText(p, 0.12344), "8.2212");  // u on the 1e-4 grid

@@ -28,7 +28,7 @@ TEST(ObjectiveTest, LogRatioIsSymmetricAndFloorsZeroCounts) {
 }
 
 TEST(ObjectiveTest, WeighsFittedColumnsAndHoldsOutTheRest) {
-  const runner::PaperCells weight{1.0, 3.0, 0.0, 0.0, 0.0};  // Avg 1, Med 3, the rest held out
+  const schema::PaperCells weight{1.0, 3.0, 0.0, 0.0, 0.0};  // Avg 1, Med 3, the rest held out
   const std::vector<PaperCell> cells{Cell(PaperColumn::kAvg, 1.0, std::exp(1.0)),
                                      Cell(PaperColumn::kMed, 1.0, std::exp(-2.0)),
                                      Cell(PaperColumn::kRatio, 10.0, std::nullopt)};
@@ -49,7 +49,7 @@ TEST(ObjectiveTest, ABandMakesCellsInsideItFree) {
 
 TEST(ObjectiveTest, PerfectMatchCostsNothing) {
   const std::vector<PaperCell> cells{Cell(PaperColumn::kAvg, 0.233, 0.233), Cell(PaperColumn::kInit, 1362, 1362)};
-  EXPECT_EQ(Objective(cells, runner::PaperCells{1, 1, 1, 0, 0}), 0.0);
+  EXPECT_EQ(Objective(cells, schema::PaperCells{1, 1, 1, 0, 0}), 0.0);
 }
 
 }  // namespace

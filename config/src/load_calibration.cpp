@@ -7,12 +7,12 @@
 #include "anchorbench/config/config_yaml.hpp"
 #include "anchorbench/config/yaml_section.hpp"
 #include "anchorbench/estimator/nlopt_solver.hpp"
-#include "anchorbench/io/input_error.hpp"
+#include "anchorbench/schema/input_error.hpp"
 
 namespace anchorbench::config {
 namespace {
 
-void Stage(YamlSection& s, runner::OptimizerStage& stage) {
+void Stage(YamlSection& s, schema::OptimizerStage& stage) {
   s.Text("algorithm", stage.algorithm);
   s.Integer("max_evaluations", stage.max_evaluations, 0, 100000);
   std::string why;
@@ -27,7 +27,7 @@ void Stage(YamlSection& s, runner::OptimizerStage& stage) {
   if (!estimator::NloptSolver::Accepts(stage.algorithm, &why)) s.Fail("algorithm", why);
 }
 
-void Parameter(YamlSection& s, runner::FreeParameter& p) {
+void Parameter(YamlSection& s, schema::FreeParameter& p) {
   s.Text("key", p.key);
   s.Number("min", p.min);
   s.Number("max", p.max);
@@ -49,8 +49,8 @@ std::vector<std::uint64_t> Seeds(YamlSection& s, std::string_view key, std::vect
   for (const std::string& text : texts) {
     std::uint64_t seed = 0;
     const auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), seed);
-    if (text.empty() || ec != std::errc() || end != text.data() + text.size() || seed > runner::kMaxSeed) {
-      s.Fail(key, "'" + text + "' is not a seed (a whole number from 0 to " + std::to_string(runner::kMaxSeed) + ")");
+    if (text.empty() || ec != std::errc() || end != text.data() + text.size() || seed > schema::kMaxSeed) {
+      s.Fail(key, "'" + text + "' is not a seed (a whole number from 0 to " + std::to_string(schema::kMaxSeed) + ")");
     }
     if (std::find(seeds.begin(), seeds.end(), seed) != seeds.end()) s.Fail(key, "seed " + text + " is listed twice");
     seeds.push_back(seed);
@@ -61,15 +61,15 @@ std::vector<std::uint64_t> Seeds(YamlSection& s, std::string_view key, std::vect
 
 }  // namespace
 
-runner::CalibrationSpec LoadCalibrationSpec(const std::string& path) {
+schema::CalibrationSpec LoadCalibrationSpec(const std::string& path) {
   const YAML::Node root = LoadConfigYaml(path, {});
-  runner::CalibrationSpec spec;
+  schema::CalibrationSpec spec;
   spec.path = path;
   YamlSection top(root, "", path);
   if (!top.Has("experiment")) top.FailSection("'experiment' is missing: the experiment file to calibrate");
   top.Text("experiment", spec.experiment_path);
   spec.experiment_path = (std::filesystem::path(path).parent_path() / spec.experiment_path).lexically_normal().string();
-  top.Unsigned("seed", spec.seed, runner::kMaxSeed);
+  top.Unsigned("seed", spec.seed, schema::kMaxSeed);
   top.Integer("realizations", spec.realizations, 1, 100000000);
   spec.verify_seeds = Seeds(top, "verify_seeds", spec.verify_seeds);
   if (std::find(spec.verify_seeds.begin(), spec.verify_seeds.end(), spec.seed) != spec.verify_seeds.end()) {
@@ -82,7 +82,7 @@ runner::CalibrationSpec LoadCalibrationSpec(const std::string& path) {
     s.Number("init", spec.fit_weight.init, kWeight);
     s.Number("gt1m", spec.fit_weight.gt1m, kWeight);
     s.Number("ratio_pct", spec.fit_weight.ratio_pct, kWeight);
-    const runner::PaperCells& w = spec.fit_weight;
+    const schema::PaperCells& w = spec.fit_weight;
     if (w.avg_m + w.med_m + w.init + w.gt1m + w.ratio_pct <= 0.0) s.FailSection("every weight is 0: nothing to fit");
   });
   top.Number("band", spec.band, {0.0, 0.9});
@@ -90,7 +90,7 @@ runner::CalibrationSpec LoadCalibrationSpec(const std::string& path) {
   top.Section("local", [&](YamlSection& s) { Stage(s, spec.local); });
   top.Number("profile_step", spec.profile_step, {0.0, 0.4, true});
   if (!top.Has("parameters")) top.FailSection("'parameters' is missing: the scenario keys to fit, with bounds");
-  top.List("parameters", spec.parameters, [] { return runner::FreeParameter{}; }, Parameter);
+  top.List("parameters", spec.parameters, [] { return schema::FreeParameter{}; }, Parameter);
   if (spec.parameters.empty()) top.Fail("parameters", "expected at least one parameter");
   for (std::size_t i = 0; i < spec.parameters.size(); ++i) {
     for (std::size_t j = 0; j < i; ++j) {
@@ -109,14 +109,14 @@ double NumberAt(const std::string& resolved_yaml, const std::string& key, const 
   while (true) {
     const std::size_t dot = key.find('.', start);
     const std::string part = key.substr(start, dot == std::string::npos ? std::string::npos : dot - start);
-    if (!node.IsMap() || !node[part]) throw io::InputError(what + ": '" + key + "' is not a key of the experiment");
+    if (!node.IsMap() || !node[part]) throw schema::InputError(what + ": '" + key + "' is not a key of the experiment");
     node.reset(node[part]);
     if (dot == std::string::npos) break;
     start = dot + 1;
   }
   double value = 0.0;
   if (!node.IsScalar() || !YAML::convert<double>::decode(node, value)) {
-    throw io::InputError(what + ": '" + key + "' is not a number in the experiment");
+    throw schema::InputError(what + ": '" + key + "' is not a number in the experiment");
   }
   return value;
 }

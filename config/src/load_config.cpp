@@ -7,7 +7,7 @@
 #include "anchorbench/config/config_yaml.hpp"
 #include "anchorbench/config/yaml_section.hpp"
 #include "anchorbench/io/format.hpp"
-#include "anchorbench/io/input_error.hpp"
+#include "anchorbench/schema/input_error.hpp"
 #include "visitors.hpp"
 
 namespace anchorbench::config {
@@ -62,12 +62,12 @@ std::string YamlToJson(const YAML::Node& node, int indent) {
 
 namespace {
 
-runner::ExperimentConfig FromYaml(const YAML::Node& root, const std::string& path,
+schema::ExperimentConfig FromYaml(const YAML::Node& root, const std::string& path,
                                   const registry::Components& components) {
-  runner::ExperimentConfig config;
+  schema::ExperimentConfig config;
   config.name = std::filesystem::path(path).stem().string();
   if (root.IsMap() && root["experiment"]) {
-    throw io::InputError(path + ": is a calibration file (key 'experiment'), not an experiment: run it with "
+    throw schema::InputError(path + ": is a calibration file (key 'experiment'), not an experiment: run it with "
                                 "`anchorbench calibrate`");
   }
   YamlSection top(root, "", path);
@@ -75,7 +75,7 @@ runner::ExperimentConfig FromYaml(const YAML::Node& root, const std::string& pat
   top.Finish();
   for (const std::string& name : config.only_rows) {
     const bool known =
-        std::any_of(config.rows.begin(), config.rows.end(), [&](const runner::RowConfig& r) { return r.name == name; });
+        std::any_of(config.rows.begin(), config.rows.end(), [&](const schema::RowConfig& r) { return r.name == name; });
     if (!known) top.Fail("only_rows", "no row named '" + name + "'");
   }
   return config;
@@ -83,23 +83,23 @@ runner::ExperimentConfig FromYaml(const YAML::Node& root, const std::string& pat
 
 }  // namespace
 
-runner::ExperimentConfig LoadConfig(const std::string& path, const std::vector<std::string>& overrides,
+schema::ExperimentConfig LoadConfig(const std::string& path, const std::vector<std::string>& overrides,
                                     const registry::Components& components) {
   return FromYaml(LoadConfigYaml(path, overrides), path, components);
 }
 
-runner::ExperimentConfig LoadConfigText(const std::string& text, const std::string& source,
+schema::ExperimentConfig LoadConfigText(const std::string& text, const std::string& source,
                                         const std::vector<std::string>& overrides,
                                         const registry::Components& components) {
   return FromYaml(LoadConfigYamlText(text, source, overrides), source, components);
 }
 
-registry::EstimatorConfig LoadEstimatorConfig(const std::string& path, const registry::Components& components) {
+schema::EstimatorConfig LoadEstimatorConfig(const std::string& path, const registry::Components& components) {
   return LoadConfig(path, {}, components).estimator;
 }
 
-std::string ToYaml(const runner::ExperimentConfig& config) {
-  runner::ExperimentConfig copy = config;
+std::string ToYaml(const schema::ExperimentConfig& config) {
+  schema::ExperimentConfig copy = config;
   YAML::Node root(YAML::NodeType::Map);
   YamlWriter writer(root);
   const registry::Components no_parts;  // the writer does not check names
@@ -109,7 +109,7 @@ std::string ToYaml(const runner::ExperimentConfig& config) {
   return out.c_str();
 }
 
-std::string ToJson(const runner::ExperimentConfig& config, int indent) {
+std::string ToJson(const schema::ExperimentConfig& config, int indent) {
   return YamlToJson(YAML::Load(ToYaml(config)), indent);
 }
 

@@ -8,7 +8,7 @@
 #include <string>
 
 #include "anchorbench/registry/components.hpp"
-#include "anchorbench/runner/experiment.hpp"
+#include "anchorbench/schema/experiment.hpp"
 
 namespace anchorbench::config::visit {
 
@@ -97,7 +97,7 @@ void Scenario(V& v, sim::ScenarioOptions& o) {
 }
 
 template <typename V>
-void Filter(V& v, registry::FilterConfig& o, const registry::Components& parts) {
+void Filter(V& v, schema::FilterConfig& o, const registry::Components& parts) {
   v.Name("kind", o.kind, [&](const std::string& name, std::string* why) { return parts.filters.Knows(name, why); });
   v.Number("tau_m", o.consistency.tau_m);
   v.Integer("reseed_after_rejections", o.consistency.reseed_after_rejections);
@@ -117,7 +117,7 @@ void Filter(V& v, registry::FilterConfig& o, const registry::Components& parts) 
 
 // `trigger`: when and how often an initializer may solve, and how much it keeps.
 template <typename V>
-void Trigger(V& v, registry::EstimatorConfig& o) {
+void Trigger(V& v, schema::EstimatorConfig& o) {
   v.Number("pdop_threshold", o.trigger.pdop_threshold);
   v.Integer("min_samples", o.initializer.min_samples);
   v.Number("retry_growth", o.initializer.retry_growth);
@@ -175,7 +175,7 @@ void Covariance(V& v, estimator::CovarianceOptions& o) {
 }
 
 template <typename V>
-void Estimator(V& v, registry::EstimatorConfig& o, const registry::Components& parts) {
+void Estimator(V& v, schema::EstimatorConfig& o, const registry::Components& parts) {
   v.Name("solver", o.solver, [&](const std::string& name, std::string* why) { return parts.solvers.Knows(name, why); });
   v.NameList("triggers", o.triggers,
              [&](const std::string& name, std::string* why) { return parts.triggers.Knows(name, why); });
@@ -222,7 +222,7 @@ void Estimator(V& v, registry::EstimatorConfig& o, const registry::Components& p
 }
 
 template <typename V>
-void PaperCells(V& v, runner::PaperCells& cells) {
+void Cells(V& v, schema::PaperCells& cells) {
   constexpr Bounds kNonNegative{0.0};
   v.Number("avg_m", cells.avg_m, kNonNegative);
   v.Number("med_m", cells.med_m, kNonNegative);
@@ -232,19 +232,19 @@ void PaperCells(V& v, runner::PaperCells& cells) {
 }
 
 template <typename V>
-void Row(V& v, runner::RowConfig& row, const registry::Components& parts) {
+void Row(V& v, schema::RowConfig& row, const registry::Components& parts) {
   v.Label("name", row.name);
   v.Section("scenario", [&](auto& s) { Scenario(s, row.scenario); });
   v.Section("estimator", [&](auto& s) { Estimator(s, row.estimator, parts); });
-  v.OptionalSection("paper", row.paper, [](auto& s, runner::PaperRow& paper) {
-    s.Section("fixed", [&](auto& cells) { PaperCells(cells, paper.fixed); });
-    s.Section("gated", [&](auto& cells) { PaperCells(cells, paper.gated); });
+  v.OptionalSection("paper", row.paper, [](auto& s, schema::PaperRow& paper) {
+    s.Section("fixed", [&](auto& cells) { Cells(cells, paper.fixed); });
+    s.Section("gated", [&](auto& cells) { Cells(cells, paper.gated); });
   });
 }
 
 template <typename V>
-void Experiment(V& v, runner::ExperimentConfig& c, const registry::Components& parts) {
-  v.Unsigned("seed", c.seed, runner::kMaxSeed);
+void Experiment(V& v, schema::ExperimentConfig& c, const registry::Components& parts) {
+  v.Unsigned("seed", c.seed, schema::kMaxSeed);
   v.Integer("realizations", c.realizations, 1, 100000000);
   v.Integer("bootstrap_resamples", c.bootstrap_resamples, 0, 1000000);
   v.Section("scenario", [&](auto& s) { Scenario(s, c.scenario); });
@@ -254,8 +254,8 @@ void Experiment(V& v, runner::ExperimentConfig& c, const registry::Components& p
   // Rows start from the base read above, so the base must come first in the visit.
   int index = 0;
   v.List("rows", c.rows,
-         [&] { return runner::RowConfig{std::to_string(++index), c.scenario, c.estimator, std::nullopt}; },
-         [&](auto& s, runner::RowConfig& row) { Row(s, row, parts); });
+         [&] { return schema::RowConfig{std::to_string(++index), c.scenario, c.estimator, std::nullopt}; },
+         [&](auto& s, schema::RowConfig& row) { Row(s, row, parts); });
 }
 
 }  // namespace anchorbench::config::visit

@@ -16,9 +16,9 @@ std::optional<double> Nees(const Eigen::VectorXd& error, const Eigen::MatrixXd& 
   return std::isfinite(nees) ? std::optional(nees) : std::nullopt;
 }
 
-AttemptEvaluation Evaluate(std::span<const Eigen::Vector3d> p_world_tag_used, const estimator::SolveResult* estimate,
-                           const AnchorTruth& truth) {
-  AttemptEvaluation evaluation;
+schema::AttemptEvaluation Evaluate(std::span<const Eigen::Vector3d> p_world_tag_used, const estimator::SolveResult* estimate,
+                           const schema::AnchorTruth& truth) {
+  schema::AttemptEvaluation evaluation;
   TrueGeometry geometry(truth.p_world_anchor);
   for (const Eigen::Vector3d& p : p_world_tag_used) geometry.Add(p);
   evaluation.pdop_true = geometry.Pdop();

@@ -40,7 +40,7 @@ TEST(Credibility, BoundsAndQuantilesMatchTheChiSquareTables) {
 // Many noise realizations of one clean geometry, solved by lm_l2, evaluated as a run would be.
 std::vector<double> PositionNees(double covariance_scale) {
   constexpr int kRuns = 400;
-  const AnchorTruth truth{Eigen::Vector3d(2, -1, 3), 0.2};
+  const schema::AnchorTruth truth{Eigen::Vector3d(2, -1, 3), 0.2};
   constexpr double kSigma = 0.1;
   estimator::AnchorSolverOptions options;
   options.nls.kernel = estimator::KernelMode::kL2;
@@ -55,7 +55,7 @@ std::vector<double> PositionNees(double covariance_scale) {
     for (double& d : data.range_m) d += kSigma * noise.Normal();
     estimator::SolveResult result = solver.Solve(data.p_world_tag, data.range_m);
     result.covariance *= covariance_scale;
-    const AttemptEvaluation e = Evaluate(data.p_world_tag, &result, truth);
+    const schema::AttemptEvaluation e = Evaluate(data.p_world_tag, &result, truth);
     nees.push_back(*e.nees_position);
   }
   return nees;

@@ -12,8 +12,8 @@ namespace {
 
 const Eigen::Vector3d kAnchor(0, 4, 3);
 
-registry::EstimatorConfig Unfiltered() {
-  registry::EstimatorConfig config;
+schema::EstimatorConfig Unfiltered() {
+  schema::EstimatorConfig config;
   config.filter.kind = "none";
   return config;
 }
@@ -21,7 +21,7 @@ registry::EstimatorConfig Unfiltered() {
 // The sample index where `trigger` fires, and where `measure` of the samples so far at the true
 // anchor first drops below `threshold` (at or after min_samples = 20).
 template <typename Measure>
-std::pair<int, int> FiredAndExpected(const std::string& trigger, const registry::EstimatorConfig& config,
+std::pair<int, int> FiredAndExpected(const std::string& trigger, const schema::EstimatorConfig& config,
                                      Measure measure, double threshold) {
   const auto samples = testing::PassBy(kAnchor, 0.05, 2);
   const registry::Components components = MakeComponentsWithOracles();
@@ -49,7 +49,7 @@ TEST(Oracles, TruePdopFiresWhereTheTruePdopFirstDropsBelowTheThreshold) {
 
 // dop4_true: the same with the bias-aware DOP, which is never below the PDOP.
 TEST(Oracles, TrueBiasAwareDopFiresWhereItFirstDropsBelowItsThreshold) {
-  registry::EstimatorConfig config = Unfiltered();
+  schema::EstimatorConfig config = Unfiltered();
   config.trigger.bias_aware_threshold = 1.2;
   const auto [fired, expected] = FiredAndExpected("dop4_true", config, BiasAwareDop, 1.2);
   ASSERT_GE(expected, 0);
@@ -73,12 +73,12 @@ TEST(AttemptEvaluation, ErrorsAndDopsAgainstTheTruth) {
   estimator::SolveResult estimate;
   estimate.p_world_anchor = kAnchor + Eigen::Vector3d(0.3, 0.0, -0.4);
   estimate.bias_m = 0.25;
-  const AttemptEvaluation initialized = Evaluate(data.p_world_tag, &estimate, {kAnchor, 0.2});
+  const schema::AttemptEvaluation initialized = Evaluate(data.p_world_tag, &estimate, {kAnchor, 0.2});
   EXPECT_DOUBLE_EQ(*initialized.error_m, 0.5);  // a 3-4-5 triangle, in decimetres
   EXPECT_NEAR(*initialized.bias_error_m, 0.05, 1e-12);
   EXPECT_DOUBLE_EQ(initialized.pdop_true, TruePdop(data.p_world_tag, kAnchor));
   EXPECT_DOUBLE_EQ(*initialized.bias_aware_dop, BiasAwareDop(data.p_world_tag, kAnchor));
-  const AttemptEvaluation missed = Evaluate(data.p_world_tag, nullptr, {kAnchor, std::nullopt});
+  const schema::AttemptEvaluation missed = Evaluate(data.p_world_tag, nullptr, {kAnchor, std::nullopt});
   EXPECT_FALSE(missed.error_m || missed.error_xyz_m || missed.bias_error_m);
 }
 

@@ -9,7 +9,7 @@
 
 #include "anchorbench/config/load_config.hpp"
 #include "anchorbench/eval/oracles.hpp"
-#include "anchorbench/io/input_error.hpp"
+#include "anchorbench/schema/input_error.hpp"
 #include "anchorbench/report/summary.hpp"
 #include "anchorbench/runner/monte_carlo.hpp"
 
@@ -62,18 +62,18 @@ int main(int argc, char** argv) {
                                 return std::make_unique<ThirdsCauchySolver>(context.options);
                               });
   try {
-    const ab::runner::ExperimentConfig ours = ab::config::LoadConfig(argv[1], {}, components);
-    const ab::runner::ExperimentConfig paper = ab::config::LoadConfig(argv[1], {"estimator.solver=lm_adaptive"}, components);
-    for (const ab::runner::ExperimentConfig* config : {&ours, &paper}) {
+    const ab::schema::ExperimentConfig ours = ab::config::LoadConfig(argv[1], {}, components);
+    const ab::schema::ExperimentConfig paper = ab::config::LoadConfig(argv[1], {"estimator.solver=lm_adaptive"}, components);
+    for (const ab::schema::ExperimentConfig* config : {&ours, &paper}) {
       const auto attempts = ab::runner::RunMonteCarlo(*config, components, {2, nullptr});
-      const auto rows = ab::runner::RowsOf(*config);
+      const auto rows = ab::schema::RowsOf(*config);
       for (const auto& s : ab::report::Summarize(attempts, rows, config->realizations, 0, config->seed)) {
-        if (s.method != ab::runner::kPaperTrigger) continue;
+        if (s.method != ab::schema::kPaperTrigger) continue;
         std::printf("%-18s row %-8s gated: %4d initialized, mean error %s m\n", config->estimator.solver.c_str(),
                     rows[s.row].name.c_str(), s.init, s.avg_m ? std::to_string(*s.avg_m).c_str() : "-");
       }
     }
-  } catch (const ab::io::InputError& e) {
+  } catch (const ab::schema::InputError& e) {
     std::fprintf(stderr, "custom_solver: %s\n", e.what());
     return 2;
   }

@@ -4,7 +4,7 @@
 
 #include <cstdlib>
 
-#include "anchorbench/io/input_error.hpp"
+#include "anchorbench/schema/input_error.hpp"
 #include "anchorbench/io/result_folder.hpp"
 
 namespace anchorbench::io {
@@ -16,7 +16,7 @@ fs::path Temporary(const fs::path& target, bool overwrite, const std::vector<fs:
   RefuseToReplaceInputs(target, inputs);
   std::error_code error;
   if (fs::exists(target, error) && !overwrite) {
-    throw InputError(target.string() + ": exists; add --overwrite to replace it");
+    throw schema::InputError(target.string() + ": exists; add --overwrite to replace it");
   }
   // The temporaries of killed runs: <target>.tmp.<pid> of processes that are gone.
   const std::string prefix = target.filename().string() + ".tmp.";
@@ -47,7 +47,7 @@ void AtomicFile::Commit() {
   file_.Close();
   std::error_code error;
   fs::rename(file_.path(), target_, error);
-  if (error) throw InputError(target_.string() + ": cannot put the new file in place: " + error.message());
+  if (error) throw schema::InputError(target_.string() + ": cannot put the new file in place: " + error.message());
   SyncFolder(target_.has_parent_path() ? target_.parent_path() : fs::path("."));
   committed_ = true;
 }

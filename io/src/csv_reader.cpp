@@ -6,7 +6,7 @@
 #include <cmath>
 
 #include "anchorbench/io/format.hpp"
-#include "anchorbench/io/input_error.hpp"
+#include "anchorbench/schema/input_error.hpp"
 
 namespace anchorbench::io {
 namespace {
@@ -37,9 +37,9 @@ std::string_view Unquoted(std::string_view name) {
 
 std::ifstream OpenForReading(const std::string& path) {
   std::error_code error;
-  if (std::filesystem::is_directory(path, error)) throw InputError(path + ": is a folder, not a file");
+  if (std::filesystem::is_directory(path, error)) throw schema::InputError(path + ": is a folder, not a file");
   std::ifstream in(path, std::ios::binary);
-  if (!in) throw InputError(path + ": cannot open the file");
+  if (!in) throw schema::InputError(path + ": cannot open the file");
   return in;
 }
 
@@ -72,7 +72,7 @@ bool CsvReader::ReadLine(std::string& line) {
 
 CsvReader::CsvReader(std::istream& in, std::string source) : in_(in), source_(std::move(source)) {
   std::string header_line;
-  if (!ReadLine(header_line)) throw InputError(source_ + ":1: empty file, expected a header line");
+  if (!ReadLine(header_line)) throw schema::InputError(source_ + ":1: empty file, expected a header line");
   line_ = 1;
   if (header_line.size() >= 3 && header_line.compare(0, 3, "\xEF\xBB\xBF") == 0) header_line.erase(0, 3);  // UTF-8 BOM
   Split(header_line, fields_);
@@ -93,13 +93,13 @@ int CsvReader::Column(std::initializer_list<std::string_view> names) const {
   if (index >= 0) return index;
   std::string listed;
   for (std::string_view name : names) listed += (listed.empty() ? "'" : " or '") + std::string(name) + "'";
-  throw InputError(source_ + ":1: missing column " + listed);
+  throw schema::InputError(source_ + ":1: missing column " + listed);
 }
 
 void CsvReader::Fail(const std::string& message) const { FailAt(line_, message); }
 
 void CsvReader::FailAt(int line, const std::string& message) const {
-  throw InputError(source_ + ":" + std::to_string(line) + ": " + message);
+  throw schema::InputError(source_ + ":" + std::to_string(line) + ": " + message);
 }
 
 bool CsvReader::Next() {

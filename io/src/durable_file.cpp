@@ -7,7 +7,7 @@
 #include <cerrno>
 #include <cstring>
 
-#include "anchorbench/io/input_error.hpp"
+#include "anchorbench/schema/input_error.hpp"
 #include "anchorbench/io/reservation.hpp"
 
 namespace anchorbench::io {
@@ -67,7 +67,7 @@ DurableFile::~DurableFile() {
 }
 
 void DurableFile::Fail(const std::string& what, int error) const {
-  throw InputError(shown_as_ + ": " + what + (error != 0 ? std::string(": ") + std::strerror(error) : ""));
+  throw schema::InputError(shown_as_ + ": " + what + (error != 0 ? std::string(": ") + std::strerror(error) : ""));
 }
 
 void DurableFile::Close() {

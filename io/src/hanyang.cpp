@@ -8,7 +8,7 @@
 #include <Eigen/Core>
 
 #include "anchorbench/io/csv_reader.hpp"
-#include "anchorbench/io/input_error.hpp"
+#include "anchorbench/schema/input_error.hpp"
 
 namespace anchorbench::io {
 namespace {
@@ -29,15 +29,15 @@ std::vector<std::filesystem::path> AnchorFiles(const std::filesystem::path& case
     const std::string name = entry.path().filename().string();
     if (name.size() > 5 && name[0] == 'A' && entry.path().extension() == ".csv") files.push_back(entry.path());
   }
-  if (error) throw InputError(case_folder.string() + ": cannot read the folder: " + error.message());
+  if (error) throw schema::InputError(case_folder.string() + ": cannot read the folder: " + error.message());
   std::sort(files.begin(), files.end());
-  if (files.empty()) throw InputError(case_folder.string() + ": no anchor files (A<id>.csv)");
+  if (files.empty()) throw schema::InputError(case_folder.string() + ": no anchor files (A<id>.csv)");
   return files;
 }
 
 // Every anchor file's ranges, merged in stamp order, and each anchor's surveyed position.
 std::vector<StampedRange> ReadAnchorFiles(const std::vector<std::filesystem::path>& files,
-                                          std::map<int, eval::AnchorTruth>& anchors) {
+                                          std::map<int, schema::AnchorTruth>& anchors) {
   std::vector<StampedRange> ranges;
   for (const auto& path : files) {
     std::ifstream in = OpenForReading(path.string());
@@ -48,7 +48,7 @@ std::vector<StampedRange> ReadAnchorFiles(const std::vector<std::filesystem::pat
     while (csv.Next()) {
       const int anchor_id = csv.Integer(id);
       const Eigen::Vector3d p(csv.Number(x), csv.Number(y), csv.Number(z));
-      const auto [it, inserted] = anchors.emplace(anchor_id, eval::AnchorTruth{p, std::nullopt});
+      const auto [it, inserted] = anchors.emplace(anchor_id, schema::AnchorTruth{p, std::nullopt});
       if (!inserted && (it->second.p_world_anchor - p).norm() > 1e-9) {
         csv.Fail("anchor " + std::to_string(anchor_id) + " moved");
       }
@@ -87,7 +87,7 @@ HanyangCase ConvertHanyangCase(const std::filesystem::path& case_folder) {
   Recording& recording = converted.recording;
   const std::vector<StampedRange> stamped = ReadAnchorFiles(AnchorFiles(case_folder), recording.anchors);
   recording.poses = ReadTrajectory(case_folder / "trajectory.csv", &converted.dropped_poses);
-  if (recording.poses.empty() || stamped.empty()) throw InputError(case_folder.string() + ": no poses or no ranges");
+  if (recording.poses.empty() || stamped.empty()) throw schema::InputError(case_folder.string() + ": no poses or no ranges");
 
   // Seconds since the case's earliest stamp.
   const double t0_ns = std::min(recording.poses.front().t_s, stamped.front().stamp_ns);

@@ -6,7 +6,7 @@
 #include <cstring>
 
 #include "anchorbench/io/format.hpp"
-#include "anchorbench/io/input_error.hpp"
+#include "anchorbench/schema/input_error.hpp"
 
 namespace anchorbench::io {
 namespace {
@@ -236,7 +236,7 @@ RangeStream::RangeStream(std::istream& in, std::string source, int file_index, c
   tag_ = default_tag_id_ ? csv_.OptionalColumn({"tag_id", "ID_Tag", "tag"}) : csv_.Column({"tag_id", "ID_Tag", "tag"});
   anchor_ = csv_.OptionalColumn({"anchor_id", "ID_Anchor", "anchor"});
   if (anchor_ < 0 && !file_anchor_id_) {
-    throw InputError(csv_.source() + ":1: missing column 'anchor_id' (or 'ID_Anchor', 'anchor'), and the file's "
+    throw schema::InputError(csv_.source() + ":1: missing column 'anchor_id' (or 'ID_Anchor', 'anchor'), and the file's "
                                      "name does not end in an anchor number");
   }
   range_ = csv_.Column({"range", "range_m", "distance", "distance_m", "dist"});
@@ -341,7 +341,7 @@ LogSurvey SurveyLog(const LogFiles& files, const LogPolicy& policy, const BytePr
     survey.reordered_rows += poses.reordered();
     before += poses.bytes_read();
   }
-  if (survey.tag_ids.empty()) throw InputError(files.poses + ": no poses");
+  if (survey.tag_ids.empty()) throw schema::InputError(files.poses + ": no poses");
   if (survey.tag_ids.size() == 1) survey.default_tag_id = *survey.tag_ids.begin();
   for (std::size_t f = 0; f < files.ranges.size(); ++f) {
     std::ifstream in = OpenForReading(files.ranges[f]);
@@ -350,7 +350,7 @@ LogSurvey SurveyLog(const LogFiles& files, const LogPolicy& policy, const BytePr
     RangeRecord range;
     while (ranges.Next(range)) {
       if (survey.anchor_ids.insert(range.anchor_id).second && survey.anchor_ids.size() > policy.max_anchors) {
-        throw InputError(files.ranges[f] + ":" + std::to_string(range.line) + ": anchor " +
+        throw schema::InputError(files.ranges[f] + ":" + std::to_string(range.line) + ": anchor " +
                          std::to_string(range.anchor_id) + " is a distinct anchor beyond the " +
                          std::to_string(policy.max_anchors) + " anchors a log may hold (the front end's max_anchors)");
       }

@@ -4,7 +4,7 @@
 #include <initializer_list>
 
 #include "anchorbench/io/format.hpp"
-#include "anchorbench/io/input_error.hpp"
+#include "anchorbench/schema/input_error.hpp"
 
 namespace anchorbench::io {
 namespace {
@@ -95,7 +95,7 @@ LogTime::LogTime(const CsvReader& csv) {
       return;
     }
   }
-  throw InputError(csv.source() + ":1: missing a time column: t (or time, timestamp, stamp) in seconds or as ISO-8601 "
+  throw schema::InputError(csv.source() + ":1: missing a time column: t (or time, timestamp, stamp) in seconds or as ISO-8601 "
                                   "dates, or t_ms, t_us, t_ns (docs/real_data.md)");
 }
 

@@ -2,7 +2,7 @@
 
 #include "anchorbench/io/csv_reader.hpp"
 #include "anchorbench/io/format.hpp"
-#include "anchorbench/io/input_error.hpp"
+#include "anchorbench/schema/input_error.hpp"
 #include "anchorbench/io/log_reader.hpp"
 
 namespace anchorbench::io {
@@ -22,7 +22,7 @@ std::vector<PoseRecord> ReadPoses(std::istream& in, const std::string& source, c
   PoseStream stream(in, source, Effective(policy, drops), drops ? *drops : unused);
   std::vector<PoseRecord> poses;
   for (PoseRecord pose; stream.Next(pose);) poses.push_back(pose);
-  if (poses.empty()) throw InputError(source + ": no poses");
+  if (poses.empty()) throw schema::InputError(source + ": no poses");
   return poses;
 }
 
@@ -36,19 +36,19 @@ std::vector<RangeRecord> ReadRanges(std::istream& in, const std::string& source,
   return ranges;
 }
 
-std::map<int, eval::AnchorTruth> ReadAnchors(std::istream& in, const std::string& source) {
+std::map<int, schema::AnchorTruth> ReadAnchors(std::istream& in, const std::string& source) {
   CsvReader csv(in, source);
   const int id = csv.Column({"anchor_id", "ID_Anchor"});
   const int x = csv.Column({"x"}), y = csv.Column({"y"}), z = csv.Column({"z"});
   const int bias = csv.OptionalColumn({"bias"});
-  std::map<int, eval::AnchorTruth> anchors;
+  std::map<int, schema::AnchorTruth> anchors;
   while (csv.Next()) {
     const int anchor_id = csv.Integer(id);
-    eval::AnchorTruth truth{Eigen::Vector3d(csv.Number(x), csv.Number(y), csv.Number(z)), std::nullopt};
+    schema::AnchorTruth truth{Eigen::Vector3d(csv.Number(x), csv.Number(y), csv.Number(z)), std::nullopt};
     if (bias >= 0 && !csv.Empty(bias)) truth.bias_m = csv.Number(bias);
     if (!anchors.emplace(anchor_id, truth).second) csv.Fail("anchor " + std::to_string(anchor_id) + " listed twice");
   }
-  if (anchors.empty()) throw InputError(source + ": no anchors (a header alone?)");
+  if (anchors.empty()) throw schema::InputError(source + ": no anchors (a header alone?)");
   return anchors;
 }
 
@@ -62,7 +62,7 @@ std::vector<RangeRecord> LoadRanges(const std::string& path, const LogPolicy& po
   return ReadRanges(in, path, policy, drops);
 }
 
-std::map<int, eval::AnchorTruth> LoadAnchors(const std::string& path) {
+std::map<int, schema::AnchorTruth> LoadAnchors(const std::string& path) {
   std::ifstream in = OpenForReading(path);
   return ReadAnchors(in, path);
 }

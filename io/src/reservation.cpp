@@ -7,7 +7,7 @@
 #include <cstring>
 #include <utility>
 
-#include "anchorbench/io/input_error.hpp"
+#include "anchorbench/schema/input_error.hpp"
 
 namespace anchorbench::io {
 
@@ -23,7 +23,7 @@ Reservation::Reservation(std::filesystem::path file, std::uintmax_t bytes, const
   if (fd >= 0) ::close(fd);
   if (reserved != 0) {
     Release();
-    throw InputError(what + ": " + kind + " need about " + SizeText(bytes) + ": " + std::strerror(reserved));
+    throw schema::InputError(what + ": " + kind + " need about " + SizeText(bytes) + ": " + std::strerror(reserved));
   }
 }
 

@@ -11,7 +11,7 @@
 #include <string_view>
 
 #include "anchorbench/io/durable_file.hpp"
-#include "anchorbench/io/input_error.hpp"
+#include "anchorbench/schema/input_error.hpp"
 
 namespace anchorbench::io {
 namespace fs = std::filesystem;
@@ -71,31 +71,31 @@ ResultFolder::ResultFolder(fs::path target, const Options& options) : target_(st
   const std::string name = target_.string();
   for (const fs::path& input : options.inputs) {
     if (IsInside(input, target_)) {
-      throw InputError(name + ": holds " + input.string() + ", an input of this run; choose another output folder");
+      throw schema::InputError(name + ": holds " + input.string() + ", an input of this run; choose another output folder");
     }
   }
   for (const fs::path& input : options.input_folders) {
     if (IsInside(target_, input)) {
-      throw InputError(name + ": lies inside " + input.string() + ", an input of this run; choose another output folder");
+      throw schema::InputError(name + ": lies inside " + input.string() + ", an input of this run; choose another output folder");
     }
   }
   std::error_code error;
-  if (fs::exists(target_, error) && !fs::is_directory(target_, error)) throw InputError(name + ": exists and is not a folder");
+  if (fs::exists(target_, error) && !fs::is_directory(target_, error)) throw schema::InputError(name + ": exists and is not a folder");
   if (HoldsFiles(target_) && !options.overwrite) {
-    throw InputError(name + ": holds earlier results; add --overwrite to replace them (the folder is replaced as a "
+    throw schema::InputError(name + ": holds earlier results; add --overwrite to replace them (the folder is replaced as a "
                             "whole once the new results are complete)");
   }
   fs::create_directories(Parent(target_), error);
-  if (error) throw InputError(Parent(target_).string() + ": cannot create the folder: " + error.message());
+  if (error) throw schema::InputError(Parent(target_).string() + ": cannot create the folder: " + error.message());
   RemoveLeftovers(target_);
   partial_ = Sibling(target_, "partial", static_cast<long>(::getpid()));
   fs::remove_all(partial_, error);
   if (!fs::create_directory(partial_, error) || error) {
-    throw InputError(name + ": cannot write beside it (" + partial_.string() + "): " + error.message());
+    throw schema::InputError(name + ": cannot write beside it (" + partial_.string() + "): " + error.message());
   }
   try {
     reservation_ = Reservation(partial_ / kReservation, options.expected_bytes, name, "its results");
-  } catch (const InputError&) {
+  } catch (const schema::InputError&) {
     fs::remove_all(partial_, error);
     throw;
   }
@@ -133,7 +133,7 @@ void ResultFolder::Commit() {
     if (!error) fs::rename(partial_, target_, error);
     if (!error) fs::remove_all(old, error);
   }
-  if (error) throw InputError(target_.string() + ": cannot put the new results in place: " + error.message());
+  if (error) throw schema::InputError(target_.string() + ": cannot put the new results in place: " + error.message());
   SyncFolder(Parent(target_));
   committed_ = true;
 }
@@ -146,7 +146,7 @@ void RefuseToReplaceInputs(const fs::path& output, const std::vector<fs::path>& 
   std::error_code error;
   for (const fs::path& input : inputs) {
     if (fs::exists(output, error) && fs::equivalent(output, input, error)) {
-      throw InputError(output.string() + ": is an input of this run; choose another output file");
+      throw schema::InputError(output.string() + ": is an input of this run; choose another output file");
     }
   }
 }

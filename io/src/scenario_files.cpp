@@ -23,7 +23,7 @@ void WriteRanges(std::ostream& out, std::span<const RangeRecord> ranges) {
   }
 }
 
-void WriteAnchors(std::ostream& out, const std::map<int, eval::AnchorTruth>& anchors) {
+void WriteAnchors(std::ostream& out, const std::map<int, schema::AnchorTruth>& anchors) {
   const bool with_bias =
       std::any_of(anchors.begin(), anchors.end(), [](const auto& entry) { return entry.second.bias_m.has_value(); });
   out << "anchor_id,x,y,z" << (with_bias ? ",bias" : "") << '\n';

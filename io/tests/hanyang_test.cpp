@@ -4,7 +4,7 @@
 
 #include <gtest/gtest.h>
 
-#include "anchorbench/io/input_error.hpp"
+#include "anchorbench/schema/input_error.hpp"
 #include "anchorbench/io/recorded_data.hpp"
 #include "anchorbench/io/result_folder.hpp"
 #include "anchorbench/io/scenario_files.hpp"
@@ -53,9 +53,9 @@ TEST(Hanyang, ConvertsACaseIntoTheProjectFormats) {
 
 TEST(Hanyang, MissingFilesAreInputErrors) {
   testing::TempDir dir("hanyang_bad");
-  EXPECT_THROW(ConvertHanyangCase(dir.path()), InputError);  // no anchor files
+  EXPECT_THROW(ConvertHanyangCase(dir.path()), schema::InputError);  // no anchor files
   dir.Write("A3.csv", std::string(kAnchorHeader) + "1,1,3,0,0,0,5,-79,-80\n");
-  EXPECT_THROW(ConvertHanyangCase(dir.path()), InputError);  // no trajectory.csv
+  EXPECT_THROW(ConvertHanyangCase(dir.path()), schema::InputError);  // no trajectory.csv
 }
 
 }  // namespace

@@ -4,7 +4,7 @@
 
 #include <sstream>
 
-#include "anchorbench/io/input_error.hpp"
+#include "anchorbench/schema/input_error.hpp"
 #include "anchorbench/testing/temp_dir.hpp"
 
 namespace anchorbench::io {
@@ -31,7 +31,7 @@ template <typename Read>
 std::string ErrorOf(Read read) {
   try {
     read();
-  } catch (const InputError& e) {
+  } catch (const schema::InputError& e) {
     return e.what();
   }
   return "";

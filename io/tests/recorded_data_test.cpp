@@ -4,7 +4,7 @@
 
 #include <sstream>
 
-#include "anchorbench/io/input_error.hpp"
+#include "anchorbench/schema/input_error.hpp"
 #include "anchorbench/testing/temp_dir.hpp"
 
 namespace anchorbench::io {
@@ -16,7 +16,7 @@ std::string ErrorFor(const std::string& csv, Load load) {
   const std::string path = dir.Write("data.csv", csv);
   try {
     load(path);
-  } catch (const InputError& e) {
+  } catch (const schema::InputError& e) {
     return e.what();
   }
   return "";
@@ -73,7 +73,7 @@ TEST(RecordedData, AcceptsTheEarlierLibrarysColumnNames) {
 
 TEST(RecordedData, EmptyAndMissingFiles) {
   EXPECT_NE(PosesError("").find("data.csv:1: empty file"), std::string::npos);
-  EXPECT_THROW(LoadRanges("/nonexistent/ranges.csv"), InputError);
+  EXPECT_THROW(LoadRanges("/nonexistent/ranges.csv"), schema::InputError);
 }
 
 // The readers take any stream: a fuzzer or a test needs no file.
@@ -87,7 +87,7 @@ TEST(RecordedData, ReadsFromAStreamNamingItInMessages) {
   try {
     ReadPoses(bad, "<buffer>");
     FAIL() << "no error";
-  } catch (const InputError& e) {
+  } catch (const schema::InputError& e) {
     // control bytes are escaped, so the message stays one printable line
     EXPECT_EQ(std::string(e.what()), "<buffer>:2: column 'z': '\\x01' is not a number");
   }

@@ -6,7 +6,7 @@
 
 #include "anchorbench/io/atomic_file.hpp"
 #include "anchorbench/io/durable_file.hpp"
-#include "anchorbench/io/input_error.hpp"
+#include "anchorbench/schema/input_error.hpp"
 #include "anchorbench/testing/temp_dir.hpp"
 
 namespace anchorbench::io {
@@ -78,17 +78,17 @@ TEST(ResultFolder, RefusesEarlierResultsWithoutOverwriteAndInputsAlways) {
   fs::create_directories(target);
   EXPECT_NO_THROW(ResultFolder(target, {}));  // an empty folder holds nothing to lose
   dir.Write("out/poses.csv", "t,tag_id,x,y,z\n");
-  EXPECT_THROW(ResultFolder(target, {}), InputError);
+  EXPECT_THROW(ResultFolder(target, {}), schema::InputError);
   ResultFolder::Options options = Overwrite();
   options.inputs = {target / "poses.csv"};
   try {
     ResultFolder folder(target, options);
     FAIL() << "no error";
-  } catch (const InputError& e) {
+  } catch (const schema::InputError& e) {
     EXPECT_NE(std::string(e.what()).find("an input of this run"), std::string::npos) << e.what();
   }
   dir.Write("file", "x");
-  EXPECT_THROW(ResultFolder(dir.path() / "file", Overwrite()), InputError);  // not a folder
+  EXPECT_THROW(ResultFolder(dir.path() / "file", Overwrite()), schema::InputError);  // not a folder
 }
 
 TEST(ResultFolder, RemovesWhatKilledRunsLeftButNotWhatLiveOnesUse) {
@@ -109,7 +109,7 @@ TEST(ResultFolder, ADiskThatCannotHoldTheResultsIsAnErrorAtTheStart) {
   try {
     ResultFolder folder(dir.path() / "out", options);
     FAIL() << "no error";
-  } catch (const InputError& e) {
+  } catch (const schema::InputError& e) {
     EXPECT_NE(std::string(e.what()).find("its results need about"), std::string::npos) << e.what();
   }
   EXPECT_EQ(Names(dir.path()), std::vector<std::string>{});
@@ -122,7 +122,7 @@ TEST(DurableFile, AFailedWriteSaysWhy) {
     file.stream() << std::string(1 << 16, 'x');
     file.Close();
     FAIL() << "no error";
-  } catch (const InputError& e) {
+  } catch (const schema::InputError& e) {
     EXPECT_NE(std::string(e.what()).find("/dev/full: writing failed: No space left on device"), std::string::npos)
         << e.what();
   }
@@ -136,14 +136,14 @@ TEST(AtomicFile, ReplacesOnlyWhenAskedAndNeverAnInput) {
     file.stream() << "one\n";
     file.Commit();
   }
-  EXPECT_THROW(AtomicFile(target, false), InputError);
+  EXPECT_THROW(AtomicFile(target, false), schema::InputError);
   {
     AtomicFile file(target, true);
     file.stream() << "two\n";
   }  // not committed: the old file stays, the temporary goes
   EXPECT_EQ(Read(target), "one\n");
   EXPECT_EQ(Names(dir.path()), (std::vector<std::string>{"trace.csv"}));
-  EXPECT_THROW(AtomicFile(target, true, {target}), InputError);
+  EXPECT_THROW(AtomicFile(target, true, {target}), schema::InputError);
 }
 
 }  // namespace

@@ -4,7 +4,7 @@
 
 namespace anchorbench::registry {
 
-bool Components::Check(const EstimatorConfig& config, std::string* why) const {
+bool Components::Check(const schema::EstimatorConfig& config, std::string* why) const {
   if (!solvers.Knows(config.solver, why) || !filters.Knows(config.filter.kind, why)) return false;
   for (const std::string& trigger : config.triggers) {
     if (!triggers.Knows(trigger, why)) return false;
@@ -18,7 +18,7 @@ void RegisterBuiltins(Components& components) {
   RegisterBuiltinTriggers(components.triggers);
 }
 
-estimator::AnchorInitializer MakeInitializer(const Components& components, int anchor_id, const EstimatorConfig& config,
+estimator::AnchorInitializer MakeInitializer(const Components& components, int anchor_id, const schema::EstimatorConfig& config,
                                              const std::string& trigger, std::uint64_t seed,
                                              const std::optional<Eigen::Vector3d>& p_world_anchor_reference) {
   std::string why;
@@ -45,7 +45,7 @@ estimator::AnchorInitializer MakeInitializer(const Components& components, int a
 }
 
 std::vector<estimator::AnchorInitializer> MakeChains(const Components& components, int anchor_id,
-                                                     const EstimatorConfig& config, std::uint64_t seed,
+                                                     const schema::EstimatorConfig& config, std::uint64_t seed,
                                                      const std::optional<Eigen::Vector3d>& p_world_anchor_reference) {
   std::vector<estimator::AnchorInitializer> chains;
   for (const std::string& trigger : config.triggers) {

@@ -27,7 +27,7 @@ std::vector<RangeSample> WithOutliers(std::uint64_t seed) {
 }
 
 std::optional<InitEvent> FixedWindow(const std::string& filter, const std::vector<RangeSample>& samples) {
-  EstimatorConfig options;
+  schema::EstimatorConfig options;
   options.filter.kind = filter;
   options.solver = "lm_l2";  // plain least squares: only the filter stands between it and the outliers
   AnchorInitializer initializer = MakeInitializer(Builtins(), 7, options, "fixed_window", 11);

@@ -13,7 +13,7 @@ namespace {
 TEST(Components, CheckUsesTheCallersRegistriesIncludingTheirOwnParts) {
   Components components;
   RegisterBuiltins(components);
-  EstimatorConfig config;
+  schema::EstimatorConfig config;
   config.solver = "my_solver";
   std::string why;
   EXPECT_FALSE(components.Check(config, &why));
@@ -43,7 +43,7 @@ TEST(Components, SolversShareTheOwnersKernelTable) {
 }
 
 TEST(EstimatorConfig, ValidationNamesTheKey) {
-  EstimatorConfig config;
+  schema::EstimatorConfig config;
   std::string why;
   EXPECT_TRUE(config.IsValid(&why)) << why;
   config.filter.ransac.subset_size = 200;

@@ -26,7 +26,7 @@ using estimator::SolveResult;
 using anchorbench::testing::PassBy;
 
 // Named, not `{}`: GCC 12 warns falsely (-Wmaybe-uninitialized) on brace temporaries of it.
-const EstimatorConfig kDefaults = anchorbench::testing::PaperEstimator();
+const schema::EstimatorConfig kDefaults = anchorbench::testing::PaperEstimator();
 
 const Eigen::Vector3d kAnchor(0, 4, 3);
 
@@ -49,14 +49,14 @@ Fed FeedAll(AnchorInitializer& initializer, const std::vector<RangeSample>& samp
 }
 
 // With no filter every sample is accepted, so sample i is the (i+1)-th accepted one.
-EstimatorConfig Unfiltered() {
-  EstimatorConfig options = anchorbench::testing::PaperEstimator();
+schema::EstimatorConfig Unfiltered() {
+  schema::EstimatorConfig options = anchorbench::testing::PaperEstimator();
   options.filter.kind = "none";
   return options;
 }
 
 TEST(Triggers, SampleCountFiresAtTheCount) {
-  EstimatorConfig options = Unfiltered();
+  schema::EstimatorConfig options = Unfiltered();
   options.trigger.sample_count = 137;
   AnchorInitializer initializer = MakeInitializer(Builtins(), 7, options, "sample_count", 0);
   const Fed fed = FeedAll(initializer, PassBy(kAnchor, 0.05, 1));
@@ -66,7 +66,7 @@ TEST(Triggers, SampleCountFiresAtTheCount) {
 }
 
 TEST(Triggers, SampleCountBelowMinSamplesActsAsMinSamples) {
-  EstimatorConfig options = Unfiltered();
+  schema::EstimatorConfig options = Unfiltered();
   options.trigger.sample_count = 5;  // min_samples = 20 still applies
   AnchorInitializer below = MakeInitializer(Builtins(), 7, options, "sample_count", 0);
   options.trigger.sample_count = options.initializer.min_samples;
@@ -79,7 +79,7 @@ TEST(Triggers, SampleCountBelowMinSamplesActsAsMinSamples) {
 }
 
 TEST(Triggers, TimeoutFiresOnTheFirstSampleThatLongAfterTheFirst) {
-  EstimatorConfig options = Unfiltered();
+  schema::EstimatorConfig options = Unfiltered();
   options.trigger.timeout_s = 12.25;
   AnchorInitializer initializer = MakeInitializer(Builtins(), 7, options, "timeout", 0);
   const auto samples = PassBy(kAnchor, 0.05, 1);  // 10 Hz from t = 0
@@ -104,7 +104,7 @@ TEST(Triggers, FixedWindowNeverFiresOnlineAndSolvesEverythingAtFinish) {
 TEST(Triggers, LsEvaluatesOnItsCadenceAndFiresOnTheFirstGoodEstimate) {
   const auto samples = PassBy(kAnchor, 0.05, 3);
   for (int every : {1, 10}) {
-    EstimatorConfig options = Unfiltered();
+    schema::EstimatorConfig options = Unfiltered();
     options.trigger.evaluate_every = every;
     AnchorInitializer initializer = MakeInitializer(Builtins(), 7, options, "pdop_ls", 0);
     const Fed fed = FeedAll(initializer, samples);
@@ -149,7 +149,7 @@ TEST(Triggers, SolveCadenceGrowsGeometrically) {
 
 TEST(Triggers, NlsUsesTheAnchorsSolver) {
   const auto samples = PassBy(kAnchor, 0.05, 4);
-  EstimatorConfig options = Unfiltered();
+  schema::EstimatorConfig options = Unfiltered();
   options.solver = "lm_l2";
   AnchorInitializer initializer = MakeInitializer(Builtins(), 7, options, "pdop_nls", 0);
   const Fed fed = FeedAll(initializer, samples);
@@ -180,7 +180,7 @@ int FirstBelow(const std::vector<RangeSample>& samples, double (estimator::Close
 struct Fired {
   int paper, own, expected;
 };
-Fired BesideThePapers(const EstimatorConfig& options, const std::string& trigger,
+Fired BesideThePapers(const schema::EstimatorConfig& options, const std::string& trigger,
                       double (estimator::ClosestPointPdop::*value)() const, double threshold) {
   const auto samples = PassBy(kAnchor, 0.05, 6);
   AnchorInitializer paper = MakeInitializer(Builtins(), 7, options, "pdop_closest_point", 0);
@@ -191,7 +191,7 @@ Fired BesideThePapers(const EstimatorConfig& options, const std::string& trigger
 // dop4_closest_point: the closest-point rows with a bias column, fired on the first sample whose
 // 4-column DOP is below its threshold; never before the paper's 3-column one.
 TEST(Triggers, ClosestPointBiasAwareFiresOnItsOwnThresholdAndNeverBeforeThePapers) {
-  EstimatorConfig options = Unfiltered();
+  schema::EstimatorConfig options = Unfiltered();
   options.trigger.bias_aware_threshold = 1.0;
   const Fired f = BesideThePapers(options, "dop4_closest_point", &estimator::ClosestPointPdop::BiasAwareValue, 1.0);
   ASSERT_TRUE(f.paper >= 0 && f.own >= 0);
@@ -202,7 +202,7 @@ TEST(Triggers, ClosestPointBiasAwareFiresOnItsOwnThresholdAndNeverBeforeThePaper
 // hdop_closest_point: the x-y block of the closest-point rows, fired on the first sample whose
 // horizontal DOP is below its threshold; never after the paper's (the block's DOP is smaller).
 TEST(Triggers, ClosestPointHorizontalFiresOnItsOwnThresholdAndNeverAfterThePapers) {
-  EstimatorConfig options = Unfiltered();
+  schema::EstimatorConfig options = Unfiltered();
   options.trigger.horizontal_threshold = 1.0;
   const Fired f = BesideThePapers(options, "hdop_closest_point", &estimator::ClosestPointPdop::HorizontalValue, 1.0);
   ASSERT_TRUE(f.paper >= 0 && f.own >= 0);
@@ -213,7 +213,7 @@ TEST(Triggers, ClosestPointHorizontalFiresOnItsOwnThresholdAndNeverAfterThePaper
 // The height prior of each anchor: a fixed height for all, or the reference's shifted by the
 // offset; a reference prior without a reference is refused; solvers without a prior term refuse it.
 TEST(HeightPriorConfig, EachAnchorGetsItsPriorAndSolversWithoutOneRefuseIt) {
-  HeightPriorConfig config;
+  schema::HeightPriorConfig config;
   EXPECT_FALSE(config.For(3, std::nullopt));
   config.enabled = true;
   config.z_m = 2.5;
@@ -223,7 +223,7 @@ TEST(HeightPriorConfig, EachAnchorGetsItsPriorAndSolversWithoutOneRefuseIt) {
   EXPECT_DOUBLE_EQ(config.For(3, Eigen::Vector3d(1, 2, 4))->z_world_m, 4.5);
   EXPECT_THROW(config.For(3, std::nullopt), std::invalid_argument);
 
-  EstimatorConfig options = Unfiltered();
+  schema::EstimatorConfig options = Unfiltered();
   options.height_prior = config;
   for (const char* solver : {"ls_single", "nlopt:LN_BOBYQA"}) {
     options.solver = solver;
@@ -242,7 +242,7 @@ TEST(HeightPriorConfig, EachAnchorGetsItsPriorAndSolversWithoutOneRefuseIt) {
 // estimate's 3-sigma region is below its threshold; the worst case is never below the estimate's.
 TEST(Triggers, ConfidenceRegionJudgesTheWorstCornerOfTheEstimate) {
   const auto samples = PassBy(kAnchor, 0.05, 7);
-  EstimatorConfig options = Unfiltered();
+  schema::EstimatorConfig options = Unfiltered();
   options.solver = "lm_l2";
   options.trigger.confidence_threshold = 1.5;
   AnchorInitializer initializer = MakeInitializer(Builtins(), 7, options, "dop4_confidence", 0);
@@ -277,10 +277,10 @@ TEST(Triggers, UnknownNamesAreRefusedWithTheReason) {
       EXPECT_NE(std::string(e.what()).find("unknown trigger"), std::string::npos) << e.what();
     }
   }
-  EstimatorConfig bad_filter = kDefaults;
+  schema::EstimatorConfig bad_filter = kDefaults;
   bad_filter.filter.kind = "median";
   EXPECT_THROW(MakeInitializer(Builtins(), 7, bad_filter, "fixed_window", 0), std::invalid_argument);
-  EstimatorConfig bad_solver = kDefaults;
+  schema::EstimatorConfig bad_solver = kDefaults;
   bad_solver.solver = "nlopt:LN_NOPE";
   EXPECT_THROW(MakeInitializer(Builtins(), 7, bad_solver, "fixed_window", 0), std::invalid_argument);
 }

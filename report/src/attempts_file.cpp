@@ -4,12 +4,12 @@
 #include <sstream>
 
 #include "anchorbench/io/csv_reader.hpp"
-#include "anchorbench/io/input_error.hpp"
+#include "anchorbench/schema/input_error.hpp"
 
 namespace anchorbench::report {
 
 AttemptsFile ParseAttempts(const std::string& text, const std::string& source,
-                           const std::vector<runner::RowConfig>& rows) {
+                           const std::vector<schema::RowConfig>& rows) {
   std::map<std::string, int, std::less<>> row_index;
   for (std::size_t r = 0; r < rows.size(); ++r) row_index[rows[r].name] = static_cast<int>(r);
   AttemptsFile file;
@@ -20,10 +20,10 @@ AttemptsFile ParseAttempts(const std::string& text, const std::string& source,
   const int error = csv.Column({"err_m"}), nees = csv.Column({"nees_pos"});
   const int compute_s = csv.Column({"compute_s"});
   if (compute_s != csv.columns() - 1 || compute_s == 0) {
-    throw io::InputError(source + ":1: compute_s must be the last column");
+    throw schema::InputError(source + ":1: compute_s must be the last column");
   }
   while (csv.Next()) {
-    runner::Attempt a;
+    schema::Attempt a;
     const auto found = row_index.find(csv.Text(row));
     if (found == row_index.end()) csv.Fail("row '" + std::string(csv.Text(row)) + "' is not a row of the config");
     a.row = found->second;

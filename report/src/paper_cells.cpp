@@ -26,7 +26,7 @@ bool ParsePaperColumn(const std::string& name, PaperColumn* column) {
   return false;
 }
 
-double ValueOf(const runner::PaperCells& paper, PaperColumn column) {
+double ValueOf(const schema::PaperCells& paper, PaperColumn column) {
   switch (column) {
     case PaperColumn::kAvg: return paper.avg_m;
     case PaperColumn::kMed: return paper.med_m;
@@ -54,17 +54,17 @@ void Fill(const MethodSummary& s, PaperCell* cell) {
   }
 }
 
-bool Runs(const runner::RowConfig& row, const char* trigger) {
+bool Runs(const schema::RowConfig& row, const char* trigger) {
   return std::find(row.estimator.triggers.begin(), row.estimator.triggers.end(), trigger) != row.estimator.triggers.end();
 }
 
 }  // namespace
 
-std::vector<PaperCell> PaperTargets(const std::vector<runner::RowConfig>& rows) {
+std::vector<PaperCell> PaperTargets(const std::vector<schema::RowConfig>& rows) {
   std::vector<PaperCell> cells;
   for (std::size_t r = 0; r < rows.size(); ++r) {
-    if (!rows[r].paper || !Runs(rows[r], runner::kFixedWindowTrigger) || !Runs(rows[r], runner::kPaperTrigger)) continue;
-    for (const char* method : {runner::kFixedWindowTrigger, runner::kPaperTrigger}) {
+    if (!rows[r].paper || !Runs(rows[r], schema::kFixedWindowTrigger) || !Runs(rows[r], schema::kPaperTrigger)) continue;
+    for (const char* method : {schema::kFixedWindowTrigger, schema::kPaperTrigger}) {
       for (PaperColumn column : kPaperColumns) {
         PaperCell cell;
         cell.row = static_cast<int>(r);
@@ -72,7 +72,7 @@ std::vector<PaperCell> PaperTargets(const std::vector<runner::RowConfig>& rows) 
         cell.column = column;
         cell.paper = ValueOf(*rows[r].paper->For(method), column);
         cell.scored = column != PaperColumn::kGt1m &&
-                      !(column == PaperColumn::kInit && cell.method == runner::kFixedWindowTrigger);
+                      !(column == PaperColumn::kInit && cell.method == schema::kFixedWindowTrigger);
         cells.push_back(std::move(cell));
       }
     }
@@ -81,7 +81,7 @@ std::vector<PaperCell> PaperTargets(const std::vector<runner::RowConfig>& rows) 
 }
 
 std::vector<PaperCell> CompareWithPaper(const std::vector<MethodSummary>& summaries,
-                                        const std::vector<runner::RowConfig>& rows) {
+                                        const std::vector<schema::RowConfig>& rows) {
   std::vector<PaperCell> cells = PaperTargets(rows);
   for (PaperCell& cell : cells) {
     for (const MethodSummary& s : summaries) {

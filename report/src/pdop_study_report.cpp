@@ -181,7 +181,7 @@ void WriteCertified(std::ostream& md, const std::vector<runner::CertifiedOutcome
 
 void WritePdopTrace(std::ostream& out, const std::vector<PdopCheckpoint>& checkpoints) { WriteTraceRows(out, checkpoints); }
 
-void WritePdopStudyMarkdown(std::ostream& md, const runner::ExperimentConfig& config, const runner::PdopStudy& study,
+void WritePdopStudyMarkdown(std::ostream& md, const schema::ExperimentConfig& config, const runner::PdopStudy& study,
                             int every, double bin_s) {
   const runner::UnderestimateStats& s = study.stats;
   std::vector<double> ratios = s.ratios_below;

@@ -22,17 +22,17 @@ constexpr const char* kEstimateColumns[] = {"anchor_id", "method", "initialized"
 std::string ForTerminal(double value) { return std::abs(value) < 1e9 ? FormatFixed(value, 3) : FormatNumber(value); }
 
 // The horizontal and the vertical part of an initialized attempt's error, where the truth is known.
-std::optional<double> ErrorXy(const runner::Attempt& a) {
+std::optional<double> ErrorXy(const schema::Attempt& a) {
   if (!a.evaluation || !a.evaluation->error_xyz_m) return std::nullopt;
   return a.evaluation->error_xyz_m->head<2>().norm();
 }
-std::optional<double> ErrorZ(const runner::Attempt& a) {
+std::optional<double> ErrorZ(const schema::Attempt& a) {
   if (!a.evaluation || !a.evaluation->error_xyz_m) return std::nullopt;
   return std::abs(a.evaluation->error_xyz_m->z());
 }
 
 // The columns of estimates.csv for one attempt, as text (empty where not applicable).
-std::vector<std::string> EstimateFields(const runner::Attempt& a) {
+std::vector<std::string> EstimateFields(const schema::Attempt& a) {
   const bool has_estimate = a.initialized && a.solve;
   const Eigen::Vector3d p = has_estimate ? a.solve->p_world_anchor : Eigen::Vector3d::Zero();
   return {std::to_string(a.anchor_id),
@@ -57,23 +57,23 @@ std::vector<std::string> EstimateFields(const runner::Attempt& a) {
 
 }  // namespace
 
-void WriteEstimates(std::ostream& out, const std::vector<runner::Attempt>& attempts) {
+void WriteEstimates(std::ostream& out, const std::vector<schema::Attempt>& attempts) {
   for (std::size_t i = 0; i < std::size(kEstimateColumns); ++i) out << (i ? "," : "") << kEstimateColumns[i];
   out << '\n';
-  for (const runner::Attempt& a : attempts) {
+  for (const schema::Attempt& a : attempts) {
     const std::vector<std::string> fields = EstimateFields(a);
     for (std::size_t i = 0; i < fields.size(); ++i) out << (i ? "," : "") << fields[i];
     out << '\n';
   }
 }
 
-void PrintEstimates(std::ostream& out, const std::vector<runner::Attempt>& attempts) {
+void PrintEstimates(std::ostream& out, const std::vector<schema::Attempt>& attempts) {
   // The terminal shows the columns up to err_z; the DOP split is in estimates.csv.
   constexpr int kWidth[] = {10, 20, 12, 10, 8, 10, 10, 10, 10, 10, 10, 10, 21, 10, 10};
   static_assert(std::size(kWidth) <= std::size(kEstimateColumns));
   for (std::size_t i = 0; i < std::size(kWidth); ++i) out << std::setw(kWidth[i]) << kEstimateColumns[i];
   out << '\n';
-  for (const runner::Attempt& a : attempts) {
+  for (const schema::Attempt& a : attempts) {
     std::vector<std::string> fields = EstimateFields(a);
     // Terminal view: three decimals instead of the lossless CSV text.
     const std::optional<double> pdop_true = a.evaluation ? std::optional(a.evaluation->pdop_true) : std::nullopt;

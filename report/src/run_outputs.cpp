@@ -14,8 +14,8 @@ using io::FormatFixed;
 using io::FormatNumber;
 using io::FormatOptional;
 using io::JsonString;
-using runner::Attempt;
-using runner::RowConfig;
+using schema::Attempt;
+using schema::RowConfig;
 
 // The cells of a solve or an evaluation, empty where there is none.
 std::optional<double> Of(const std::optional<Eigen::Vector3d>& v, int axis) {
@@ -32,8 +32,8 @@ std::string Interval(const std::optional<double>& lo, const std::optional<double
   return lo ? " [" + FormatFixed(*lo, decimals) + ", " + FormatFixed(*hi, decimals) + "]" : std::string();
 }
 
-void WriteOurTable(std::ostream& out, const std::vector<MethodSummary>& summaries, const std::vector<RowConfig>& rows,
-                   const runner::ExperimentConfig& config) {
+void WriteOurTable(std::ostream& out, const std::vector<MethodSummary>& summaries, const std::vector<schema::RowConfig>& rows,
+                   const schema::ExperimentConfig& config) {
   std::string compared;
   for (const std::string& trigger : rows.front().estimator.triggers) compared += (compared.empty() ? "" : " vs ") + trigger;
   out << "# " << config.name << ": " << compared << "\n\n"
@@ -62,7 +62,7 @@ std::string Compare(const PaperCell& cell) {
   return s.str();
 }
 
-std::string Conclusions(const RowConfig& row, const MethodSummary& fixed, const MethodSummary& gated) {
+std::string Conclusions(const schema::RowConfig& row, const MethodSummary& fixed, const MethodSummary& gated) {
   const bool avg_holds = gated.avg_m && fixed.avg_m && *gated.avg_m < *fixed.avg_m;
   const bool ratio_holds = gated.ratio_pct && fixed.ratio_pct && *gated.ratio_pct < *fixed.ratio_pct;
   return "- row " + row.name + ": gated Avg < fixed Avg: " + (avg_holds ? "yes" : "NO") +
@@ -78,7 +78,7 @@ const MethodSummary* Find(const std::vector<MethodSummary>& summaries, int row, 
 
 // One table line per method of the paper (paper / ours), scored by ScoreCells.
 void WriteAgainstThePaper(std::ostream& out, const std::vector<MethodSummary>& summaries,
-                          const std::vector<RowConfig>& rows) {
+                          const std::vector<schema::RowConfig>& rows) {
   out << "\n## Against the paper (paper / ours, relative difference; ! = outside +-25%)\n\n"
       << "| # | Method | Avg. (m) | Med. (m) | Init. | >1m | Ratio (%) |\n|---|---|---|---|---|---|---|\n";
   const std::vector<PaperCell> cells = CompareWithPaper(summaries, rows);
@@ -88,10 +88,10 @@ void WriteAgainstThePaper(std::ostream& out, const std::vector<MethodSummary>& s
     out << "| " << rows[static_cast<std::size_t>(head.row)].name << " | " << head.method << " |";
     for (std::size_t c = 0; c < std::size(kPaperColumns); ++c) out << " " << Compare(cells[first + c]) << " |";
     out << "\n";
-    if (head.method == runner::kPaperTrigger) {
+    if (head.method == schema::kPaperTrigger) {
       conclusions += Conclusions(rows[static_cast<std::size_t>(head.row)],
-                                 *Find(summaries, head.row, runner::kFixedWindowTrigger),
-                                 *Find(summaries, head.row, runner::kPaperTrigger));
+                                 *Find(summaries, head.row, schema::kFixedWindowTrigger),
+                                 *Find(summaries, head.row, schema::kPaperTrigger));
     }
   }
   const PaperScore score = ScoreCells(cells);
@@ -104,11 +104,11 @@ void WriteAgainstThePaper(std::ostream& out, const std::vector<MethodSummary>& s
 
 }  // namespace
 
-void WriteAttempts(std::ostream& out, const std::vector<Attempt>& attempts, const std::vector<RowConfig>& rows) {
+void WriteAttempts(std::ostream& out, const std::vector<schema::Attempt>& attempts, const std::vector<schema::RowConfig>& rows) {
   out << kAttemptsColumns << '\n';
-  const eval::AttemptEvaluation none;
-  for (const Attempt& a : attempts) {
-    const eval::AttemptEvaluation& e = a.evaluation ? *a.evaluation : none;
+  const schema::AttemptEvaluation none;
+  for (const schema::Attempt& a : attempts) {
+    const schema::AttemptEvaluation& e = a.evaluation ? *a.evaluation : none;
     out << rows[static_cast<std::size_t>(a.row)].name << ',' << a.realization << ',' << a.anchor_id << ','
         << a.method << ',' << (a.initialized ? 1 : 0) << ',' << FormatOptional(a.t_init_s) << ',' << a.n_used << ','
         << FormatNumber(a.pdop_estimate) << ','
@@ -127,7 +127,7 @@ void WriteAttemptLines(std::ostream& out, const std::vector<std::string>& lines)
   for (const std::string& line : lines) out << line << '\n';
 }
 
-std::string SummaryCsvFields(const MethodSummary& s, const std::vector<RowConfig>& rows) {
+std::string SummaryCsvFields(const MethodSummary& s, const std::vector<schema::RowConfig>& rows) {
   std::ostringstream out;
   out << rows[static_cast<std::size_t>(s.row)].name << ',' << s.method << ',' << FormatOptional(s.avg_m) << ','
       << FormatOptional(s.med_m) << ',' << s.init << ',' << s.gt1m << ',' << FormatOptional(s.ratio_pct) << ','
@@ -139,15 +139,15 @@ std::string SummaryCsvFields(const MethodSummary& s, const std::vector<RowConfig
   return out.str();
 }
 
-void WriteSummaryCsv(std::ostream& out, const std::vector<MethodSummary>& summaries, const std::vector<RowConfig>& rows) {
-  const bool with_paper = std::any_of(rows.begin(), rows.end(), [](const RowConfig& r) { return r.paper.has_value(); });
+void WriteSummaryCsv(std::ostream& out, const std::vector<MethodSummary>& summaries, const std::vector<schema::RowConfig>& rows) {
+  const bool with_paper = std::any_of(rows.begin(), rows.end(), [](const schema::RowConfig& r) { return r.paper.has_value(); });
   out << kSummaryColumns << ",t_init_mean_s,t_init_med_s"
       << (with_paper ? ",paper_avg_m,paper_med_m,paper_init,paper_gt1m,paper_ratio_pct" : "") << '\n';
   for (const MethodSummary& s : summaries) {
     out << SummaryCsvFields(s, rows) << ',' << FormatOptional(s.t_init_mean_s) << ',' << FormatOptional(s.t_init_med_s);
     if (with_paper) {
-      const std::optional<runner::PaperRow>& paper = rows[static_cast<std::size_t>(s.row)].paper;
-      if (const runner::PaperCells* c = paper ? paper->For(s.method) : nullptr) {
+      const std::optional<schema::PaperRow>& paper = rows[static_cast<std::size_t>(s.row)].paper;
+      if (const schema::PaperCells* c = paper ? paper->For(s.method) : nullptr) {
         out << ',' << FormatNumber(c->avg_m) << ',' << FormatNumber(c->med_m) << ',' << FormatNumber(c->init) << ','
             << FormatNumber(c->gt1m) << ',' << FormatNumber(c->ratio_pct);
       } else {
@@ -159,14 +159,14 @@ void WriteSummaryCsv(std::ostream& out, const std::vector<MethodSummary>& summar
 }
 
 void WriteSummaryMarkdown(std::ostream& out, const std::vector<MethodSummary>& summaries,
-                          const std::vector<RowConfig>& rows, const runner::ExperimentConfig& config) {
+                          const std::vector<schema::RowConfig>& rows, const schema::ExperimentConfig& config) {
   WriteOurTable(out, summaries, rows, config);
-  if (std::any_of(rows.begin(), rows.end(), [](const RowConfig& r) { return r.paper.has_value(); })) {
+  if (std::any_of(rows.begin(), rows.end(), [](const schema::RowConfig& r) { return r.paper.has_value(); })) {
     WriteAgainstThePaper(out, summaries, rows);
   }
 }
 
-std::string TimingCsvFields(const MethodSummary& s, const std::vector<RowConfig>& rows) {
+std::string TimingCsvFields(const MethodSummary& s, const std::vector<schema::RowConfig>& rows) {
   std::ostringstream out;
   out << rows[static_cast<std::size_t>(s.row)].name << ',' << s.method << ',' << s.attempts << ',' << s.init << ','
       << FormatFixed(s.compute_s, 6) << ',' << (s.attempts ? FormatFixed(1e6 * s.compute_s / s.attempts, 1) : "") << ','
@@ -174,7 +174,7 @@ std::string TimingCsvFields(const MethodSummary& s, const std::vector<RowConfig>
   return out.str();
 }
 
-void WriteTimingCsv(std::ostream& out, const std::vector<MethodSummary>& summaries, const std::vector<RowConfig>& rows) {
+void WriteTimingCsv(std::ostream& out, const std::vector<MethodSummary>& summaries, const std::vector<schema::RowConfig>& rows) {
   out << kTimingColumns << '\n';
   for (const MethodSummary& s : summaries) out << TimingCsvFields(s, rows) << '\n';
 }
@@ -191,7 +191,7 @@ constexpr const char* kInstructionSet = "native (-march=native: bytes differ fro
 constexpr const char* kInstructionSet = "default";
 #endif
 
-std::string ManifestJson(const runner::ExperimentConfig& config, const RunInfo& info) {
+std::string ManifestJson(const schema::ExperimentConfig& config, const RunInfo& info) {
   std::ostringstream json;
   json << "{\n  \"config_file\": " << JsonString(info.config_path) << ",\n  \"seed\": " << config.seed
        << ",\n  \"realizations\": " << config.realizations << ",\n  \"threads\": " << info.threads

@@ -9,16 +9,16 @@
 namespace anchorbench::report {
 namespace {
 
-using runner::Attempt;
-using runner::kFixedWindowTrigger;
-using runner::RowConfig;
+using schema::Attempt;
+using schema::kFixedWindowTrigger;
+using schema::RowConfig;
 
-Attempt Initialized(int realization, double error_m) {
-  Attempt a;
+schema::Attempt Initialized(int realization, double error_m) {
+  schema::Attempt a;
   a.realization = realization;
-  a.method = kFixedWindowTrigger;
+  a.method = schema::kFixedWindowTrigger;
   a.initialized = true;
-  a.evaluation = eval::AttemptEvaluation{};
+  a.evaluation = schema::AttemptEvaluation{};
   a.evaluation->error_m = error_m;
   a.status = "converged";
   return a;
@@ -27,13 +27,13 @@ Attempt Initialized(int realization, double error_m) {
 TEST(Summary, TableColumnsWorkedByHand) {
   // Errors 0.1, 0.2, 0.3, 2.0 (initialized) and one attempt not initialized:
   // Avg = 2.6 / 4 = 0.65, Med = (0.2 + 0.3) / 2 = 0.25, Init = 4, >1m = 1, Ratio = 25%.
-  std::vector<Attempt> attempts = {Initialized(0, 0.1), Initialized(0, 0.2), Initialized(1, 0.3), Initialized(1, 2.0)};
-  Attempt missed;
+  std::vector<schema::Attempt> attempts = {Initialized(0, 0.1), Initialized(0, 0.2), Initialized(1, 0.3), Initialized(1, 2.0)};
+  schema::Attempt missed;
   missed.realization = 1;
-  missed.method = kFixedWindowTrigger;
+  missed.method = schema::kFixedWindowTrigger;
   missed.status = "too_few_samples";
   attempts.push_back(missed);
-  RowConfig row;
+  schema::RowConfig row;
   row.estimator = anchorbench::testing::PaperEstimator();  // its two triggers
   const auto summaries = Summarize(attempts, {row}, 2, 500, 1);
   ASSERT_EQ(summaries.size(), 2u);  // fixed_window, then pdop_closest_point
@@ -59,11 +59,11 @@ TEST(Summary, TableColumnsWorkedByHand) {
 // A method's bootstrap interval depends on its own attempts only: another trigger in front of it
 // in the config does not move it.
 TEST(Summary, AddingATriggerLeavesTheOthersIntervalsAlone) {
-  std::vector<Attempt> attempts;
+  std::vector<schema::Attempt> attempts;
   for (int r = 0; r < 10; ++r) attempts.push_back(Initialized(r, 0.1 * (r + 1)));
-  RowConfig alone, behind;
-  alone.estimator.triggers = {kFixedWindowTrigger};
-  behind.estimator.triggers = {"pdop_closest_point", kFixedWindowTrigger};
+  schema::RowConfig alone, behind;
+  alone.estimator.triggers = {schema::kFixedWindowTrigger};
+  behind.estimator.triggers = {"pdop_closest_point", schema::kFixedWindowTrigger};
   const auto a = Summarize(attempts, {alone}, 10, 200, 3);
   const auto b = Summarize(attempts, {behind}, 10, 200, 3);
   ASSERT_EQ(a.size(), 1u);
@@ -86,17 +86,17 @@ TEST(Summary, WilsonIntervalIsMeaningfulAtZero) {
   EXPECT_NEAR(all.lo, 1.0 - 0.2775, 1e-4);
   EXPECT_DOUBLE_EQ(all.hi, 1.0);
   EXPECT_FALSE(WilsonInterval(0, 0));
-  std::vector<Attempt> attempts;
+  std::vector<schema::Attempt> attempts;
   for (int r = 0; r < 20; ++r) attempts.push_back(Initialized(r, 0.1));
-  RowConfig row;
-  row.estimator.triggers = {kFixedWindowTrigger};
+  schema::RowConfig row;
+  row.estimator.triggers = {schema::kFixedWindowTrigger};
   const MethodSummary s = Summarize(attempts, {row}, 20, 100, 1)[0];
   EXPECT_EQ(*s.ratio_lo, 0.0);
   EXPECT_NEAR(*s.ratio_hi, 100.0 * 0.1611, 0.01);  // 0 of 20: up to 16%, not [0, 0]
 }
 
 TEST(Summary, ManifestNamesWhatReproducesTheRun) {
-  runner::ExperimentConfig config;
+  schema::ExperimentConfig config;
   config.seed = 7;
   config.realizations = 6;
   RunInfo info;
@@ -116,11 +116,11 @@ TEST(Summary, ManifestNamesWhatReproducesTheRun) {
 }
 
 TEST(Summary, AttemptsCsvLeavesCellsEmptyWhereThereIsNothing) {
-  Attempt a;
-  a.method = kFixedWindowTrigger;
+  schema::Attempt a;
+  a.method = schema::kFixedWindowTrigger;
   a.status = "no_data";
   std::ostringstream out;
-  WriteAttempts(out, {a}, {RowConfig{"r", {}, {}, std::nullopt}});
+  WriteAttempts(out, {a}, {schema::RowConfig{"r", {}, {}, std::nullopt}});
   EXPECT_EQ(out.str().substr(out.str().find('\n') + 1), "r,0,0,fixed_window,0,,0,0,,,,,,,,,no_data,,,,,\n");
 }
 

@@ -1,5 +1,6 @@
 #include "anchorbench/runner/attempt.hpp"
 
+#include "anchorbench/eval/attempt_evaluation.hpp"
 #include "anchorbench/sim/random_stream.hpp"
 
 namespace anchorbench::runner {
@@ -10,15 +11,15 @@ std::uint64_t SolverSeed(std::uint64_t seed, std::uint64_t realization, int anch
   return sim::RandomStream(seed, realization, kSolverStream, static_cast<std::uint32_t>(anchor_id)).NextU64();
 }
 
-const eval::AnchorTruth* TruthOf(const std::map<int, eval::AnchorTruth>* truth, int anchor_id) {
+const schema::AnchorTruth* TruthOf(const std::map<int, schema::AnchorTruth>* truth, int anchor_id) {
   if (!truth) return nullptr;
   const auto found = truth->find(anchor_id);
   return found == truth->end() ? nullptr : &found->second;
 }
 
-Attempt AttemptOf(const estimator::AnchorInitializer& initializer, const std::optional<estimator::InitEvent>& event,
-                  const std::string& method, const eval::AnchorTruth* truth) {
-  Attempt a;
+schema::Attempt AttemptOf(const estimator::AnchorInitializer& initializer, const std::optional<estimator::InitEvent>& event,
+                  const std::string& method, const schema::AnchorTruth* truth) {
+  schema::Attempt a;
   a.anchor_id = initializer.anchor_id();
   a.method = method;
   a.initialized = initializer.initialized();

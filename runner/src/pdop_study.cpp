@@ -13,7 +13,7 @@
 #include "anchorbench/estimator/pdop.hpp"
 #include "anchorbench/estimator/triggers.hpp"
 #include "anchorbench/eval/true_geometry.hpp"
-#include "anchorbench/io/input_error.hpp"
+#include "anchorbench/schema/input_error.hpp"
 #include "anchorbench/runner/attempt.hpp"
 #include "anchorbench/sim/scenario.hpp"
 
@@ -145,11 +145,11 @@ std::vector<CertifiedOutcome> CertifiedOutcomes(const sim::Scenario& scenario, e
   return outcomes;
 }
 
-PdopStudy StudyRealization(const ExperimentConfig& config, const registry::Components& components, int realization,
+PdopStudy StudyRealization(const schema::ExperimentConfig& config, const registry::Components& components, int realization,
                            int every) {
   const sim::Scenario scenario =
       sim::GenerateScenario(config.scenario, config.seed, static_cast<std::uint64_t>(realization));
-  const registry::EstimatorConfig& estimator = config.estimator;
+  const schema::EstimatorConfig& estimator = config.estimator;
   const auto solver = std::make_shared<estimator::AnchorSolver>(
       estimator.solver_options, components.tables->Get(estimator.solver_options.nls.truncation,
                                                         estimator.solver_options.nls.alpha_min));
@@ -159,7 +159,7 @@ PdopStudy StudyRealization(const ExperimentConfig& config, const registry::Compo
     std::string why;
     // The online stage of the configured filter (a batch filter such as RANSAC accepts everything here).
     std::unique_ptr<estimator::OutlierFilter> filter = components.filters.Create(estimator.filter.kind, {estimator.filter, 0}, &why);
-    if (!filter) throw io::InputError(why);
+    if (!filter) throw schema::InputError(why);
     auto probe = std::make_unique<StudyProbe>(anchor, realization, every, estimator.solver_options.ls,
                                               estimator.trigger.confidence_sigmas, solver, &by_anchor[anchor_id]);
     std::vector<estimator::AnchorInitializer> chain;
@@ -206,9 +206,9 @@ const char* PdopMethodName(PdopMethod method) {
   return "unknown";
 }
 
-PdopStudy RunPdopStudy(const ExperimentConfig& config, const registry::Components& components, int every, int threads) {
+PdopStudy RunPdopStudy(const schema::ExperimentConfig& config, const registry::Components& components, int every, int threads) {
   std::string why;
-  if (!components.filters.Knows(config.estimator.filter.kind, &why)) throw io::InputError(why);
+  if (!components.filters.Knows(config.estimator.filter.kind, &why)) throw schema::InputError(why);
   std::vector<PdopStudy> per_realization(static_cast<std::size_t>(config.realizations));
   std::vector<std::exception_ptr> errors(per_realization.size());
 #pragma omp parallel for schedule(dynamic, 1) num_threads(threads)

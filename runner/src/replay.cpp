@@ -4,21 +4,21 @@
 #include <deque>
 #include <stdexcept>
 
-#include "anchorbench/io/input_error.hpp"
+#include "anchorbench/schema/input_error.hpp"
 
 namespace anchorbench::runner {
 namespace {
 
-estimator::FrontEnd::ChainFactory ChainsFor(const std::map<int, eval::AnchorTruth>* truth,
-                                            const registry::EstimatorConfig& config,
+estimator::FrontEnd::ChainFactory ChainsFor(const std::map<int, schema::AnchorTruth>* truth,
+                                            const schema::EstimatorConfig& config,
                                             const registry::Components& components, std::uint64_t seed) {
   return [=, &config, &components](int anchor_id) {
-    const eval::AnchorTruth* known = TruthOf(truth, anchor_id);
+    const schema::AnchorTruth* known = TruthOf(truth, anchor_id);
     try {
       return registry::MakeChains(components, anchor_id, config, SolverSeed(seed, 0, anchor_id),
                                   known ? std::optional(known->p_world_anchor) : std::nullopt);
     } catch (const std::invalid_argument& e) {
-      throw io::InputError("anchor " + std::to_string(anchor_id) + ": " + e.what());
+      throw schema::InputError("anchor " + std::to_string(anchor_id) + ": " + e.what());
     }
   };
 }
@@ -38,7 +38,7 @@ static_assert(io::LogPolicy{}.max_anchors == estimator::FrontEndOptions{}.max_an
 }  // namespace
 
 ReplayResult Replay(const LogSource& log, const std::vector<std::string>& range_sources,
-                    const std::map<int, eval::AnchorTruth>* truth, const registry::EstimatorConfig& config,
+                    const std::map<int, schema::AnchorTruth>* truth, const schema::EstimatorConfig& config,
                     const registry::Components& components, std::uint64_t seed, const TraceSink& trace) {
   ReplayResult result;
   estimator::FrontEnd front_end(ChainsFor(truth, config, components, seed));
@@ -89,7 +89,7 @@ ReplayResult Replay(const LogSource& log, const std::vector<std::string>& range_
 }
 
 ReplayResult Replay(const std::vector<io::PoseRecord>& poses, const std::vector<io::RangeRecord>& ranges,
-                    const std::map<int, eval::AnchorTruth>* truth, const registry::EstimatorConfig& config,
+                    const std::map<int, schema::AnchorTruth>* truth, const schema::EstimatorConfig& config,
                     const registry::Components& components, std::uint64_t seed, const TraceSink& trace) {
   std::vector<io::PoseRecord> by_time = poses;
   std::stable_sort(by_time.begin(), by_time.end(),
@@ -109,8 +109,8 @@ ReplayResult Replay(const std::vector<io::PoseRecord>& poses, const std::vector<
   return Replay(merged, {}, truth, config, components, seed, trace);
 }
 
-void CheckReplayable(const std::set<int>& anchor_ids, const std::map<int, eval::AnchorTruth>* truth,
-                     const registry::EstimatorConfig& config, const registry::Components& components) {
+void CheckReplayable(const std::set<int>& anchor_ids, const std::map<int, schema::AnchorTruth>* truth,
+                     const schema::EstimatorConfig& config, const registry::Components& components) {
   estimator::FrontEnd front_end(ChainsFor(truth, config, components, 0));
   for (int anchor_id : anchor_ids) front_end.AddAnchor(anchor_id);
 }

@@ -8,7 +8,7 @@
 #include "anchorbench/eval/oracles.hpp"
 #include "anchorbench/testing/parts.hpp"
 #include "anchorbench/testing/small_table.hpp"
-#include "anchorbench/io/input_error.hpp"
+#include "anchorbench/schema/input_error.hpp"
 
 namespace anchorbench::runner {
 namespace {
@@ -17,10 +17,10 @@ using anchorbench::testing::Parts;
 using anchorbench::testing::SmallTable;
 
 // Every deterministic field of every attempt, doubles to the last bit.
-std::string Outputs(const ExperimentConfig& config, int threads) {
+std::string Outputs(const schema::ExperimentConfig& config, int threads) {
   std::ostringstream out;
   out << std::hexfloat;
-  for (const Attempt& a : RunMonteCarlo(config, Parts(), {threads, nullptr})) {
+  for (const schema::Attempt& a : RunMonteCarlo(config, Parts(), {threads, nullptr})) {
     out << a.row << ' ' << a.realization << ' ' << a.anchor_id << ' ' << a.method << ' ' << a.initialized << ' '
         << a.t_init_s.value_or(-1.0) << ' ' << a.n_used << ' ' << a.pdop_estimate << ' ' << a.status;
     if (a.solve) out << ' ' << a.solve->p_world_anchor.transpose() << ' ' << a.solve->bias_m << ' ' << a.solve->alpha;
@@ -34,18 +34,18 @@ std::string Outputs(const ExperimentConfig& config, int threads) {
 }
 
 TEST(MonteCarlo, BitIdenticalForAnyThreadCount) {
-  const ExperimentConfig config = SmallTable();
+  const schema::ExperimentConfig config = SmallTable();
   const std::string one = Outputs(config, 1);
   EXPECT_EQ(one, Outputs(config, 2));
   EXPECT_EQ(one, Outputs(config, 3));  // more threads than cores, uneven split
 }
 
 TEST(MonteCarlo, AllTriggersAndFiltersAreBitIdenticalForAnyThreadCount) {
-  ExperimentConfig config = SmallTable();
+  schema::ExperimentConfig config = SmallTable();
   config.realizations = 3;
   const std::vector<std::string> triggers = {"pdop_closest_point", "pdop_ls", "pdop_nls", "pdop_true",
                                              "fixed_window", "sample_count", "timeout"};
-  for (RowConfig& row : config.rows) {
+  for (schema::RowConfig& row : config.rows) {
     row.estimator.triggers = triggers;
     row.estimator.solver = "lm_l2";
     row.estimator.filter.kind = "ransac";  // the first row with our RANSAC as it comes
@@ -57,7 +57,7 @@ TEST(MonteCarlo, AllTriggersAndFiltersAreBitIdenticalForAnyThreadCount) {
   table_ii.success_probability = 0.9;
   const std::string one = Outputs(config, 1);
   EXPECT_EQ(one, Outputs(config, 2));
-  const std::vector<Attempt> attempts = RunMonteCarlo(config, Parts(), {2, nullptr});
+  const std::vector<schema::Attempt> attempts = RunMonteCarlo(config, Parts(), {2, nullptr});
   ASSERT_EQ(attempts.size(), 2u * 3u * 4u * triggers.size());
   for (std::size_t i = 0; i < attempts.size(); ++i) {
     EXPECT_EQ(attempts[i].method, triggers[i % triggers.size()]);  // anchor by anchor, in list order
@@ -66,10 +66,10 @@ TEST(MonteCarlo, AllTriggersAndFiltersAreBitIdenticalForAnyThreadCount) {
 }
 
 TEST(MonteCarlo, EveryAnchorIsOneAttemptPerStrategyAndNothingIsNan) {
-  const ExperimentConfig config = SmallTable();
-  const std::vector<Attempt> attempts = RunMonteCarlo(config, Parts(), {2, nullptr});
+  const schema::ExperimentConfig config = SmallTable();
+  const std::vector<schema::Attempt> attempts = RunMonteCarlo(config, Parts(), {2, nullptr});
   ASSERT_EQ(attempts.size(), 2u * 6u * 4u * 2u);  // rows x realizations x anchors x strategies
-  for (const Attempt& a : attempts) {
+  for (const schema::Attempt& a : attempts) {
     EXPECT_FALSE(a.status.empty());
     if (a.initialized) {
       ASSERT_TRUE(a.evaluation->error_m.has_value());
@@ -83,16 +83,16 @@ TEST(MonteCarlo, EveryAnchorIsOneAttemptPerStrategyAndNothingIsNan) {
 }
 
 TEST(MonteCarlo, ExactlyStraightRunsRecordDegenerateStatusesAndNeverAbort) {
-  ExperimentConfig config = SmallTable();
-  for (RowConfig& row : config.rows) {
+  schema::ExperimentConfig config = SmallTable();
+  for (schema::RowConfig& row : config.rows) {
     row.scenario.trajectory.fraction_straight = 1.0;
     row.scenario.trajectory.fraction_planar = 0.0;
     row.scenario.ranging.sigma_position_m = 0.0;  // exactly collinear tag positions
   }
-  const std::vector<Attempt> attempts = RunMonteCarlo(config, Parts(), {1, nullptr});
+  const std::vector<schema::Attempt> attempts = RunMonteCarlo(config, Parts(), {1, nullptr});
   int degenerate = 0;
-  for (const Attempt& a : attempts) {
-    if (a.method == kPaperTrigger) {
+  for (const schema::Attempt& a : attempts) {
+    if (a.method == schema::kPaperTrigger) {
       EXPECT_FALSE(a.initialized);  // the PDOP of a straight line is infinite
     }
     degenerate += a.status == "degenerate_geometry";
@@ -102,11 +102,11 @@ TEST(MonteCarlo, ExactlyStraightRunsRecordDegenerateStatusesAndNeverAbort) {
 }
 
 TEST(MonteCarlo, TheConfiguredSolverIsTheOneThatRuns) {
-  ExperimentConfig config = SmallTable();
+  schema::ExperimentConfig config = SmallTable();
   config.rows.resize(1);
-  const std::vector<Attempt> adaptive = RunMonteCarlo(config, Parts(), {1, nullptr});
+  const std::vector<schema::Attempt> adaptive = RunMonteCarlo(config, Parts(), {1, nullptr});
   config.rows[0].estimator.solver = "ls_double";  // closed form: no kernel, alpha stays 2
-  const std::vector<Attempt> ls = RunMonteCarlo(config, Parts(), {1, nullptr});
+  const std::vector<schema::Attempt> ls = RunMonteCarlo(config, Parts(), {1, nullptr});
   ASSERT_EQ(adaptive.size(), ls.size());
   int differ = 0;
   for (std::size_t i = 0; i < ls.size(); ++i) {
@@ -122,12 +122,12 @@ TEST(MonteCarlo, TheConfiguredSolverIsTheOneThatRuns) {
 // an unknown trigger is another) must end in the one-line error, not std::terminate: the rows
 // are checked before the loop, and errors in the loop are carried out of the parallel region.
 TEST(MonteCarlo, AnUnbuildablePartIsAnInputErrorBeforeAnyTrial) {
-  ExperimentConfig config = SmallTable();
+  schema::ExperimentConfig config = SmallTable();
   config.rows[1].estimator.triggers = {"fixed_window", "no_such_trigger"};
   try {
     RunMonteCarlo(config, Parts(), {2, nullptr});
     FAIL() << "no error";
-  } catch (const io::InputError& e) {
+  } catch (const schema::InputError& e) {
     EXPECT_NE(std::string(e.what()).find("row high: unknown trigger 'no_such_trigger'"), std::string::npos) << e.what();
   }
 }
@@ -144,8 +144,8 @@ TEST(MonteCarlo, AnExceptionInsideARealizationIsCarriedOutOfTheParallelLoop) {
   parts.solvers.Register("throwing", "breaks the contract", [](const std::string&, const registry::SolverContext&) {
     return std::make_unique<Throwing>();
   });
-  ExperimentConfig config = SmallTable();
-  for (RowConfig& row : config.rows) row.estimator.solver = "throwing";
+  schema::ExperimentConfig config = SmallTable();
+  for (schema::RowConfig& row : config.rows) row.estimator.solver = "throwing";
   EXPECT_THROW(RunMonteCarlo(config, parts, {2, nullptr}), std::runtime_error);
 }
 

@@ -12,8 +12,8 @@ namespace {
 
 using anchorbench::testing::Parts;
 
-ExperimentConfig OneAnchor() {
-  ExperimentConfig config;
+schema::ExperimentConfig OneAnchor() {
+  schema::ExperimentConfig config;
   config.realizations = 6;
   config.scenario.tunnel.length_m = 60.0;
   config.scenario.tunnel.num_anchors = 1;

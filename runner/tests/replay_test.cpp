@@ -9,11 +9,11 @@
 #include "anchorbench/eval/oracles.hpp"
 #include "anchorbench/testing/parts.hpp"
 #include "anchorbench/io/hanyang.hpp"
-#include "anchorbench/io/input_error.hpp"
+#include "anchorbench/schema/input_error.hpp"
 #include "anchorbench/io/recorded_data.hpp"
 #include "anchorbench/io/result_folder.hpp"
 #include "anchorbench/io/scenario_files.hpp"
-#include "anchorbench/runner/experiment.hpp"
+#include "anchorbench/schema/experiment.hpp"
 #include "anchorbench/testing/temp_dir.hpp"
 
 namespace anchorbench::runner {
@@ -55,7 +55,7 @@ TEST(Replay, SimulatedWellConditionedRunInitializesEveryAnchorWithinItsBound) {
   const std::filesystem::path log = dir.path() / "log";
 
   const auto truth = io::LoadAnchors((log / "anchors.csv").string());
-  registry::EstimatorConfig estimator = anchorbench::testing::PaperEstimator();
+  schema::EstimatorConfig estimator = anchorbench::testing::PaperEstimator();
   estimator.filter.consistency.tau_m = 0.3;  // ~2 sigma of a difference of two ranges
   estimator.solver_options.nls.kernel_scale_m = options.ranging.sigma_range_m;
   const ReplayResult result = Replay(io::LoadPoses((log / "poses.csv").string()),
@@ -63,9 +63,9 @@ TEST(Replay, SimulatedWellConditionedRunInitializesEveryAnchorWithinItsBound) {
 
   EXPECT_EQ(result.drops.total(), 0);
   ASSERT_EQ(result.attempts.size(), 2 * scenario.anchors.size());
-  for (const Attempt& a : result.attempts) {
+  for (const schema::Attempt& a : result.attempts) {
     ASSERT_TRUE(a.initialized) << "anchor " << a.anchor_id << " " << a.method;
-    if (a.method == kPaperTrigger) {
+    if (a.method == schema::kPaperTrigger) {
       EXPECT_LT(a.pdop_estimate, 1.0);
     }
     // The CRLB of (p_A, gamma) on these samples is sigma_d * bias-aware DOP (m, RMS of the 3D
@@ -77,12 +77,12 @@ TEST(Replay, SimulatedWellConditionedRunInitializesEveryAnchorWithinItsBound) {
 
 TEST(Replay, TheOracleTriggerWithoutTruthIsAnInputErrorNamingIt) {
   const std::vector<io::RangeRecord> ranges = {{1.0, 0, 3, 10.0, 2}};
-  registry::EstimatorConfig config;
+  schema::EstimatorConfig config;
   config.triggers = {"fixed_window", "pdop_true"};
   try {
     Replay(Parabola(0.0, 10), ranges, nullptr, config, Parts(), 1);
     FAIL() << "no error";
-  } catch (const io::InputError& e) {
+  } catch (const schema::InputError& e) {
     EXPECT_NE(std::string(e.what()).find("anchor 3: trigger 'pdop_true': needs the true anchor position"),
               std::string::npos)
         << e.what();
@@ -92,7 +92,7 @@ TEST(Replay, TheOracleTriggerWithoutTruthIsAnInputErrorNamingIt) {
 TEST(Replay, RangesOutsideThePoseSpanAreSkippedAndCounted) {
   std::vector<io::RangeRecord> ranges;
   for (int k = 0; k < 130; ++k) ranges.push_back({0.1 * k, 0, 1, 10.0, k + 2});
-  const registry::EstimatorConfig defaults;  // named: GCC 12 warns falsely on a `{}` temporary
+  const schema::EstimatorConfig defaults;  // named: GCC 12 warns falsely on a `{}` temporary
   const ReplayResult result = Replay(Parabola(1.0, 10), ranges, nullptr, defaults, Parts(), 1);
   const io::DropTally& outside = result.drops.ranges_by_anchor().at(1).at(io::Drop::kOutsidePoses);
   EXPECT_EQ(outside.count, 10 + 19);  // t < 1 s (10 ranges) and t > 11 s (19 ranges)
@@ -111,7 +111,7 @@ TEST(Replay, PoseFilesInAnyTagOrderGiveTheSameResult) {
   for (std::size_t k = 0; k < scenario.t_s.size(); ++k) by_tag.push_back({scenario.t_s[k], 1, scenario.p_world_tag_reported[0][k]});
   std::vector<io::RangeRecord> ranges;
   for (const sim::SimRange& r : scenario.ranges) ranges.push_back({r.t_s, r.tag_id, r.anchor_id, r.range_m, 0});
-  const registry::EstimatorConfig defaults;
+  const schema::EstimatorConfig defaults;
   const ReplayResult a = Replay(by_epoch, ranges, nullptr, defaults, Parts(), 1);
   const ReplayResult b = Replay(by_tag, ranges, nullptr, defaults, Parts(), 1);
   ASSERT_EQ(a.attempts.size(), b.attempts.size());
@@ -127,12 +127,12 @@ TEST(Replay, RealHanyangLosCase) {
   const io::Recording recording = io::ConvertHanyangCase(case_folder).recording;
   EXPECT_EQ(recording.anchors.size(), 4u);
   EXPECT_GT(recording.ranges.size(), 8000u);
-  registry::EstimatorConfig config = anchorbench::testing::PaperEstimator();
+  schema::EstimatorConfig config = anchorbench::testing::PaperEstimator();
   config.filter.consistency.tau_m = 0.2;
   const ReplayResult result = Replay(recording.poses, recording.ranges, &recording.anchors, config, Parts(), 1);
   ASSERT_EQ(result.attempts.size(), 8u);
-  for (const Attempt& a : result.attempts) {
-    if (a.method == kFixedWindowTrigger) {
+  for (const schema::Attempt& a : result.attempts) {
+    if (a.method == schema::kFixedWindowTrigger) {
       ASSERT_TRUE(a.initialized);
       EXPECT_LT(*a.evaluation->error_m, 1.5);  // the dataset README: a naive fixed window lands at ~0.6-0.7 m
     }

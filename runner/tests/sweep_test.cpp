@@ -2,11 +2,11 @@
 
 #include <gtest/gtest.h>
 
-#include "anchorbench/io/input_error.hpp"
+#include "anchorbench/schema/input_error.hpp"
 
 namespace anchorbench::runner {
 
-using io::InputError;
+using schema::InputError;
 namespace {
 
 using Values = std::vector<std::string>;
@@ -24,15 +24,15 @@ TEST(Sweep, ListsAndInclusiveRanges) {
 }
 
 TEST(Sweep, BadValuesNameTheKey) {
-  EXPECT_THROW(ParseSweepAxis("a.b", "1:2"), InputError);
-  EXPECT_THROW(ParseSweepAxis("a.b", "1:0:0.5"), InputError);
-  EXPECT_THROW(ParseSweepAxis("a.b", "1:2:0"), InputError);
-  EXPECT_THROW(ParseSweepAxis("a.b", "1:x:1"), InputError);  // starts like a range, is not one
-  EXPECT_THROW(ParseSweepAxis("a.b", "1,,2"), InputError);
-  EXPECT_THROW(ParseSweepAssignment("no_equals"), InputError);
+  EXPECT_THROW(ParseSweepAxis("a.b", "1:2"), schema::InputError);
+  EXPECT_THROW(ParseSweepAxis("a.b", "1:0:0.5"), schema::InputError);
+  EXPECT_THROW(ParseSweepAxis("a.b", "1:2:0"), schema::InputError);
+  EXPECT_THROW(ParseSweepAxis("a.b", "1:x:1"), schema::InputError);  // starts like a range, is not one
+  EXPECT_THROW(ParseSweepAxis("a.b", "1,,2"), schema::InputError);
+  EXPECT_THROW(ParseSweepAssignment("no_equals"), schema::InputError);
   try {
     ParseSweepAxis("estimator.trigger.pdop_threshold", "0:1:-1");
-  } catch (const InputError& e) {
+  } catch (const schema::InputError& e) {
     EXPECT_NE(std::string(e.what()).find("estimator.trigger.pdop_threshold"), std::string::npos);
   }
 }

@@ -7,7 +7,7 @@
 #include "anchorbench/io/csv_reader.hpp"
 #include "anchorbench/io/format.hpp"
 #include "anchorbench/io/hash.hpp"
-#include "anchorbench/io/input_error.hpp"
+#include "anchorbench/schema/input_error.hpp"
 #include "anchorbench/report/run_outputs.hpp"
 #include "anchorbench/report/attempts_file.hpp"
 #include "anchorbench/runner/monte_carlo.hpp"
@@ -16,7 +16,7 @@ namespace anchorbench::work {
 namespace {
 
 // The attempts a run writes for one unit: one per anchor and trigger.
-std::size_t AttemptsPerUnit(const runner::RowConfig& row) {
+std::size_t AttemptsPerUnit(const schema::RowConfig& row) {
   return static_cast<std::size_t>(row.scenario.NumAnchors()) * row.estimator.triggers.size();
 }
 
@@ -25,12 +25,12 @@ std::size_t AttemptsPerUnit(const runner::RowConfig& row) {
 ChunkResult ComputeChunk(const Plan& plan, int chunk, const registry::Components& components,
                          std::vector<estimator::RangeSample>& samples) {
   const ChunkSpan& span = plan.chunks()[static_cast<std::size_t>(chunk)];
-  const runner::ExperimentConfig& config = plan.experiments()[static_cast<std::size_t>(span.experiment)];
-  const std::vector<runner::RowConfig>& rows = plan.rows(span.experiment);
+  const schema::ExperimentConfig& config = plan.experiments()[static_cast<std::size_t>(span.experiment)];
+  const std::vector<schema::RowConfig>& rows = plan.rows(span.experiment);
   ChunkResult result;
   for (int unit = span.first_unit; unit < span.end_unit; ++unit) {
     const int row = unit / config.realizations;
-    for (runner::Attempt& attempt : runner::RunRealization(rows[static_cast<std::size_t>(row)], row, config.seed,
+    for (schema::Attempt& attempt : runner::RunRealization(rows[static_cast<std::size_t>(row)], row, config.seed,
                                                            unit % config.realizations, components, samples)) {
       result.attempts.push_back(std::move(attempt));
     }
@@ -83,14 +83,14 @@ std::string_view CheckedBody(const Plan& plan, int chunk, std::string_view text,
   const std::size_t newline = text.find('\n');
   const std::string_view first = text.substr(0, newline);
   if (newline == std::string_view::npos || first.rfind(kChunkMark, 0) != 0) {
-    throw io::InputError(source + ":1: not a chunk file (its first line is not '" + std::string(kChunkMark) + "...')");
+    throw schema::InputError(source + ":1: not a chunk file (its first line is not '" + std::string(kChunkMark) + "...')");
   }
   const std::string_view body = text.substr(newline + 1);
   if (first != IdentityLine(plan, chunk, body)) {
     const std::string expected = IdentityLine(plan, chunk, body);
     const std::size_t checksum = expected.rfind(", fnv1a64 ");
     const bool same_chunk = first.substr(0, checksum) == std::string_view(expected).substr(0, checksum);
-    throw io::InputError(source + ":1: " +
+    throw schema::InputError(source + ":1: " +
                          (same_chunk ? "its lines do not match its checksum (edited or torn)"
                                      : "is not chunk " + std::to_string(chunk) + " of plan " + plan.identity() +
                                            " (another run's, or another chunk's): '" + io::Printable(first) + "'"));
@@ -104,7 +104,7 @@ ChunkResult ParseChunk(const Plan& plan, int chunk, const std::string& text, con
   const std::string_view body = CheckedBody(plan, chunk, text, source);
   const ChunkSpan& span = plan.chunks()[static_cast<std::size_t>(chunk)];
   const int realizations = plan.experiments()[static_cast<std::size_t>(span.experiment)].realizations;
-  const std::vector<runner::RowConfig>& rows = plan.rows(span.experiment);
+  const std::vector<schema::RowConfig>& rows = plan.rows(span.experiment);
   report::AttemptsFile file = report::ParseAttempts(std::string(body), source, rows);
   // Unit by unit: each of the chunk's units in order, whole.
   std::size_t next = 0;
@@ -112,11 +112,11 @@ ChunkResult ParseChunk(const Plan& plan, int chunk, const std::string& text, con
     const std::size_t expected = AttemptsPerUnit(rows[static_cast<std::size_t>(unit / realizations)]);
     for (std::size_t k = 0; k < expected; ++k, ++next) {
       if (next >= file.attempts.size()) {
-        throw io::InputError(source + ": ends within unit " + std::to_string(unit) + " (a chunk cut short?)");
+        throw schema::InputError(source + ": ends within unit " + std::to_string(unit) + " (a chunk cut short?)");
       }
-      const runner::Attempt& a = file.attempts[next];
+      const schema::Attempt& a = file.attempts[next];
       if (a.row * realizations + a.realization != unit) {
-        throw io::InputError(source + ":" + std::to_string(next + 2) + ": an attempt of row " +
+        throw schema::InputError(source + ":" + std::to_string(next + 2) + ": an attempt of row " +
                              rows[static_cast<std::size_t>(a.row)].name + ", realization " +
                              std::to_string(a.realization) + " where unit " + std::to_string(unit) +
                              "'s attempts belong");
@@ -124,7 +124,7 @@ ChunkResult ParseChunk(const Plan& plan, int chunk, const std::string& text, con
     }
   }
   if (next != file.attempts.size()) {
-    throw io::InputError(source + ":" + std::to_string(next + 2) + ": attempts beyond the chunk's units");
+    throw schema::InputError(source + ":" + std::to_string(next + 2) + ": attempts beyond the chunk's units");
   }
   return {std::move(file.attempts), std::move(file.lines)};
 }

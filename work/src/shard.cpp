@@ -2,7 +2,7 @@
 
 #include <charconv>
 
-#include "anchorbench/io/input_error.hpp"
+#include "anchorbench/schema/input_error.hpp"
 
 namespace anchorbench::work {
 
@@ -15,7 +15,7 @@ Shard ParseShard(const std::string& text, const std::string& what) {
   };
   if (slash == std::string::npos || !parse(0, slash, &shard.index) || !parse(slash + 1, text.size(), &shard.count) ||
       shard.count < 1 || shard.count > 1000000 || shard.index < 0 || shard.index >= shard.count) {
-    throw io::InputError(what + ": '" + text + "' is not a shard I/N with 0 <= I < N <= 1000000 (e.g. 0/4)");
+    throw schema::InputError(what + ": '" + text + "' is not a shard I/N with 0 <= I < N <= 1000000 (e.g. 0/4)");
   }
   return shard;
 }

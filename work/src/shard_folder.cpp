@@ -5,13 +5,13 @@
 
 #include "anchorbench/config/load_config.hpp"
 #include "anchorbench/io/csv_reader.hpp"
-#include "anchorbench/io/input_error.hpp"
+#include "anchorbench/schema/input_error.hpp"
 
 namespace anchorbench::work {
 namespace fs = std::filesystem;
 
 Plan RebuildPlan(const ShardInputs& inputs, const registry::Components& components) {
-  std::vector<runner::ExperimentConfig> experiments;
+  std::vector<schema::ExperimentConfig> experiments;
   if (inputs.axes.empty()) {
     experiments.push_back(config::LoadConfigText(inputs.config_yaml, "config.yaml", {}, components));
   } else {
@@ -70,13 +70,13 @@ std::map<int, ChunkResult> ReadShardChunks(const fs::path& folder, const ShardIn
     if (!info.shard.Holds(chunk)) continue;
     const fs::path path = folder / ChunkFileName(chunk);
     if (!fs::exists(path)) {
-      throw io::InputError(path.string() + ": missing; shard " + std::to_string(info.shard.index) + "/" +
+      throw schema::InputError(path.string() + ": missing; shard " + std::to_string(info.shard.index) + "/" +
                            std::to_string(info.shard.count) + " holds it (a folder edited after the run?)");
     }
     chunks.emplace(chunk, ReadChunkFile(plan, chunk, path.string()));
   }
   if (static_cast<int>(chunks.size()) != info.chunks) {
-    throw io::InputError((folder / "shard.csv").string() + ": says " + std::to_string(info.chunks) +
+    throw schema::InputError((folder / "shard.csv").string() + ": says " + std::to_string(info.chunks) +
                          " chunks, the plan gives this shard " + std::to_string(chunks.size()));
   }
   return chunks;

@@ -2,7 +2,7 @@
 
 #include <gtest/gtest.h>
 
-#include "anchorbench/io/input_error.hpp"
+#include "anchorbench/schema/input_error.hpp"
 #include "anchorbench/testing/parts.hpp"
 #include "anchorbench/testing/small_table.hpp"
 #include "anchorbench/testing/temp_dir.hpp"
@@ -37,11 +37,11 @@ TEST(ChunkStore, ResumesItsOwnPlanAndRefusesAnother) {
     RunPlan(plan, killed, {2, &store, nullptr});
   }
   EXPECT_TRUE(std::filesystem::exists(dir.path() / "results.chunks" / "chunk-000005.csv"));
-  EXPECT_THROW(ChunkStore(out, plan, Mode::kFresh), io::InputError);  // an interrupted run
-  runner::ExperimentConfig other = SmallTable();
+  EXPECT_THROW(ChunkStore(out, plan, Mode::kFresh), schema::InputError);  // an interrupted run
+  schema::ExperimentConfig other = SmallTable();
   other.seed = 99;
   const Plan other_plan({other});
-  EXPECT_THROW(ChunkStore(out, other_plan, Mode::kResume), io::InputError);
+  EXPECT_THROW(ChunkStore(out, other_plan, Mode::kResume), schema::InputError);
 
   ChunkStore store(out, plan, Mode::kResume);
   LocalExecutor executor(Parts());
@@ -104,9 +104,9 @@ TEST(LocalExecutor, AnErrorWhileKeepingAChunkEndsTheCall) {
     int kept = 0;
     LocalExecutor executor(testing::Parts());
     const auto keep = [&](int, ChunkResult&&, const std::string&) {
-      if (++kept == 3) throw io::InputError("chunk-000002.csv: cannot write the chunk: No space left on device");
+      if (++kept == 3) throw schema::InputError("chunk-000002.csv: cannot write the chunk: No space left on device");
     };
-    EXPECT_THROW(executor.Compute(plan, chunks, threads, keep), io::InputError) << threads << " threads";
+    EXPECT_THROW(executor.Compute(plan, chunks, threads, keep), schema::InputError) << threads << " threads";
     EXPECT_GE(kept, 3);
     EXPECT_LT(kept, static_cast<int>(chunks.size()) + 1);
   }
@@ -126,7 +126,7 @@ TEST(ChunkStore, ClaimsItsSpaceBeforeAnyWork) {
   try {
     ChunkStore store(dir.path() / "huge", plan, Mode::kFresh, std::uintmax_t(1) << 62);
     FAIL() << "an exabyte was reserved";
-  } catch (const io::InputError& e) {
+  } catch (const schema::InputError& e) {
     EXPECT_NE(std::string(e.what()).find("huge.chunks: the chunks of this run need about"), std::string::npos) << e.what();
   }
   EXPECT_FALSE(std::filesystem::exists(dir.path() / "huge.chunks"));

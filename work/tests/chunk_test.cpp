@@ -4,7 +4,7 @@
 
 #include <gtest/gtest.h>
 
-#include "anchorbench/io/input_error.hpp"
+#include "anchorbench/schema/input_error.hpp"
 #include "anchorbench/report/run_outputs.hpp"
 #include "anchorbench/runner/monte_carlo.hpp"
 #include "anchorbench/testing/parts.hpp"
@@ -17,7 +17,7 @@ namespace {
 using testing::Parts;
 using testing::SmallTable;
 
-std::string AttemptsCsv(const std::vector<runner::Attempt>& attempts, const std::vector<runner::RowConfig>& rows) {
+std::string AttemptsCsv(const std::vector<schema::Attempt>& attempts, const std::vector<schema::RowConfig>& rows) {
   std::ostringstream csv;
   report::WriteAttempts(csv, attempts, rows);
   return csv.str();
@@ -25,8 +25,8 @@ std::string AttemptsCsv(const std::vector<runner::Attempt>& attempts, const std:
 
 // Chunk by chunk on any thread count, the run is the runner's whole run, byte for byte.
 TEST(RunPlan, IsTheWholeRunForAnyThreadCount) {
-  const runner::ExperimentConfig config = SmallTable();
-  const std::vector<runner::RowConfig> rows = runner::RowsOf(config);
+  const schema::ExperimentConfig config = SmallTable();
+  const std::vector<schema::RowConfig> rows = schema::RowsOf(config);
   const std::string whole = AttemptsCsv(runner::RunMonteCarlo(config, Parts(), {1, nullptr}), rows);
   const Plan plan({config});
   LocalExecutor executor(Parts());
@@ -70,10 +70,10 @@ TEST(Chunk, ACutForeignOrLongChunkIsRefused) {
   std::vector<estimator::RangeSample> samples;
   const std::string text = ChunkText(plan, 3, ComputeChunk(plan, 3, Parts(), samples));
   const std::string cut = text.substr(0, text.rfind('\n', text.size() - 2) + 1);
-  EXPECT_THROW(ParseChunk(plan, 3, cut, "cut"), io::InputError);
-  EXPECT_THROW(ParseChunk(plan, 4, text, "foreign"), io::InputError);
+  EXPECT_THROW(ParseChunk(plan, 3, cut, "cut"), schema::InputError);
+  EXPECT_THROW(ParseChunk(plan, 4, text, "foreign"), schema::InputError);
   const std::string last_line = text.substr(cut.size());
-  EXPECT_THROW(ParseChunk(plan, 3, text + last_line, "long"), io::InputError);
+  EXPECT_THROW(ParseChunk(plan, 3, text + last_line, "long"), schema::InputError);
   EXPECT_NO_THROW(ParseChunk(plan, 3, text, "whole"));
 }
 
@@ -82,7 +82,7 @@ TEST(Chunk, ACutForeignOrLongChunkIsRefused) {
 // line that says why, before any field is read.
 TEST(Chunk, AnEditedSwappedOrForeignChunkIsRefused) {
   const Plan plan({SmallTable()});
-  runner::ExperimentConfig other_seed = SmallTable();
+  schema::ExperimentConfig other_seed = SmallTable();
   other_seed.seed = 4294967301ull;  // 2^32 + 5: a seed cut to int would make it 5 and the plans equal
   const Plan other({other_seed});
   ASSERT_NE(plan.identity(), other.identity());
@@ -92,7 +92,7 @@ TEST(Chunk, AnEditedSwappedOrForeignChunkIsRefused) {
   const auto refusal = [&](const std::string& bad) {
     try {
       ParseChunk(plan, 3, bad, "c");
-    } catch (const io::InputError& e) {
+    } catch (const schema::InputError& e) {
       return std::string(e.what());
     }
     return std::string("accepted");
@@ -141,7 +141,7 @@ TEST(Shard, IsParsedStrictly) {
   EXPECT_EQ(ParseShard("2/5", "--shard").index, 2);
   EXPECT_EQ(ParseShard("2/5", "--shard").count, 5);
   for (const char* bad : {"5/5", "-1/3", "1/0", "x", "1/", "/2", "1/2/3", "1 /2"}) {
-    EXPECT_THROW(ParseShard(bad, "--shard"), io::InputError) << bad;
+    EXPECT_THROW(ParseShard(bad, "--shard"), schema::InputError) << bad;
   }
 }
 

@@ -2,7 +2,7 @@
 
 #include <gtest/gtest.h>
 
-#include "anchorbench/io/input_error.hpp"
+#include "anchorbench/schema/input_error.hpp"
 #include "anchorbench/testing/parts.hpp"
 #include "anchorbench/testing/small_table.hpp"
 
@@ -13,7 +13,7 @@ using testing::SmallTable;
 
 // Every unit of every experiment in exactly one chunk, in order; chunks of the documented size.
 TEST(Plan, ChunksHoldEveryUnitOnceInOrder) {
-  std::vector<runner::ExperimentConfig> experiments;
+  std::vector<schema::ExperimentConfig> experiments;
   for (int realizations : {1, 6, 128, 300, 20000}) {
     experiments.push_back(SmallTable());
     experiments.back().realizations = realizations;
@@ -42,7 +42,7 @@ TEST(Plan, ChunksHoldEveryUnitOnceInOrder) {
 // A worker's copy, rebuilt from the texts, is the same plan; texts that do not match the identity
 // they came with are refused.
 TEST(Plan, ReadBackFromItsTextsItIsTheSamePlan) {
-  runner::ExperimentConfig other = SmallTable();
+  schema::ExperimentConfig other = SmallTable();
   other.seed = 8;
   const Plan plan({SmallTable(), other});
   const Plan copy = PlanFromTexts(plan.texts(), plan.identity(), testing::Parts());
@@ -50,7 +50,7 @@ TEST(Plan, ReadBackFromItsTextsItIsTheSamePlan) {
   ASSERT_EQ(copy.chunks().size(), plan.chunks().size());
   EXPECT_EQ(copy.experiments()[1].seed, 8u);
   EXPECT_NE(Plan({SmallTable()}).identity(), plan.identity());
-  EXPECT_THROW(PlanFromTexts(plan.texts(), Plan({SmallTable()}).identity(), testing::Parts()), io::InputError);
+  EXPECT_THROW(PlanFromTexts(plan.texts(), Plan({SmallTable()}).identity(), testing::Parts()), schema::InputError);
 }
 
 }  // namespace

@@ -10,7 +10,7 @@
 #include "anchorbench/calibrate/evaluation_log.hpp"
 #include "anchorbench/calibrate/fit.hpp"
 #include "anchorbench/report/paper_cells.hpp"
-#include "anchorbench/runner/calibration_spec.hpp"
+#include "anchorbench/schema/calibration_spec.hpp"
 
 namespace anchorbench::calibrate {
 
@@ -22,7 +22,7 @@ struct Verification {
 };
 
 struct CalibrationOutcome {
-  const runner::CalibrationSpec& spec;
+  const schema::CalibrationSpec& spec;
   std::vector<std::string> row_names;  // by row index
   int full_realizations = 0;           // the experiment's (verification) size
   const Fit& fit;

@@ -13,7 +13,7 @@
 
 #include "anchorbench/calibrate/evaluation_log.hpp"
 #include "anchorbench/report/paper_cells.hpp"
-#include "anchorbench/runner/calibration_spec.hpp"
+#include "anchorbench/schema/calibration_spec.hpp"
 
 namespace anchorbench::calibrate {
 
@@ -37,7 +37,7 @@ struct FitResult {
 class Fit {
  public:
   // `hand_values`: the experiment's own values of the parameters (inside their bounds).
-  Fit(const runner::CalibrationSpec& spec, std::vector<report::PaperCell> targets, std::vector<double> hand_values,
+  Fit(const schema::CalibrationSpec& spec, std::vector<report::PaperCell> targets, std::vector<double> hand_values,
       CellEvaluator evaluate, EvaluationLog* log, std::function<void(int done, int total)> progress = {});
 
   FitResult Run();
@@ -46,16 +46,16 @@ class Fit {
   std::vector<report::PaperCell> CellsOf(const Evaluation& evaluation) const;
   // The text a parameter value is evaluated at: 6 significant digits of min + u (max - min), u on
   // a grid of 1e-4 (the calibrated config prints exactly what was evaluated).
-  static std::string ValueText(const runner::FreeParameter& parameter, double u);
+  static std::string ValueText(const schema::FreeParameter& parameter, double u);
 
  private:
   double Evaluate(const std::vector<double>& u, const std::string& stage);
   double EvaluateTexts(const std::vector<std::string>& texts, const std::vector<double>& u, const std::string& stage);
-  void RunStage(const runner::OptimizerStage& stage, const std::string& name, std::vector<double>* u);
+  void RunStage(const schema::OptimizerStage& stage, const std::string& name, std::vector<double>* u);
   std::size_t Best() const;
   int Total() const;
 
-  const runner::CalibrationSpec& spec_;
+  const schema::CalibrationSpec& spec_;
   std::vector<report::PaperCell> targets_;
   std::vector<double> hand_values_;
   CellEvaluator evaluate_;

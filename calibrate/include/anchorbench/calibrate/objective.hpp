@@ -6,7 +6,7 @@
 #include <vector>
 
 #include "anchorbench/report/paper_cells.hpp"
-#include "anchorbench/runner/experiment.hpp"
+#include "anchorbench/schema/experiment.hpp"
 
 namespace anchorbench::calibrate {
 
@@ -25,7 +25,7 @@ double CellCost(const report::PaperCell& cell, double band = 0.0);
 // The weighted mean of the cells' costs over the cells whose column has weight > 0:
 // sum w cost / sum w. With band 0, exp(sqrt(objective)) is the typical factor ours is off by.
 // With `held_out` the cells whose weight is 0, each weighing 1 (how well the fit predicts them).
-double Objective(const std::vector<report::PaperCell>& cells, const runner::PaperCells& weight, bool held_out = false,
+double Objective(const std::vector<report::PaperCell>& cells, const schema::PaperCells& weight, bool held_out = false,
                  double band = 0.0);
 
 }  // namespace anchorbench::calibrate

@@ -4,28 +4,28 @@
 #include <vector>
 
 #include "anchorbench/registry/components.hpp"
-#include "anchorbench/runner/experiment.hpp"
+#include "anchorbench/schema/experiment.hpp"
 
 namespace anchorbench::config {
 
 // Reads and validates an experiment file (configs/*.yaml; docs/config.md lists the keys); throws
-// io::InputError naming the file and key path. `overrides` are KEY=VALUE pairs (KEY a dotted
+// schema::InputError naming the file and key path. `overrides` are KEY=VALUE pairs (KEY a dotted
 // path such as scenario.tunnel.width_m) applied to the YAML before validation, so an override is
 // checked exactly like a value in the file. Part names (solver, filter, triggers) are checked
 // against `components`, the caller's registries: a part of your own can be named in a file.
-runner::ExperimentConfig LoadConfig(const std::string& path, const std::vector<std::string>& overrides,
+schema::ExperimentConfig LoadConfig(const std::string& path, const std::vector<std::string>& overrides,
                                     const registry::Components& components);
 
 // The same from a config's text (a fuzzer's entry point); `source` names it and anchors `base:`.
-runner::ExperimentConfig LoadConfigText(const std::string& text, const std::string& source,
+schema::ExperimentConfig LoadConfigText(const std::string& text, const std::string& source,
                                         const std::vector<std::string>& overrides,
                                         const registry::Components& components);
 
 // The `estimator` section of a file only (replay --config).
-registry::EstimatorConfig LoadEstimatorConfig(const std::string& path, const registry::Components& components);
+schema::EstimatorConfig LoadEstimatorConfig(const std::string& path, const registry::Components& components);
 
 // The resolved configuration in the file schema: YAML text, and JSON (for manifests).
-std::string ToYaml(const runner::ExperimentConfig& config);
-std::string ToJson(const runner::ExperimentConfig& config, int indent = 2);
+std::string ToYaml(const schema::ExperimentConfig& config);
+std::string ToJson(const schema::ExperimentConfig& config, int indent = 2);
 
 }  // namespace anchorbench::config

@@ -7,7 +7,7 @@
 
 #include <Eigen/Core>
 
-#include "anchorbench/eval/attempt_evaluation.hpp"
+#include "anchorbench/schema/attempt.hpp"
 #include "anchorbench/io/log_policy.hpp"
 
 namespace anchorbench::io {
@@ -40,7 +40,7 @@ struct RangeRecord {
 struct Recording {
   std::vector<PoseRecord> poses;
   std::vector<RangeRecord> ranges;
-  std::map<int, eval::AnchorTruth> anchors;
+  std::map<int, schema::AnchorTruth> anchors;
 };
 
 // Whole files read through the streaming readers (log_reader.hpp) into memory, for tests, tools
@@ -50,10 +50,10 @@ std::vector<PoseRecord> ReadPoses(std::istream& in, const std::string& source, c
                                   LogDrops* drops = nullptr);
 std::vector<RangeRecord> ReadRanges(std::istream& in, const std::string& source, const LogPolicy& policy = {},
                                     LogDrops* drops = nullptr);
-std::map<int, eval::AnchorTruth> ReadAnchors(std::istream& in, const std::string& source);
+std::map<int, schema::AnchorTruth> ReadAnchors(std::istream& in, const std::string& source);
 
 std::vector<PoseRecord> LoadPoses(const std::string& path, const LogPolicy& policy = {}, LogDrops* drops = nullptr);
 std::vector<RangeRecord> LoadRanges(const std::string& path, const LogPolicy& policy = {}, LogDrops* drops = nullptr);
-std::map<int, eval::AnchorTruth> LoadAnchors(const std::string& path);
+std::map<int, schema::AnchorTruth> LoadAnchors(const std::string& path);
 
 }  // namespace anchorbench::io

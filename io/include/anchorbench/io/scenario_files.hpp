@@ -4,7 +4,7 @@
 #include <ostream>
 #include <span>
 
-#include "anchorbench/eval/attempt_evaluation.hpp"
+#include "anchorbench/schema/attempt.hpp"
 #include "anchorbench/io/recorded_data.hpp"
 #include "anchorbench/io/result_folder.hpp"
 #include "anchorbench/sim/scenario.hpp"
@@ -16,7 +16,7 @@ namespace anchorbench::io {
 void WritePoses(std::ostream& out, std::span<const PoseRecord> poses);
 void WriteRanges(std::ostream& out, std::span<const RangeRecord> ranges);
 // The bias column appears when at least one anchor has a bias.
-void WriteAnchors(std::ostream& out, const std::map<int, eval::AnchorTruth>& anchors);
+void WriteAnchors(std::ostream& out, const std::map<int, schema::AnchorTruth>& anchors);
 
 // poses.csv, ranges.csv and anchors.csv into the folder.
 void WriteRecording(ResultFolder& folder, const Recording& recording);

@@ -15,7 +15,7 @@
 #include "anchorbench/estimator/outlier_filter.hpp"
 #include "anchorbench/estimator/robust_kernel.hpp"
 #include "anchorbench/estimator/solver.hpp"
-#include "anchorbench/registry/estimator_config.hpp"
+#include "anchorbench/schema/estimator_config.hpp"
 #include "anchorbench/registry/registry.hpp"
 
 namespace anchorbench::registry {
@@ -31,7 +31,7 @@ struct SolverContext {
 
 // What a filter factory gets: the options and a seed for filters that draw random numbers.
 struct FilterContext {
-  FilterConfig options;
+  schema::FilterConfig options;
   std::uint64_t seed = 0;
 };
 
@@ -66,7 +66,7 @@ struct Components {
   std::shared_ptr<estimator::LogPartitionTables> tables = std::make_shared<estimator::LogPartitionTables>();
 
   // Whether every name of `config` is registered here; *why names the first that is not.
-  bool Check(const EstimatorConfig& config, std::string* why) const;
+  bool Check(const schema::EstimatorConfig& config, std::string* why) const;
 };
 
 // ls_single, ls_double, lm_l2, lm_huber, lm_cauchy, lm_adaptive, nlopt:<ALGORITHM>.
@@ -82,13 +82,13 @@ void RegisterBuiltins(Components& components);
 // One anchor's initializer from names: config.filter.kind, config.solver and `trigger`. `seed`
 // feeds the parts that draw random numbers (RANSAC); the reference position serves evaluation
 // triggers and a height prior taken from the reference (HeightPriorConfig). Throws std::invalid_argument saying which name could not be built and why.
-estimator::AnchorInitializer MakeInitializer(const Components& components, int anchor_id, const EstimatorConfig& config,
+estimator::AnchorInitializer MakeInitializer(const Components& components, int anchor_id, const schema::EstimatorConfig& config,
                                              const std::string& trigger, std::uint64_t seed,
                                              const std::optional<Eigen::Vector3d>& p_world_anchor_reference = std::nullopt);
 
 // One initializer per trigger of config.triggers, in that order (a FrontEnd's chains).
 std::vector<estimator::AnchorInitializer> MakeChains(
-    const Components& components, int anchor_id, const EstimatorConfig& config, std::uint64_t seed,
+    const Components& components, int anchor_id, const schema::EstimatorConfig& config, std::uint64_t seed,
     const std::optional<Eigen::Vector3d>& p_world_anchor_reference = std::nullopt);
 
 }  // namespace anchorbench::registry

@@ -8,21 +8,21 @@
 #include <vector>
 
 #include "anchorbench/runner/attempt.hpp"
-#include "anchorbench/runner/experiment.hpp"
+#include "anchorbench/schema/experiment.hpp"
 
 namespace anchorbench::report {
 
 // Each attempt with what the summaries use (row, realization, method, initialized, t_init, error,
 // position NEES, compute_s) and its line as written.
 struct AttemptsFile {
-  std::vector<runner::Attempt> attempts;
+  std::vector<schema::Attempt> attempts;
   std::vector<std::string> lines;
 };
 
 // attempts.csv's text, named `source` in errors, with compute_s as a last column (a chunk:
 // work/chunk.hpp), which is cut from the header and the lines. Rows are named as in `rows`.
-// Throws io::InputError "SOURCE:LINE: ..." on anything malformed.
+// Throws schema::InputError "SOURCE:LINE: ..." on anything malformed.
 AttemptsFile ParseAttempts(const std::string& text, const std::string& source,
-                           const std::vector<runner::RowConfig>& rows);
+                           const std::vector<schema::RowConfig>& rows);
 
 }  // namespace anchorbench::report

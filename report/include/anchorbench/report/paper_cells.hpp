@@ -7,7 +7,7 @@
 #include <vector>
 
 #include "anchorbench/report/summary.hpp"
-#include "anchorbench/runner/experiment.hpp"
+#include "anchorbench/schema/experiment.hpp"
 
 namespace anchorbench::report {
 
@@ -18,13 +18,13 @@ constexpr PaperColumn kPaperColumns[] = {PaperColumn::kAvg, PaperColumn::kMed, P
 const char* ToString(PaperColumn column);  // "avg_m", "med_m", "init", "gt1m", "ratio_pct"
 bool ParsePaperColumn(const std::string& name, PaperColumn* column);
 // The column's entry of a value-per-column struct (the paper's cells, or a weight per column).
-double ValueOf(const runner::PaperCells& cells, PaperColumn column);
+double ValueOf(const schema::PaperCells& cells, PaperColumn column);
 // The decimals a table prints the column with: 3 (m), 0 (counts), 2 (%).
 int Decimals(PaperColumn column);
 
 struct PaperCell {
   int row = 0;         // index into the rows
-  std::string method;  // runner::kFixedWindowTrigger or runner::kPaperTrigger
+  std::string method;  // schema::kFixedWindowTrigger or schema::kPaperTrigger
   PaperColumn column = PaperColumn::kAvg;
   double paper = 0.0;
   std::optional<double> ours;     // absent where nothing initialized
@@ -37,10 +37,10 @@ struct PaperCell {
 
 // The cells of every row that carries the paper's values and runs both of its methods, in table
 // order (row, fixed before gated, columns as above), without ours.
-std::vector<PaperCell> PaperTargets(const std::vector<runner::RowConfig>& rows);
+std::vector<PaperCell> PaperTargets(const std::vector<schema::RowConfig>& rows);
 // The same with ours filled in from the summaries of a run of those rows.
 std::vector<PaperCell> CompareWithPaper(const std::vector<MethodSummary>& summaries,
-                                        const std::vector<runner::RowConfig>& rows);
+                                        const std::vector<schema::RowConfig>& rows);
 
 // Ours within +-25% of the paper's value (false when ours is absent).
 bool WithinQuarter(const PaperCell& cell);

@@ -3,7 +3,7 @@
 #include <ostream>
 #include <string>
 
-#include "anchorbench/runner/experiment.hpp"
+#include "anchorbench/schema/experiment.hpp"
 #include "anchorbench/runner/pdop_study.hpp"
 
 namespace anchorbench::report {
@@ -15,7 +15,7 @@ void WritePdopTrace(std::ostream& out, const std::vector<runner::PdopCheckpoint>
 // pdop_study.md: how often the closest-point PDOP underestimates the true one (Theorem 3.1), the
 // PDOP estimates against the truth per time bin of `bin_s` (Fig. 7), and each PDOP as the trigger
 // (Figs. 7-8).
-void WritePdopStudyMarkdown(std::ostream& out, const runner::ExperimentConfig& config, const runner::PdopStudy& study,
+void WritePdopStudyMarkdown(std::ostream& out, const schema::ExperimentConfig& config, const runner::PdopStudy& study,
                             int every, double bin_s);
 
 }  // namespace anchorbench::report

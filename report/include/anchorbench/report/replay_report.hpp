@@ -10,9 +10,9 @@
 namespace anchorbench::report {
 
 // estimates.csv: anchor_id,method,initialized,t_init,n_used,pdop_est,pdop_true,x,y,z,bias,err_m,status,err_xy,err_z
-void WriteEstimates(std::ostream& out, const std::vector<runner::Attempt>& attempts);
+void WriteEstimates(std::ostream& out, const std::vector<schema::Attempt>& attempts);
 // The same, aligned for a terminal.
-void PrintEstimates(std::ostream& out, const std::vector<runner::Attempt>& attempts);
+void PrintEstimates(std::ostream& out, const std::vector<schema::Attempt>& attempts);
 
 // trace.csv: one line per range handed to the initializers, the first trigger's view of it.
 constexpr const char* kTraceHeader = "t,tag_id,anchor_id,range,accepted,n_accepted,pdop";

@@ -6,7 +6,7 @@
 
 #include "anchorbench/report/summary.hpp"
 #include "anchorbench/runner/attempt.hpp"
-#include "anchorbench/runner/experiment.hpp"
+#include "anchorbench/schema/experiment.hpp"
 
 namespace anchorbench::report {
 
@@ -16,8 +16,8 @@ namespace anchorbench::report {
 constexpr const char* kAttemptsColumns =
     "row,realization,anchor_id,method,initialized,t_init,n_used,pdop_est,pdop_true,crlb_m,err_m,err_x,err_y,err_z,"
     "bias_err,alpha,status,bias_aware_dop,nees_pos,nees,bias_aware_hdop,bias_aware_vdop";
-void WriteAttempts(std::ostream& out, const std::vector<runner::Attempt>& attempts,
-                   const std::vector<runner::RowConfig>& rows);
+void WriteAttempts(std::ostream& out, const std::vector<schema::Attempt>& attempts,
+                   const std::vector<schema::RowConfig>& rows);
 // The same file from lines written before (work::ChunkResult's): the header, then the lines.
 void WriteAttemptLines(std::ostream& out, const std::vector<std::string>& lines);
 
@@ -26,21 +26,21 @@ void WriteAttemptLines(std::ostream& out, const std::vector<std::string>& lines)
 constexpr const char* kSummaryColumns =
     "row,method,avg_m,med_m,init,gt1m,ratio_pct,avg_lo,avg_hi,ratio_lo,ratio_hi,anees_pos,anees_lo,anees_hi,"
     "nees_gt95_pct,med_lo,med_hi";
-std::string SummaryCsvFields(const MethodSummary& summary, const std::vector<runner::RowConfig>& rows);
+std::string SummaryCsvFields(const MethodSummary& summary, const std::vector<schema::RowConfig>& rows);
 void WriteSummaryCsv(std::ostream& out, const std::vector<MethodSummary>& summaries,
-                     const std::vector<runner::RowConfig>& rows);
+                     const std::vector<schema::RowConfig>& rows);
 
 // summary.md: our table, and where rows carry the paper's values, the two side by side cell by
 // cell with the relative difference, and whether the paper's conclusions hold.
 void WriteSummaryMarkdown(std::ostream& out, const std::vector<MethodSummary>& summaries,
-                          const std::vector<runner::RowConfig>& rows, const runner::ExperimentConfig& config);
+                          const std::vector<schema::RowConfig>& rows, const schema::ExperimentConfig& config);
 
 // timing.csv: the wall time the triggers' passes took on this machine. It varies from run to run
 // (and with the thread count), so it stays out of the tables above, which repeat byte for byte.
 constexpr const char* kTimingColumns = "row,method,attempts,init,compute_s,us_per_attempt,us_per_init";
-std::string TimingCsvFields(const MethodSummary& summary, const std::vector<runner::RowConfig>& rows);
+std::string TimingCsvFields(const MethodSummary& summary, const std::vector<schema::RowConfig>& rows);
 void WriteTimingCsv(std::ostream& out, const std::vector<MethodSummary>& summaries,
-                    const std::vector<runner::RowConfig>& rows);
+                    const std::vector<schema::RowConfig>& rows);
 
 // What a manifest records besides the config.
 struct RunInfo {
@@ -54,6 +54,6 @@ struct RunInfo {
 };
 // manifest.json: config file, seed, realizations, threads, revision, compiler, wall time, the
 // command line's changes, the sweep axes and the resolved config.
-std::string ManifestJson(const runner::ExperimentConfig& config, const RunInfo& info);
+std::string ManifestJson(const schema::ExperimentConfig& config, const RunInfo& info);
 
 }  // namespace anchorbench::report

@@ -7,7 +7,7 @@
 
 #include "anchorbench/eval/credibility.hpp"
 #include "anchorbench/runner/attempt.hpp"
-#include "anchorbench/runner/experiment.hpp"
+#include "anchorbench/schema/experiment.hpp"
 
 namespace anchorbench::report {
 
@@ -47,7 +47,7 @@ std::optional<double> Percentile(std::vector<double> values, double q);
 
 // Summaries ordered by row, then by the row's trigger list (estimator.triggers; the default puts
 // fixed_window first, the paper's order). `rows` are the ones the attempts were run on.
-std::vector<MethodSummary> Summarize(const std::vector<runner::Attempt>& attempts, const std::vector<runner::RowConfig>& rows,
+std::vector<MethodSummary> Summarize(const std::vector<schema::Attempt>& attempts, const std::vector<schema::RowConfig>& rows,
                                      int realizations, int bootstrap_resamples, std::uint64_t seed);
 
 }  // namespace anchorbench::report

@@ -5,7 +5,7 @@
 #include <vector>
 
 #include "anchorbench/report/summary.hpp"
-#include "anchorbench/runner/experiment.hpp"
+#include "anchorbench/schema/experiment.hpp"
 #include "anchorbench/runner/sweep.hpp"
 
 namespace anchorbench::report {
@@ -13,7 +13,7 @@ namespace anchorbench::report {
 // The summaries of one grid point of a sweep.
 struct SweepPointResult {
   runner::SweepPoint point;
-  std::vector<runner::RowConfig> rows;
+  std::vector<schema::RowConfig> rows;
   std::vector<MethodSummary> summaries;
 };
 

@@ -6,7 +6,7 @@
 #include <vector>
 
 #include "anchorbench/registry/components.hpp"
-#include "anchorbench/runner/experiment.hpp"
+#include "anchorbench/schema/experiment.hpp"
 
 namespace anchorbench::runner {
 
@@ -72,6 +72,6 @@ struct PdopStudy {
 // accepted sample and takes one checkpoint every `every` of them; a second chain, the configured
 // estimator with the certified trigger, runs beside it. Parallel over realizations,
 // identical for any thread count. The filter comes from `components` by name.
-PdopStudy RunPdopStudy(const ExperimentConfig& config, const registry::Components& components, int every, int threads);
+PdopStudy RunPdopStudy(const schema::ExperimentConfig& config, const registry::Components& components, int every, int threads);
 
 }  // namespace anchorbench::runner

@@ -16,7 +16,7 @@
 namespace anchorbench::runner {
 
 struct ReplayResult {
-  std::vector<Attempt> attempts;  // anchor ids ascending, triggers in list order
+  std::vector<schema::Attempt> attempts;  // anchor ids ascending, triggers in list order
   estimator::FrontEndCounters counters;
   // Rows that never reached the initializers: the readers' drops and the front end's (outside
   // the tag's pose span, no pose in time), by anchor or tag and reason.
@@ -33,19 +33,19 @@ using LogSource = std::function<bool(io::RecordedLog::Kind&, io::PoseRecord&, io
 // row at a time: tag positions interpolated at each range time, ranges outside their tag's pose
 // span dropped and counted, never extrapolated. `range_sources` names the ranges files in drop
 // counts. Random parts are seeded as in a simulation's realization 0 with `seed`. Throws
-// io::InputError if a trigger cannot run (pdop_true without the truth).
+// schema::InputError if a trigger cannot run (pdop_true without the truth).
 ReplayResult Replay(const LogSource& log, const std::vector<std::string>& range_sources,
-                    const std::map<int, eval::AnchorTruth>* truth, const registry::EstimatorConfig& config,
+                    const std::map<int, schema::AnchorTruth>* truth, const schema::EstimatorConfig& config,
                     const registry::Components& components, std::uint64_t seed, const TraceSink& trace = nullptr);
 
 // The same on a log in memory: poses in any order (stably sorted by time), ranges in time order.
 ReplayResult Replay(const std::vector<io::PoseRecord>& poses, const std::vector<io::RangeRecord>& ranges,
-                    const std::map<int, eval::AnchorTruth>* truth, const registry::EstimatorConfig& config,
+                    const std::map<int, schema::AnchorTruth>* truth, const schema::EstimatorConfig& config,
                     const registry::Components& components, std::uint64_t seed, const TraceSink& trace = nullptr);
 
 // Builds every anchor's initializers once, without data, so that what Replay would refuse (a
 // trigger that needs the truth it lacks) is refused before any output exists. Throws InputError.
-void CheckReplayable(const std::set<int>& anchor_ids, const std::map<int, eval::AnchorTruth>* truth,
-                     const registry::EstimatorConfig& config, const registry::Components& components);
+void CheckReplayable(const std::set<int>& anchor_ids, const std::map<int, schema::AnchorTruth>* truth,
+                     const schema::EstimatorConfig& config, const registry::Components& components);
 
 }  // namespace anchorbench::runner

@@ -1,14 +1,14 @@
 #pragma once
 
-#include "anchorbench/registry/estimator_config.hpp"
+#include "anchorbench/schema/estimator_config.hpp"
 
 namespace anchorbench::testing {
 
 // The paper's estimator where the defaults are ours (configs/paper.yaml): its two triggers, no
 // mirror check, the fixed cadence alone, the solvers' own covariances. Tests of the paper's
 // behaviour start from it, so they do not move with the defaults for real logs.
-inline registry::EstimatorConfig PaperEstimator() {
-  registry::EstimatorConfig config;
+inline schema::EstimatorConfig PaperEstimator() {
+  schema::EstimatorConfig config;
   config.triggers = {"fixed_window", "pdop_closest_point"};
   config.initializer.height_check.enabled = false;
   config.trigger.evaluate_growth = 1.0;

@@ -1,13 +1,13 @@
 #pragma once
 
-#include "anchorbench/runner/experiment.hpp"
+#include "anchorbench/schema/experiment.hpp"
 #include "anchorbench/testing/paper_estimator.hpp"
 
 namespace anchorbench::testing {
 
 // A small two-row table: a short tunnel, a few anchors, a mix of trajectories.
-inline runner::ExperimentConfig SmallTable() {
-  runner::ExperimentConfig config;
+inline schema::ExperimentConfig SmallTable() {
+  schema::ExperimentConfig config;
   config.name = "small";
   config.seed = 7;
   config.realizations = 6;
@@ -19,8 +19,8 @@ inline runner::ExperimentConfig SmallTable() {
   config.scenario.trajectory.fraction_planar = 0.2;
   config.scenario.ranging.outlier_probability = 0.05;
   config.scenario.ranging.sigma_position_m = 0.02;
-  runner::RowConfig low{"low", config.scenario, config.estimator, std::nullopt};
-  runner::RowConfig high = low;
+  schema::RowConfig low{"low", config.scenario, config.estimator, std::nullopt};
+  schema::RowConfig high = low;
   high.name = "high";
   high.scenario.ranging.sigma_range_m = 0.4;
   config.rows = {low, high};

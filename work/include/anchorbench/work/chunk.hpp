@@ -18,7 +18,7 @@ namespace anchorbench::work {
 // from a chunk read back (a resumed run, an MPI rank's) has the computed chunk's bytes. Read back,
 // an attempt holds what the summaries use (report::ParseAttempts).
 struct ChunkResult {
-  std::vector<runner::Attempt> attempts;
+  std::vector<schema::Attempt> attempts;
   std::vector<std::string> lines;
 };
 
@@ -43,7 +43,7 @@ std::uintmax_t ChunkBytes(const Plan& plan, const Shard& shard);
 // The file a chunk rests in (a chunk store's, a shard folder's): chunk-000012.csv.
 std::string ChunkFileName(int chunk);
 
-// A chunk's text read back; `source` names it in errors. Refuses (io::InputError) a text whose
+// A chunk's text read back; `source` names it in errors. Refuses (schema::InputError) a text whose
 // identity line is not this chunk's of this plan or whose checksum does not match, and one that is
 // not every attempt of exactly the chunk's units, in order (one per anchor and trigger).
 ChunkResult ParseChunk(const Plan& plan, int chunk, const std::string& text, const std::string& source);

@@ -23,7 +23,7 @@ class ChunkStore {
   // interrupted run: --resume or --overwrite); kResume takes its chunks if it is `plan`'s and
   // refuses another plan's; kOverwrite discards what is there. A store folder that holds one of
   // `inputs` is refused in every mode. `expected_bytes` (the chunks still to come) are reserved
-  // on the disk now and given back as chunks are saved. Errors are io::InputError naming the
+  // on the disk now and given back as chunks are saved. Errors are schema::InputError naming the
   // folder and the way out.
   ChunkStore(const std::filesystem::path& out, const Plan& plan, Mode mode, std::uintmax_t expected_bytes = 0,
              const std::vector<std::filesystem::path>& inputs = {});
@@ -34,7 +34,7 @@ class ChunkStore {
   // left out of TakeFinished and computed again); the first one's reason.
   int unreadable() const { return unreadable_; }
   const std::string& first_unreadable() const { return first_unreadable_; }
-  // Writes the chunk's file; throws io::InputError naming it (a full disk, a folder in its place).
+  // Writes the chunk's file; throws schema::InputError naming it (a full disk, a folder in its place).
   void Save(int chunk, const std::string& text);
   // Once the results are in place.
   void Remove();

@@ -22,7 +22,7 @@ class Executor {
   virtual ~Executor() = default;
   // Computes `chunks` (indices into plan.chunks()) with `threads` threads per process. An error
   // in any chunk, or thrown by `done` (a chunk that cannot be stored), ends the call with that
-  // error (io::InputError for bad input): chunks not yet started are skipped, and `done` has seen
+  // error (schema::InputError for bad input): chunks not yet started are skipped, and `done` has seen
   // every chunk that finished.
   virtual void Compute(const Plan& plan, const std::vector<int>& chunks, int threads, const ChunkDone& done) = 0;
 };

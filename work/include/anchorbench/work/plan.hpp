@@ -8,7 +8,7 @@
 #include <vector>
 
 #include "anchorbench/registry/components.hpp"
-#include "anchorbench/runner/experiment.hpp"
+#include "anchorbench/schema/experiment.hpp"
 
 namespace anchorbench::work {
 
@@ -33,10 +33,10 @@ constexpr int kMaxChunkUnits = 64;
 class Plan {
  public:
   // `experiments` must have passed runner::CheckWork and CheckRows.
-  explicit Plan(std::vector<runner::ExperimentConfig> experiments);
+  explicit Plan(std::vector<schema::ExperimentConfig> experiments);
 
-  const std::vector<runner::ExperimentConfig>& experiments() const { return experiments_; }
-  const std::vector<runner::RowConfig>& rows(int experiment) const {
+  const std::vector<schema::ExperimentConfig>& experiments() const { return experiments_; }
+  const std::vector<schema::RowConfig>& rows(int experiment) const {
     return rows_[static_cast<std::size_t>(experiment)];
   }
   const std::vector<ChunkSpan>& chunks() const { return chunks_; }
@@ -49,8 +49,8 @@ class Plan {
   const std::string& identity() const { return identity_; }
 
  private:
-  std::vector<runner::ExperimentConfig> experiments_;
-  std::vector<std::vector<runner::RowConfig>> rows_;
+  std::vector<schema::ExperimentConfig> experiments_;
+  std::vector<std::vector<schema::RowConfig>> rows_;
   std::vector<ChunkSpan> chunks_;
   long long units_ = 0;
   long long attempts_ = 0;
@@ -58,7 +58,7 @@ class Plan {
   std::string identity_;
 };
 
-// A plan from the texts of another plan (a worker rank's copy); refuses (io::InputError) texts
+// A plan from the texts of another plan (a worker rank's copy); refuses (schema::InputError) texts
 // whose configs do not write back to the same identity.
 Plan PlanFromTexts(const std::vector<std::string>& texts, const std::string& identity,
                    const registry::Components& components);

@@ -17,7 +17,7 @@ namespace anchorbench::work {
 
 // One experiment's attempts in unit order, each with its attempts.csv line.
 struct ExperimentAttempts {
-  std::vector<runner::Attempt> attempts;
+  std::vector<schema::Attempt> attempts;
   std::vector<std::string> lines;
 };
 

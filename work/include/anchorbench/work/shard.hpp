@@ -15,7 +15,7 @@ struct Shard {
   int ChunksOf(int chunks) const { return chunks / count + (index < chunks % count ? 1 : 0); }
 };
 
-// "I/N" with 0 <= I < N <= 1e6; throws io::InputError naming `what` otherwise.
+// "I/N" with 0 <= I < N <= 1e6; throws schema::InputError naming `what` otherwise.
 Shard ParseShard(const std::string& text, const std::string& what);
 
 }  // namespace anchorbench::work

@@ -44,7 +44,7 @@ void WriteShardFolder(const std::function<void(const std::string&, const std::st
 ShardInfo ReadShardInfo(const std::filesystem::path& folder);
 ShardInputs ReadShardInputs(const std::filesystem::path& folder);
 // The chunks shard.csv says the folder holds, read back and checked against `plan`; a missing or
-// broken chunk is an io::InputError naming its file.
+// broken chunk is an schema::InputError naming its file.
 std::map<int, ChunkResult> ReadShardChunks(const std::filesystem::path& folder, const ShardInfo& info,
                                            const Plan& plan);
 

@@ -3,7 +3,7 @@
 #include <stdexcept>
 #include <string>
 
-namespace anchorbench::io {
+namespace anchorbench::schema {
 
 // Bad user input (a config key, a CSV line, a command-line value). The message names where:
 // "FILE:LINE: ..." for CSV, "FILE: key 'a.b.c': ..." for YAML. The command line prints it once
@@ -13,4 +13,4 @@ class InputError : public std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
-}  // namespace anchorbench::io
+}  // namespace anchorbench::schema

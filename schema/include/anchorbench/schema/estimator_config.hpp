@@ -12,7 +12,7 @@
 #include "anchorbench/estimator/ransac_solver.hpp"
 #include "anchorbench/estimator/triggers.hpp"
 
-namespace anchorbench::registry {
+namespace anchorbench::schema {
 
 // The filter by name, with the settings of the built-in ones (the config's estimator.filter).
 struct FilterConfig {
@@ -55,4 +55,4 @@ struct EstimatorConfig {
   bool IsValid(std::string* why) const;
 };
 
-}  // namespace anchorbench::registry
+}  // namespace anchorbench::schema

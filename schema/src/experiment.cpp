@@ -1,8 +1,8 @@
-#include "anchorbench/runner/experiment.hpp"
+#include "anchorbench/schema/experiment.hpp"
 
 #include <algorithm>
 
-namespace anchorbench::runner {
+namespace anchorbench::schema {
 
 std::vector<RowConfig> RowsOf(const ExperimentConfig& config) {
   if (config.rows.empty()) return {RowConfig{"base", config.scenario, config.estimator, std::nullopt}};
@@ -16,4 +16,4 @@ std::vector<RowConfig> RowsOf(const ExperimentConfig& config) {
   return selected;
 }
 
-}  // namespace anchorbench::runner
+}  // namespace anchorbench::schema

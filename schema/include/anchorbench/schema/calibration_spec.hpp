@@ -4,9 +4,9 @@
 #include <string>
 #include <vector>
 
-#include "anchorbench/runner/experiment.hpp"
+#include "anchorbench/schema/experiment.hpp"
 
-namespace anchorbench::runner {
+namespace anchorbench::schema {
 
 // A simulation parameter `anchorbench calibrate` may move: a dotted key under `scenario` of the
 // experiment, its bounds, and where its range comes from (what the paper says, or "not stated").
@@ -42,4 +42,4 @@ struct CalibrationSpec {
   double profile_step = 0.1;    // profiles at +-1 and +-2.5 steps of each parameter's range
 };
 
-}  // namespace anchorbench::runner
+}  // namespace anchorbench::schema

@@ -1,9 +1,9 @@
-#include "anchorbench/registry/estimator_config.hpp"
+#include "anchorbench/schema/estimator_config.hpp"
 
 #include <cmath>
 #include <stdexcept>
 
-namespace anchorbench::registry {
+namespace anchorbench::schema {
 
 bool HeightPriorConfig::IsValid(std::string* why) const {
   if (!enabled) return true;
@@ -37,4 +37,4 @@ bool EstimatorConfig::IsValid(std::string* why) const {
          certificate.IsValid(why);
 }
 
-}  // namespace anchorbench::registry
+}  // namespace anchorbench::schema

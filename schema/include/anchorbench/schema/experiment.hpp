@@ -6,10 +6,10 @@
 #include <utility>
 #include <vector>
 
-#include "anchorbench/registry/estimator_config.hpp"
+#include "anchorbench/schema/estimator_config.hpp"
 #include "anchorbench/sim/scenario.hpp"
 
-namespace anchorbench::runner {
+namespace anchorbench::schema {
 
 // A published table row to compare with, cell by cell (Table I: Avg., Med., Init., >1m, Ratio).
 struct PaperCells {
@@ -38,7 +38,7 @@ struct PaperRow {
 struct RowConfig {
   std::string name;
   sim::ScenarioOptions scenario;
-  registry::EstimatorConfig estimator;
+  schema::EstimatorConfig estimator;
   std::optional<PaperRow> paper;
 };
 
@@ -55,7 +55,7 @@ struct ExperimentConfig {
   int realizations = 100;          // per row (run)
   int bootstrap_resamples = 1000;  // for the 95% intervals of summary.csv (run)
   sim::ScenarioOptions scenario;
-  registry::EstimatorConfig estimator;
+  schema::EstimatorConfig estimator;
   std::vector<RowConfig> rows;         // empty: one row, the base
   std::vector<std::string> only_rows;  // run these rows only (names); empty: all
   // Sweep axes (anchorbench sweep): dotted key -> values ("0.5,1,2" or a range "0.25:3:0.25").
@@ -66,4 +66,4 @@ struct ExperimentConfig {
 // row named "base".
 std::vector<RowConfig> RowsOf(const ExperimentConfig& config);
 
-}  // namespace anchorbench::runner
+}  // namespace anchorbench::schema

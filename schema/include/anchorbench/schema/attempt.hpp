@@ -1,0 +1,58 @@
+#pragma once
+
+#include <optional>
+#include <string>
+
+#include <Eigen/Core>
+
+#include "anchorbench/estimator/solve_result.hpp"
+
+namespace anchorbench::schema {
+
+// What is known of an anchor in simulation, or from a survey (anchors.csv).
+struct AnchorTruth {
+  Eigen::Vector3d p_world_anchor = Eigen::Vector3d::Zero();
+  std::optional<double> bias_m;
+};
+
+// One attempt measured against the truth.
+struct AttemptEvaluation {
+  // On the attempt's data (the samples of its solve, or all buffered if none initialized it):
+  double pdop_true = 0.0;                // Eqs. (2)-(3) at the true anchor (+inf if undefined)
+  std::optional<double> bias_aware_hdop;  // its horizontal and vertical parts (TrueGeometry), finite only
+  std::optional<double> bias_aware_vdop;
+  std::optional<double> bias_aware_dop;  // finite only; sigma_d times it is the CRLB on the position error
+  // Initialized attempts only:
+  std::optional<Eigen::Vector3d> error_xyz_m;  // estimate - truth
+  std::optional<double> error_m;               // its norm
+  std::optional<double> bias_error_m;          // estimated - true bias, where the true bias is known
+  // Normalized estimation error squared, e^T P^-1 e, of the solve's own covariance P: of the
+  // position (3 dof), and of (p_A, gamma) where the true bias is known (4 dof). A credible
+  // covariance gives a chi-square variable of that many degrees of freedom. Absent where P is
+  // not positive definite (e.g. a solver that reports none).
+  std::optional<double> nees_position;
+  std::optional<double> nees;
+};
+
+// One anchor with one trigger (a `method`) in one realization of one row: what happened, and how
+// good it was where the truth is known. A row of attempts.csv (run) and of estimates.csv (replay).
+struct Attempt {
+  int row = 0;
+  int realization = 0;
+  int anchor_id = 0;
+  std::string method;  // the trigger's name (fixed_window, pdop_closest_point, ...)
+  bool initialized = false;
+  std::optional<double> t_init_s;  // when the solve ran (online: the trigger; fixed: end of data)
+  int n_used = 0;                  // samples in the solve, or buffered so far if none ran
+  double pdop_estimate = 0.0;      // closest-point PDOP at that moment (+inf if undefined)
+  std::optional<estimator::SolveResult> solve;  // absent if the solver never ran
+  std::string status;                           // the solver's, or not_triggered / no_data
+  std::optional<AttemptEvaluation> evaluation;  // where the truth is known
+  std::optional<double> crlb_m;  // sigma_d times the bias-aware DOP (simulations, where sigma_d is known)
+  // Wall time of this trigger's pass over all of the realization's samples (filter, PDOP,
+  // trigger, solves) divided by the number of anchors. Varies from run to run, so it goes to
+  // timing files only, never into the deterministic tables.
+  double compute_s = 0.0;
+};
+
+}  // namespace anchorbench::schema
