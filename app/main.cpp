@@ -221,7 +221,7 @@ int UsageError(const CLI::App& cli, const CLI::ParseError& e) {
 }
 
 // The command line parsed and run; every error reported here, as its exit code.
-int RunCommandLine(int argc, char** argv, const anchorbench::registry::Components& parts,
+int RunCommandLine(int argc, char** argv, const anchorbench::registry::Components& components,
                    anchorbench::work::Executor& executor) {
   CLI::App cli{"anchorbench: online initialization of unknown UWB anchors (Delama et al., IROS 2025)"};
   cli.footer(kExitCodes);
@@ -236,7 +236,7 @@ int RunCommandLine(int argc, char** argv, const anchorbench::registry::Component
     return UsageError(cli, e);
   }
   try {
-    return Dispatch(command_line, {parts, app::BuildRevision(), executor});
+    return Dispatch(command_line, {components, app::BuildRevision(), executor});
   } catch (const anchorbench::schema::InputError& e) {
     std::cerr << "anchorbench: error: " << e.what() << '\n';
     return 2;
@@ -247,13 +247,13 @@ int RunCommandLine(int argc, char** argv, const anchorbench::registry::Component
 }
 
 int main(int argc, char** argv) {
-  const anchorbench::registry::Components parts = anchorbench::eval::MakeComponentsWithOracles();
+  const anchorbench::registry::Components components = anchorbench::eval::MakeComponentsWithOracles();
 #ifdef ANCHORBENCH_MPI
-  app::MpiJob job(argc, argv, parts);  // anchorbench-mpi: rank 0 runs the command, the others compute chunks
+  app::MpiJob job(argc, argv, components);  // anchorbench-mpi: rank 0 runs the command, the others compute chunks
   if (job.worker()) return job.Serve();
-  return job.Finish(RunCommandLine(argc, argv, parts, job.executor()));
+  return job.Finish(RunCommandLine(argc, argv, components, job.executor()));
 #else
-  anchorbench::work::LocalExecutor executor(parts);
-  return RunCommandLine(argc, argv, parts, executor);
+  anchorbench::work::LocalExecutor executor(components);
+  return RunCommandLine(argc, argv, components, executor);
 #endif
 }

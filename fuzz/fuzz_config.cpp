@@ -9,10 +9,10 @@
 #include "anchorbench/schema/input_error.hpp"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
-  static const anchorbench::registry::Components parts = anchorbench::eval::MakeComponentsWithOracles();
+  static const anchorbench::registry::Components components = anchorbench::eval::MakeComponentsWithOracles();
   try {
     anchorbench::config::LoadConfigText(std::string(reinterpret_cast<const char*>(data), size),
-                                        "/nonexistent/fuzz.yaml", {}, parts);
+                                        "/nonexistent/fuzz.yaml", {}, components);
   } catch (const anchorbench::schema::InputError&) {
   }
   return 0;

@@ -36,10 +36,10 @@ std::vector<PaperCell> RunCells(const schema::CalibrationSpec& spec, std::vector
   // The paper's cells are of its two triggers: the others an experiment runs beside them (ours:
   // certified in Table I) would cost without changing a cell.
   overrides.push_back(std::string("estimator.triggers=[") + schema::kFixedWindowTrigger + "," + schema::kPaperTrigger + "]");
-  const schema::ExperimentConfig config = config::LoadConfig(spec.experiment_path, overrides, app.parts);
+  const schema::ExperimentConfig config = config::LoadConfig(spec.experiment_path, overrides, app.components);
   const std::vector<schema::RowConfig> rows = schema::RowsOf(config);
   runner::CheckWork(config);
-  runner::CheckRows(rows, app.parts);
+  runner::CheckRows(rows, app.components);
   const work::Plan plan({config});
   const std::vector<schema::Attempt> attempts = work::RunWholePlan(plan, app.executor, threads).front().attempts;
   return report::CompareWithPaper(
@@ -63,9 +63,9 @@ std::vector<double> CheckParameters(const schema::CalibrationSpec& spec, const s
     for (double u : {0.0, 1.0}) {
       const std::string assignment = parameter.key + "=" + Fit::ValueText(parameter, u);
       try {
-        const schema::ExperimentConfig at_bound = config::LoadConfig(spec.experiment_path, {assignment}, app.parts);
+        const schema::ExperimentConfig at_bound = config::LoadConfig(spec.experiment_path, {assignment}, app.components);
         runner::CheckWork(at_bound);
-        runner::CheckRows(schema::RowsOf(at_bound), app.parts);
+        runner::CheckRows(schema::RowsOf(at_bound), app.components);
       } catch (const schema::InputError& e) {
         throw schema::InputError(what + " (" + parameter.key + ") at its " + (u == 0.0 ? "min" : "max") + ": " + e.what());
       }
@@ -160,7 +160,7 @@ void CheckReuse(const std::string& reuse) {
 int CalibrateCommand(const CalibrateArgs& args, const AppContext& app) {
   // Every input checked, and every output place claimed, before the first evaluation.
   const schema::CalibrationSpec spec = config::LoadCalibrationSpec(args.config);
-  const schema::ExperimentConfig experiment = config::LoadConfig(spec.experiment_path, {}, app.parts);
+  const schema::ExperimentConfig experiment = config::LoadConfig(spec.experiment_path, {}, app.components);
   const std::vector<schema::RowConfig> rows = schema::RowsOf(experiment);
   const std::vector<PaperCell> targets = report::PaperTargets(rows);
   if (targets.empty()) {
@@ -213,7 +213,7 @@ int CalibrateCommand(const CalibrateArgs& args, const AppContext& app) {
   std::ostringstream markdown;
   calibrate::WriteCalibrationMarkdown(markdown, outcome);
   out.Write("calibration.md", markdown.str());
-  const schema::ExperimentConfig calibrated_experiment = config::LoadConfig(spec.experiment_path, best, app.parts);
+  const schema::ExperimentConfig calibrated_experiment = config::LoadConfig(spec.experiment_path, best, app.components);
   std::vector<std::string> command_line{"calibrate " + args.config};
   if (!args.reuse.empty()) command_line.push_back("--reuse " + args.reuse);
   out.Write("manifest.json", report::ManifestJson(calibrated_experiment,

@@ -17,7 +17,7 @@ namespace anchorbench::app {
 // What every command gets from the executable: the parts it offers by name, its revision, and who
 // computes Monte Carlo chunks (this process's threads, or the ranks of an MPI job).
 struct AppContext {
-  const registry::Components& parts;
+  const registry::Components& components;
   std::string revision;
   work::Executor& executor;
 };

@@ -17,9 +17,9 @@ void Print(const char* heading, const Registry& registry) {
 }  // namespace
 
 int ListCommand(const AppContext& app) {
-  Print("solvers (estimator.solver):", app.parts.solvers);
-  Print("filters (estimator.filter.kind):", app.parts.filters);
-  Print("triggers (estimator.triggers, run side by side on the same data):", app.parts.triggers);
+  Print("solvers (estimator.solver):", app.components.solvers);
+  Print("filters (estimator.filter.kind):", app.components.filters);
+  Print("triggers (estimator.triggers, run side by side on the same data):", app.components.triggers);
   return 0;
 }
 

@@ -51,10 +51,10 @@ std::vector<work::ShardInfo> CheckShards(const std::vector<std::string>& folders
 // Every folder's config.yaml and axes.txt, each the first folder's (a shard of one run holds the
 // same): the plan they rebuild, checked against shard.csv's.
 work::Plan CheckInputs(const std::vector<std::string>& folders, const work::ShardInfo& info,
-                       const registry::Components& parts, work::ShardInputs& inputs) {
+                       const registry::Components& components, work::ShardInputs& inputs) {
   const fs::path first(folders.front());
   inputs = work::ReadShardInputs(first);
-  const work::Plan plan = work::RebuildPlan(inputs, parts);
+  const work::Plan plan = work::RebuildPlan(inputs, components);
   if (plan.identity() != info.plan) {
     throw schema::InputError((first / "config.yaml").string() + ": with axes.txt gives plan " + plan.identity() +
                      ", shard.csv says " + info.plan + " (edited after the run?)");
@@ -90,7 +90,7 @@ std::unique_ptr<io::ResultFolder> OpenMerged(const MergeArgs& args, const std::s
 int MergeCommand(const MergeArgs& args, const AppContext& app) {
   const std::vector<work::ShardInfo> infos = CheckShards(args.shards);
   work::ShardInputs inputs;
-  const work::Plan plan = CheckInputs(args.shards, infos.front(), app.parts, inputs);
+  const work::Plan plan = CheckInputs(args.shards, infos.front(), app.components, inputs);
   const std::unique_ptr<io::ResultFolder> out = OpenMerged(args, infos.front().name);
   std::map<int, work::ChunkResult> chunks;
   for (std::size_t s = 0; s < args.shards.size(); ++s) {
@@ -103,7 +103,7 @@ int MergeCommand(const MergeArgs& args, const AppContext& app) {
   info.config_path = (first / "config.yaml").string();
   info.revision = infos.front().revision;
   for (const std::string& shard : args.shards) info.command_line.push_back("merge " + shard);
-  info.resolved_config_json = config::ToJson(config::LoadConfigText(inputs.config_yaml, "config.yaml", {}, app.parts));
+  info.resolved_config_json = config::ToJson(config::LoadConfigText(inputs.config_yaml, "config.yaml", {}, app.components));
   std::string markdown;
   if (infos.front().command == "run") {
     schema::ExperimentConfig config = plan.experiments().front();

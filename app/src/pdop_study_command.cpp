@@ -12,7 +12,7 @@
 namespace anchorbench::app {
 
 int PdopStudyCommand(const PdopStudyArgs& args, const AppContext& app) {
-  schema::ExperimentConfig config = config::LoadConfig(args.config, {}, app.parts);
+  schema::ExperimentConfig config = config::LoadConfig(args.config, {}, app.components);
   if (args.realizations) config.realizations = *args.realizations;
   if (args.every < 1 || args.every > 1000000) throw schema::InputError("--every: must be in [1, 1000000]");
   // The summary's bins cover Fig. 7's first 120 s: at least 0.01 s (12,000 bins), at most all of it.
@@ -25,7 +25,7 @@ int PdopStudyCommand(const PdopStudyArgs& args, const AppContext& app) {
       OpenResultFolder(args, setup, static_cast<std::uintmax_t>(anchors * 150.0 * 5000.0 / args.every) + (1 << 16));
 
   Progress progress("pdop-study " + config.name, args.quiet);
-  const runner::PdopStudy study = runner::RunPdopStudy(config, app.parts, args.every, setup.threads);
+  const runner::PdopStudy study = runner::RunPdopStudy(config, app.components, args.every, setup.threads);
   const double wall_time_s = progress.elapsed_s();
   progress.Finish(config.realizations);
 

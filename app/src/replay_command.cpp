@@ -49,14 +49,14 @@ io::LogSurvey Survey(const io::LogFiles& files, const io::LogPolicy& policy, boo
 
 int ReplayCommand(const ReplayArgs& args, const AppContext& app) {
   schema::ExperimentConfig config;  // the defaults, unless --config names a file
-  if (!args.config.empty()) config = config::LoadConfig(args.config, {}, app.parts);
+  if (!args.config.empty()) config = config::LoadConfig(args.config, {}, app.components);
   const io::LogPolicy policy = PolicyOf(args);
   const io::LogFiles files{args.poses, args.ranges};
   const io::LogSurvey survey = Survey(files, policy, args.quiet);
   std::map<int, schema::AnchorTruth> truth;
   if (!args.anchors.empty()) truth = io::LoadAnchors(args.anchors);
   const std::map<int, schema::AnchorTruth>* known = args.anchors.empty() ? nullptr : &truth;
-  runner::CheckReplayable(survey.anchor_ids, known, config.estimator, app.parts);
+  runner::CheckReplayable(survey.anchor_ids, known, config.estimator, app.components);
 
   // The outputs, before any work: never an input, never earlier results without --overwrite.
   std::unique_ptr<io::ResultFolder> out;
@@ -93,7 +93,7 @@ int ReplayCommand(const ReplayArgs& args, const AppContext& app) {
     return log.Next(kind, pose, range);
   };
   const runner::ReplayResult result =
-      runner::Replay(source, files.ranges, known, config.estimator, app.parts, config.seed, trace);
+      runner::Replay(source, files.ranges, known, config.estimator, app.components, config.seed, trace);
   if (progress.elapsed_s() > 1.0) progress.Finish(static_cast<long long>(survey.bytes));
   summary.drops.Add(result.drops);
   summary.samples_by_anchor = result.samples_by_anchor;

@@ -7,11 +7,11 @@
 
 namespace anchorbench::app {
 int RunCommand(const RunArgs& args, const AppContext& app) {
-  schema::ExperimentConfig config = config::LoadConfig(args.config, args.overrides, app.parts);
+  schema::ExperimentConfig config = config::LoadConfig(args.config, args.overrides, app.components);
   if (args.seed) config.seed = *args.seed;
   if (args.realizations) config.realizations = *args.realizations;
   runner::CheckWork(config);
-  runner::CheckRows(schema::RowsOf(config), app.parts);
+  runner::CheckRows(schema::RowsOf(config), app.components);
   const MonteCarloSetup setup = SetUpMonteCarlo(args, config.name);
   const work::Plan plan({config});
   const std::unique_ptr<io::ResultFolder> out = OpenResultFolder(args, setup, RunResultBytes(plan, args));

@@ -7,7 +7,7 @@
 namespace anchorbench::app {
 
 int SimulateCommand(const SimulateArgs& args, const AppContext& app) {
-  schema::ExperimentConfig config = config::LoadConfig(args.config, args.overrides, app.parts);
+  schema::ExperimentConfig config = config::LoadConfig(args.config, args.overrides, app.components);
   if (args.seed) config.seed = *args.seed;
   const sim::Scenario scenario = sim::GenerateScenario(config.scenario, config.seed, args.realization);
   io::WriteRecordingFolder(args.out, io::RecordingOf(scenario), args.overwrite, {args.config});

@@ -15,10 +15,10 @@ std::vector<schema::ExperimentConfig> PointConfigs(const SweepArgs& args, const 
                                                    const AppContext& app) {
   std::vector<schema::ExperimentConfig> configs;
   for (const runner::SweepPoint& point : grid) {
-    schema::ExperimentConfig config = config::LoadConfig(args.config, point.overrides, app.parts);
+    schema::ExperimentConfig config = config::LoadConfig(args.config, point.overrides, app.components);
     if (args.realizations) config.realizations = *args.realizations;
     runner::CheckWork(config);
-    runner::CheckRows(schema::RowsOf(config), app.parts);
+    runner::CheckRows(schema::RowsOf(config), app.components);
     configs.push_back(std::move(config));
   }
   return configs;
@@ -27,7 +27,7 @@ std::vector<schema::ExperimentConfig> PointConfigs(const SweepArgs& args, const 
 }  // namespace
 
 int SweepCommand(const SweepArgs& args, const AppContext& app) {
-  const schema::ExperimentConfig base = config::LoadConfig(args.config, {}, app.parts);
+  const schema::ExperimentConfig base = config::LoadConfig(args.config, {}, app.components);
   const std::vector<runner::SweepAxis> axes = runner::SweepAxes(base.sweep, args.axes);
   if (axes.empty()) throw schema::InputError(args.config + ": nothing to sweep: give --set KEY=VALUES or a 'sweep' section");
   for (const runner::SweepAxis& axis : axes) {
@@ -50,7 +50,7 @@ int SweepCommand(const SweepArgs& args, const AppContext& app) {
   schema::ExperimentConfig resolved = base;
   if (args.realizations) resolved.realizations = *args.realizations;
   const work::ShardInputs inputs{config::ToYaml(resolved), axes};
-  if (!args.shard.empty() && work::RebuildPlan(inputs, app.parts).identity() != plan.identity()) {
+  if (!args.shard.empty() && work::RebuildPlan(inputs, app.components).identity() != plan.identity()) {
     throw schema::InputError(args.config + ": this sweep does not rebuild from its config and axes (an axis on "
                          "'realizations' with --realizations?): it cannot be sharded");
   }

@@ -97,8 +97,8 @@ void Scenario(V& v, sim::ScenarioOptions& o) {
 }
 
 template <typename V>
-void Filter(V& v, schema::FilterConfig& o, const registry::Components& parts) {
-  v.Name("kind", o.kind, [&](const std::string& name, std::string* why) { return parts.filters.Knows(name, why); });
+void Filter(V& v, schema::FilterConfig& o, const registry::Components& components) {
+  v.Name("kind", o.kind, [&](const std::string& name, std::string* why) { return components.filters.Knows(name, why); });
   v.Number("tau_m", o.consistency.tau_m);
   v.Integer("reseed_after_rejections", o.consistency.reseed_after_rejections);
   v.Check(o.consistency);
@@ -175,11 +175,11 @@ void Covariance(V& v, estimator::CovarianceOptions& o) {
 }
 
 template <typename V>
-void Estimator(V& v, schema::EstimatorConfig& o, const registry::Components& parts) {
-  v.Name("solver", o.solver, [&](const std::string& name, std::string* why) { return parts.solvers.Knows(name, why); });
+void Estimator(V& v, schema::EstimatorConfig& o, const registry::Components& components) {
+  v.Name("solver", o.solver, [&](const std::string& name, std::string* why) { return components.solvers.Knows(name, why); });
   v.NameList("triggers", o.triggers,
-             [&](const std::string& name, std::string* why) { return parts.triggers.Knows(name, why); });
-  v.Section("filter", [&](auto& s) { Filter(s, o.filter, parts); });
+             [&](const std::string& name, std::string* why) { return components.triggers.Knows(name, why); });
+  v.Section("filter", [&](auto& s) { Filter(s, o.filter, components); });
   v.Section("trigger", [&](auto& s) { Trigger(s, o); });
   v.Section("ls", [&](auto& s) { Ls(s, o.solver_options.ls); });
   v.Section("nls", [&](auto& s) { Nls(s, o.solver_options.nls); });
@@ -232,10 +232,10 @@ void Cells(V& v, schema::PaperCells& cells) {
 }
 
 template <typename V>
-void Row(V& v, schema::RowConfig& row, const registry::Components& parts) {
+void Row(V& v, schema::RowConfig& row, const registry::Components& components) {
   v.Label("name", row.name);
   v.Section("scenario", [&](auto& s) { Scenario(s, row.scenario); });
-  v.Section("estimator", [&](auto& s) { Estimator(s, row.estimator, parts); });
+  v.Section("estimator", [&](auto& s) { Estimator(s, row.estimator, components); });
   v.OptionalSection("paper", row.paper, [](auto& s, schema::PaperRow& paper) {
     s.Section("fixed", [&](auto& cells) { Cells(cells, paper.fixed); });
     s.Section("gated", [&](auto& cells) { Cells(cells, paper.gated); });
@@ -243,19 +243,19 @@ void Row(V& v, schema::RowConfig& row, const registry::Components& parts) {
 }
 
 template <typename V>
-void Experiment(V& v, schema::ExperimentConfig& c, const registry::Components& parts) {
+void Experiment(V& v, schema::ExperimentConfig& c, const registry::Components& components) {
   v.Unsigned("seed", c.seed, schema::kMaxSeed);
   v.Integer("realizations", c.realizations, 1, 100000000);
   v.Integer("bootstrap_resamples", c.bootstrap_resamples, 0, 1000000);
   v.Section("scenario", [&](auto& s) { Scenario(s, c.scenario); });
-  v.Section("estimator", [&](auto& s) { Estimator(s, c.estimator, parts); });
+  v.Section("estimator", [&](auto& s) { Estimator(s, c.estimator, components); });
   v.TextList("only_rows", c.only_rows);
   v.TextMap("sweep", c.sweep);
   // Rows start from the base read above, so the base must come first in the visit.
   int index = 0;
   v.List("rows", c.rows,
          [&] { return schema::RowConfig{std::to_string(++index), c.scenario, c.estimator, std::nullopt}; },
-         [&](auto& s, schema::RowConfig& row) { Row(s, row, parts); });
+         [&](auto& s, schema::RowConfig& row) { Row(s, row, components); });
 }
 
 }  // namespace anchorbench::config::visit

@@ -8,7 +8,7 @@
 #include "anchorbench/config/config_yaml.hpp"
 #include "anchorbench/config/load_calibration.hpp"
 #include "anchorbench/eval/oracles.hpp"
-#include "anchorbench/testing/parts.hpp"
+#include "anchorbench/testing/components.hpp"
 #include "anchorbench/schema/input_error.hpp"
 #include "anchorbench/testing/temp_dir.hpp"
 
@@ -19,10 +19,10 @@ using schema::InputError;
 using schema::ExperimentConfig;
 using schema::RowsOf;
 
-using anchorbench::testing::Parts;
+using anchorbench::testing::AllComponents;
 
 schema::ExperimentConfig LoadConfig(const std::string& path, const std::vector<std::string>& overrides = {}) {
-  return config::LoadConfig(path, overrides, Parts());
+  return config::LoadConfig(path, overrides, AllComponents());
 }
 
 // The error message for a config text, or "" if it loads.
@@ -295,16 +295,16 @@ TEST(Config, SeedsRoundTripExactly) {
     config.seed = seed;
     const std::string yaml = ToYaml(config);
     EXPECT_NE(yaml.find("seed: " + std::to_string(seed) + "\n"), std::string::npos) << yaml.substr(0, 40);
-    EXPECT_EQ(LoadConfigText(yaml, "t.yaml", {}, testing::Parts()).seed, seed);
+    EXPECT_EQ(LoadConfigText(yaml, "t.yaml", {}, testing::AllComponents()).seed, seed);
     EXPECT_NE(ToJson(config).find("\"seed\": " + std::to_string(seed) + ","), std::string::npos);
   }
-  EXPECT_THROW(LoadConfigText("seed: 9223372036854775808\n", "t.yaml", {}, testing::Parts()), schema::InputError);
-  EXPECT_THROW(LoadConfigText("seed: -1\n", "t.yaml", {}, testing::Parts()), schema::InputError);
+  EXPECT_THROW(LoadConfigText("seed: 9223372036854775808\n", "t.yaml", {}, testing::AllComponents()), schema::InputError);
+  EXPECT_THROW(LoadConfigText("seed: -1\n", "t.yaml", {}, testing::AllComponents()), schema::InputError);
 }
 
 std::string Refusal(const std::string& text) {
   try {
-    LoadConfigText(text, "t.yaml", {}, testing::Parts());
+    LoadConfigText(text, "t.yaml", {}, testing::AllComponents());
   } catch (const schema::InputError& e) {
     return e.what();
   }

@@ -48,7 +48,7 @@ InitEvent AnchorInitializer::SolveNow(double t_s, double pdop) const {
   event.anchor_id = anchor_id_;
   event.t_s = t_s;
   event.n_used = static_cast<int>(range_m_.size());
-  event.pdop_estimate = pdop;
+  event.pdop_closest_point = pdop;
   std::vector<double> fitted_m;  // the ranges less each tag's offset: what the covariance judges
   event.solve = SolveWithTagBiases(*solver_, p_world_tag_, range_m_, tag_id_, options_.tag_biases, nullptr, &fitted_m);
   const OutlierFilter& filter = *filter_;
@@ -99,7 +99,7 @@ void AnchorInitializer::Admit(const Accepted& sample) {
   TriggerInput input;
   input.t_s = sample.t_s;
   input.t_first_s = t_first_s_;
-  input.n_accepted = n_admitted_;
+  input.n_admitted = n_admitted_;
   input.sample_p_world_tag = sample.p_world_tag;
   input.sample_range_m = sample.range_m;
   input.p_world_tag = p_world_tag_;

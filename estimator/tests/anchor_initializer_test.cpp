@@ -97,7 +97,7 @@ TEST(AnchorInitializer, DeferredSolvesGiveTheInlineResults) {
     EXPECT_GT(pending_seen, 0);
     EXPECT_EQ(a->t_s, b->t_s);
     EXPECT_EQ(a->n_used, b->n_used);
-    EXPECT_EQ(a->pdop_estimate, b->pdop_estimate);
+    EXPECT_EQ(a->pdop_closest_point, b->pdop_closest_point);
     EXPECT_EQ(a->solve.p_world_anchor, b->solve.p_world_anchor);
     EXPECT_EQ(inline_solves.last_failed_solve().has_value(), deferred.last_failed_solve().has_value());
   }

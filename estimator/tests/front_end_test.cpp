@@ -42,7 +42,7 @@ std::vector<EventKey> Keys(const std::vector<FrontEndEvent>& events) {
   std::vector<EventKey> keys;
   for (const FrontEndEvent& e : events) {
     const Eigen::Vector3d& p = e.init.solve.p_world_anchor;
-    keys.emplace_back(e.anchor_id, e.chain, e.init.t_s, e.init.n_used, e.init.pdop_estimate, p.x(), p.y(), p.z());
+    keys.emplace_back(e.anchor_id, e.chain, e.init.t_s, e.init.n_used, e.init.pdop_closest_point, p.x(), p.y(), p.z());
   }
   std::sort(keys.begin(), keys.end());
   return keys;

@@ -93,7 +93,7 @@ class AnchorInitNode {
     std::printf("t=%7.2f s  anchor %3d  %-10s  p=(%.3f, %.3f, %.3f) m  bias %.3f m  sd %.3f m  PDOP %.2f  %d samples\n",
                 e.init.t_s, e.anchor_id, std::string(est::ToString(s.status)).c_str(), s.p_world_anchor.x(),
                 s.p_world_anchor.y(), s.p_world_anchor.z(), s.bias_m,
-                std::sqrt(s.covariance.topLeftCorner<3, 3>().trace()), e.init.pdop_estimate, e.init.n_used);
+                std::sqrt(s.covariance.topLeftCorner<3, 3>().trace()), e.init.pdop_closest_point, e.init.n_used);
   }
 
   std::shared_ptr<const est::LogPartitionTable> table_;

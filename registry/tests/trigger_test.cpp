@@ -131,7 +131,7 @@ TEST(Triggers, SolveCadenceGrowsGeometrically) {
     std::vector<std::size_t> at;
     estimator::TriggerInput in;
     for (std::size_t n = 1; n <= 5000; ++n) {
-      in.n_accepted = n;
+      in.n_admitted = n;
       in.eligible = n >= 20;
       if (cadence.Due(in)) at.push_back(n);
     }

@@ -40,7 +40,7 @@ std::vector<std::string> EstimateFields(const schema::Attempt& a) {
           a.initialized ? "1" : "0",
           FormatOptional(a.t_init_s),
           std::to_string(a.n_used),
-          FormatNumber(a.pdop_estimate),
+          FormatNumber(a.pdop_closest_point),
           a.evaluation ? FormatNumber(a.evaluation->pdop_true) : "",
           has_estimate ? FormatNumber(p.x()) : "",
           has_estimate ? FormatNumber(p.y()) : "",
@@ -77,7 +77,7 @@ void PrintEstimates(std::ostream& out, const std::vector<schema::Attempt>& attem
     std::vector<std::string> fields = EstimateFields(a);
     // Terminal view: three decimals instead of the lossless CSV text.
     const std::optional<double> pdop_true = a.evaluation ? std::optional(a.evaluation->pdop_true) : std::nullopt;
-    const std::optional<double> numbers[] = {a.t_init_s, a.pdop_estimate, pdop_true};
+    const std::optional<double> numbers[] = {a.t_init_s, a.pdop_closest_point, pdop_true};
     const int columns[] = {3, 5, 6};
     for (int k = 0; k < 3; ++k)
       if (numbers[k] && std::isfinite(*numbers[k])) fields[columns[k]] = ForTerminal(*numbers[k]);

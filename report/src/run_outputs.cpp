@@ -111,7 +111,7 @@ void WriteAttempts(std::ostream& out, const std::vector<schema::Attempt>& attemp
     const schema::AttemptEvaluation& e = a.evaluation ? *a.evaluation : none;
     out << rows[static_cast<std::size_t>(a.row)].name << ',' << a.realization << ',' << a.anchor_id << ','
         << a.method << ',' << (a.initialized ? 1 : 0) << ',' << FormatOptional(a.t_init_s) << ',' << a.n_used << ','
-        << FormatNumber(a.pdop_estimate) << ','
+        << FormatNumber(a.pdop_closest_point) << ','
         << (a.evaluation ? FormatNumber(e.pdop_true) : "") << ',' << FormatOptional(a.crlb_m) << ','
         << FormatOptional(e.error_m) << ',' << FormatOptional(Of(e.error_xyz_m, 0)) << ','
         << FormatOptional(Of(e.error_xyz_m, 1)) << ',' << FormatOptional(Of(e.error_xyz_m, 2)) << ','

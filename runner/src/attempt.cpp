@@ -24,11 +24,11 @@ schema::Attempt AttemptOf(const estimator::AnchorInitializer& initializer, const
   a.method = method;
   a.initialized = initializer.initialized();
   a.n_used = static_cast<int>(initializer.range_m().size());
-  a.pdop_estimate = initializer.pdop().Value();
+  a.pdop_closest_point = initializer.pdop().Value();
   if (event) {
     a.t_init_s = event->t_s;
     a.n_used = event->n_used;
-    a.pdop_estimate = event->pdop_estimate;
+    a.pdop_closest_point = event->pdop_closest_point;
     a.solve = event->solve;
   } else if (initializer.last_failed_solve()) {
     a.solve = initializer.last_failed_solve();  // triggered, but every solve failed

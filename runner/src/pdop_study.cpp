@@ -45,7 +45,7 @@ class StudyProbe : public estimator::InitTrigger {
     measured_.Add(in.sample_p_world_tag, in.sample_range_m);
     UpdateIdeal(in);
     CountUnderestimate(in.pdop);
-    if (in.n_accepted % every_ == 0) out_->checkpoints.push_back(Checkpoint(in));
+    if (in.n_admitted % every_ == 0) out_->checkpoints.push_back(Checkpoint(in));
     return false;
   }
 
@@ -59,7 +59,7 @@ class StudyProbe : public estimator::InitTrigger {
     };
     const Eigen::Vector3d p_closest_before = ideal_.p_world_closest();
     ideal_.Add(in.sample_p_world_tag, (in.sample_p_world_tag - anchor_.p_world_anchor).norm());
-    if (in.n_accepted == 1 || ideal_.p_world_closest() != p_closest_before) {
+    if (in.n_admitted == 1 || ideal_.p_world_closest() != p_closest_before) {
       precondition_ = std::all_of(in.p_world_tag.begin(), in.p_world_tag.end(), within);
     } else {
       precondition_ = precondition_ && within(in.sample_p_world_tag);
@@ -86,7 +86,7 @@ class StudyProbe : public estimator::InitTrigger {
     PdopCheckpoint c;
     c.realization = realization_;
     c.anchor_id = anchor_.id;
-    c.n = static_cast<int>(in.n_accepted);
+    c.n = static_cast<int>(in.n_admitted);
     c.t_s = in.t_s - in.t_first_s;
     c.pdop = {in.pdop, kInf, kInf, truth_.Pdop()};
     c.bias_aware_dop = truth_.BiasAwareDop();

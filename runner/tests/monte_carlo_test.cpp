@@ -6,23 +6,23 @@
 #include <gtest/gtest.h>
 
 #include "anchorbench/eval/oracles.hpp"
-#include "anchorbench/testing/parts.hpp"
+#include "anchorbench/testing/components.hpp"
 #include "anchorbench/testing/small_table.hpp"
 #include "anchorbench/schema/input_error.hpp"
 
 namespace anchorbench::runner {
 namespace {
 
-using anchorbench::testing::Parts;
+using anchorbench::testing::AllComponents;
 using anchorbench::testing::SmallTable;
 
 // Every deterministic field of every attempt, doubles to the last bit.
 std::string Outputs(const schema::ExperimentConfig& config, int threads) {
   std::ostringstream out;
   out << std::hexfloat;
-  for (const schema::Attempt& a : RunMonteCarlo(config, Parts(), {threads, nullptr})) {
+  for (const schema::Attempt& a : RunMonteCarlo(config, AllComponents(), {threads, nullptr})) {
     out << a.row << ' ' << a.realization << ' ' << a.anchor_id << ' ' << a.method << ' ' << a.initialized << ' '
-        << a.t_init_s.value_or(-1.0) << ' ' << a.n_used << ' ' << a.pdop_estimate << ' ' << a.status;
+        << a.t_init_s.value_or(-1.0) << ' ' << a.n_used << ' ' << a.pdop_closest_point << ' ' << a.status;
     if (a.solve) out << ' ' << a.solve->p_world_anchor.transpose() << ' ' << a.solve->bias_m << ' ' << a.solve->alpha;
     if (a.evaluation) {
       out << ' ' << a.evaluation->pdop_true << ' ' << a.evaluation->bias_aware_dop.value_or(-1.0) << ' '
@@ -57,7 +57,7 @@ TEST(MonteCarlo, AllTriggersAndFiltersAreBitIdenticalForAnyThreadCount) {
   table_ii.success_probability = 0.9;
   const std::string one = Outputs(config, 1);
   EXPECT_EQ(one, Outputs(config, 2));
-  const std::vector<schema::Attempt> attempts = RunMonteCarlo(config, Parts(), {2, nullptr});
+  const std::vector<schema::Attempt> attempts = RunMonteCarlo(config, AllComponents(), {2, nullptr});
   ASSERT_EQ(attempts.size(), 2u * 3u * 4u * triggers.size());
   for (std::size_t i = 0; i < attempts.size(); ++i) {
     EXPECT_EQ(attempts[i].method, triggers[i % triggers.size()]);  // anchor by anchor, in list order
@@ -67,7 +67,7 @@ TEST(MonteCarlo, AllTriggersAndFiltersAreBitIdenticalForAnyThreadCount) {
 
 TEST(MonteCarlo, EveryAnchorIsOneAttemptPerStrategyAndNothingIsNan) {
   const schema::ExperimentConfig config = SmallTable();
-  const std::vector<schema::Attempt> attempts = RunMonteCarlo(config, Parts(), {2, nullptr});
+  const std::vector<schema::Attempt> attempts = RunMonteCarlo(config, AllComponents(), {2, nullptr});
   ASSERT_EQ(attempts.size(), 2u * 6u * 4u * 2u);  // rows x realizations x anchors x strategies
   for (const schema::Attempt& a : attempts) {
     EXPECT_FALSE(a.status.empty());
@@ -89,7 +89,7 @@ TEST(MonteCarlo, ExactlyStraightRunsRecordDegenerateStatusesAndNeverAbort) {
     row.scenario.trajectory.fraction_planar = 0.0;
     row.scenario.ranging.sigma_position_m = 0.0;  // exactly collinear tag positions
   }
-  const std::vector<schema::Attempt> attempts = RunMonteCarlo(config, Parts(), {1, nullptr});
+  const std::vector<schema::Attempt> attempts = RunMonteCarlo(config, AllComponents(), {1, nullptr});
   int degenerate = 0;
   for (const schema::Attempt& a : attempts) {
     if (a.method == schema::kPaperTrigger) {
@@ -104,9 +104,9 @@ TEST(MonteCarlo, ExactlyStraightRunsRecordDegenerateStatusesAndNeverAbort) {
 TEST(MonteCarlo, TheConfiguredSolverIsTheOneThatRuns) {
   schema::ExperimentConfig config = SmallTable();
   config.rows.resize(1);
-  const std::vector<schema::Attempt> adaptive = RunMonteCarlo(config, Parts(), {1, nullptr});
+  const std::vector<schema::Attempt> adaptive = RunMonteCarlo(config, AllComponents(), {1, nullptr});
   config.rows[0].estimator.solver = "ls_double";  // closed form: no kernel, alpha stays 2
-  const std::vector<schema::Attempt> ls = RunMonteCarlo(config, Parts(), {1, nullptr});
+  const std::vector<schema::Attempt> ls = RunMonteCarlo(config, AllComponents(), {1, nullptr});
   ASSERT_EQ(adaptive.size(), ls.size());
   int differ = 0;
   for (std::size_t i = 0; i < ls.size(); ++i) {
@@ -125,7 +125,7 @@ TEST(MonteCarlo, AnUnbuildablePartIsAnInputErrorBeforeAnyTrial) {
   schema::ExperimentConfig config = SmallTable();
   config.rows[1].estimator.triggers = {"fixed_window", "no_such_trigger"};
   try {
-    RunMonteCarlo(config, Parts(), {2, nullptr});
+    RunMonteCarlo(config, AllComponents(), {2, nullptr});
     FAIL() << "no error";
   } catch (const schema::InputError& e) {
     EXPECT_NE(std::string(e.what()).find("row high: unknown trigger 'no_such_trigger'"), std::string::npos) << e.what();
@@ -135,18 +135,18 @@ TEST(MonteCarlo, AnUnbuildablePartIsAnInputErrorBeforeAnyTrial) {
 // A part that breaks its contract and throws inside a realization: the error leaves the parallel
 // region as the exception it is (here the first task's), not as std::terminate.
 TEST(MonteCarlo, AnExceptionInsideARealizationIsCarriedOutOfTheParallelLoop) {
-  registry::Components parts = eval::MakeComponentsWithOracles();
+  registry::Components components = eval::MakeComponentsWithOracles();
   struct Throwing : estimator::Solver {
     estimator::SolveResult Solve(std::span<const Eigen::Vector3d>, std::span<const double>) const override {
       throw std::runtime_error("solver exploded");
     }
   };
-  parts.solvers.Register("throwing", "breaks the contract", [](const std::string&, const registry::SolverContext&) {
+  components.solvers.Register("throwing", "breaks the contract", [](const std::string&, const registry::SolverContext&) {
     return std::make_unique<Throwing>();
   });
   schema::ExperimentConfig config = SmallTable();
   for (schema::RowConfig& row : config.rows) row.estimator.solver = "throwing";
-  EXPECT_THROW(RunMonteCarlo(config, parts, {2, nullptr}), std::runtime_error);
+  EXPECT_THROW(RunMonteCarlo(config, components, {2, nullptr}), std::runtime_error);
 }
 
 TEST(MonteCarlo, ThreadsComeFromTheOptionThenOmpNumThreads) {

@@ -5,12 +5,12 @@
 #include <gtest/gtest.h>
 
 #include "anchorbench/eval/oracles.hpp"
-#include "anchorbench/testing/parts.hpp"
+#include "anchorbench/testing/components.hpp"
 
 namespace anchorbench::runner {
 namespace {
 
-using anchorbench::testing::Parts;
+using anchorbench::testing::AllComponents;
 
 schema::ExperimentConfig OneAnchor() {
   schema::ExperimentConfig config;
@@ -25,8 +25,8 @@ schema::ExperimentConfig OneAnchor() {
 }
 
 TEST(PdopStudy, IdenticalForAnyThreadCountAndConsistent) {
-  const PdopStudy one = RunPdopStudy(OneAnchor(), Parts(), 10, 1);
-  const PdopStudy two = RunPdopStudy(OneAnchor(), Parts(), 10, 2);
+  const PdopStudy one = RunPdopStudy(OneAnchor(), AllComponents(), 10, 1);
+  const PdopStudy two = RunPdopStudy(OneAnchor(), AllComponents(), 10, 2);
   ASSERT_EQ(one.checkpoints.size(), two.checkpoints.size());
   ASSERT_GT(one.checkpoints.size(), 6u * 10u);
   for (std::size_t i = 0; i < one.checkpoints.size(); ++i) {
@@ -63,7 +63,7 @@ TEST(PdopStudy, IdenticalForAnyThreadCountAndConsistent) {
 }
 
 TEST(PdopStudy, EstimatesConvergeToTheAnchor) {
-  const PdopStudy study = RunPdopStudy(OneAnchor(), Parts(), 10, 2);
+  const PdopStudy study = RunPdopStudy(OneAnchor(), AllComponents(), 10, 2);
   // The last checkpoint of each run has all of the anchor's data: a tunnel pass at 1 m/s.
   for (std::size_t i = 0; i + 1 < study.checkpoints.size(); ++i) {
     const PdopCheckpoint& c = study.checkpoints[i];

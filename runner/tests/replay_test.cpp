@@ -7,7 +7,7 @@
 #include "anchorbench/testing/paper_estimator.hpp"
 
 #include "anchorbench/eval/oracles.hpp"
-#include "anchorbench/testing/parts.hpp"
+#include "anchorbench/testing/components.hpp"
 #include "anchorbench/io/hanyang.hpp"
 #include "anchorbench/schema/input_error.hpp"
 #include "anchorbench/io/recorded_data.hpp"
@@ -19,7 +19,7 @@
 namespace anchorbench::runner {
 namespace {
 
-using anchorbench::testing::Parts;
+using anchorbench::testing::AllComponents;
 
 // A hall with rich 3D motion, no outliers, exact tag positions: every anchor is well observed.
 sim::ScenarioOptions WellConditionedHall() {
@@ -59,14 +59,14 @@ TEST(Replay, SimulatedWellConditionedRunInitializesEveryAnchorWithinItsBound) {
   estimator.filter.consistency.tau_m = 0.3;  // ~2 sigma of a difference of two ranges
   estimator.solver_options.nls.kernel_scale_m = options.ranging.sigma_range_m;
   const ReplayResult result = Replay(io::LoadPoses((log / "poses.csv").string()),
-                                     io::LoadRanges((log / "ranges.csv").string()), &truth, estimator, Parts(), 1);
+                                     io::LoadRanges((log / "ranges.csv").string()), &truth, estimator, AllComponents(), 1);
 
   EXPECT_EQ(result.drops.total(), 0);
   ASSERT_EQ(result.attempts.size(), 2 * scenario.anchors.size());
   for (const schema::Attempt& a : result.attempts) {
     ASSERT_TRUE(a.initialized) << "anchor " << a.anchor_id << " " << a.method;
     if (a.method == schema::kPaperTrigger) {
-      EXPECT_LT(a.pdop_estimate, 1.0);
+      EXPECT_LT(a.pdop_closest_point, 1.0);
     }
     // The CRLB of (p_A, gamma) on these samples is sigma_d * bias-aware DOP (m, RMS of the 3D
     // error); a 3-dof error exceeds 4x its RMS with probability ~1e-3.
@@ -80,7 +80,7 @@ TEST(Replay, TheOracleTriggerWithoutTruthIsAnInputErrorNamingIt) {
   schema::EstimatorConfig config;
   config.triggers = {"fixed_window", "pdop_true"};
   try {
-    Replay(Parabola(0.0, 10), ranges, nullptr, config, Parts(), 1);
+    Replay(Parabola(0.0, 10), ranges, nullptr, config, AllComponents(), 1);
     FAIL() << "no error";
   } catch (const schema::InputError& e) {
     EXPECT_NE(std::string(e.what()).find("anchor 3: trigger 'pdop_true': needs the true anchor position"),
@@ -93,7 +93,7 @@ TEST(Replay, RangesOutsideThePoseSpanAreSkippedAndCounted) {
   std::vector<io::RangeRecord> ranges;
   for (int k = 0; k < 130; ++k) ranges.push_back({0.1 * k, 0, 1, 10.0, k + 2});
   const schema::EstimatorConfig defaults;  // named: GCC 12 warns falsely on a `{}` temporary
-  const ReplayResult result = Replay(Parabola(1.0, 10), ranges, nullptr, defaults, Parts(), 1);
+  const ReplayResult result = Replay(Parabola(1.0, 10), ranges, nullptr, defaults, AllComponents(), 1);
   const io::DropTally& outside = result.drops.ranges_by_anchor().at(1).at(io::Drop::kOutsidePoses);
   EXPECT_EQ(outside.count, 10 + 19);  // t < 1 s (10 ranges) and t > 11 s (19 ranges)
   EXPECT_EQ(outside.first, "ranges:2");
@@ -112,8 +112,8 @@ TEST(Replay, PoseFilesInAnyTagOrderGiveTheSameResult) {
   std::vector<io::RangeRecord> ranges;
   for (const sim::SimRange& r : scenario.ranges) ranges.push_back({r.t_s, r.tag_id, r.anchor_id, r.range_m, 0});
   const schema::EstimatorConfig defaults;
-  const ReplayResult a = Replay(by_epoch, ranges, nullptr, defaults, Parts(), 1);
-  const ReplayResult b = Replay(by_tag, ranges, nullptr, defaults, Parts(), 1);
+  const ReplayResult a = Replay(by_epoch, ranges, nullptr, defaults, AllComponents(), 1);
+  const ReplayResult b = Replay(by_tag, ranges, nullptr, defaults, AllComponents(), 1);
   ASSERT_EQ(a.attempts.size(), b.attempts.size());
   for (std::size_t i = 0; i < a.attempts.size(); ++i) EXPECT_EQ(a.attempts[i].t_init_s, b.attempts[i].t_init_s);
   EXPECT_EQ(b.drops.total(), 0);
@@ -129,7 +129,7 @@ TEST(Replay, RealHanyangLosCase) {
   EXPECT_GT(recording.ranges.size(), 8000u);
   schema::EstimatorConfig config = anchorbench::testing::PaperEstimator();
   config.filter.consistency.tau_m = 0.2;
-  const ReplayResult result = Replay(recording.poses, recording.ranges, &recording.anchors, config, Parts(), 1);
+  const ReplayResult result = Replay(recording.poses, recording.ranges, &recording.anchors, config, AllComponents(), 1);
   ASSERT_EQ(result.attempts.size(), 8u);
   for (const schema::Attempt& a : result.attempts) {
     if (a.method == schema::kFixedWindowTrigger) {

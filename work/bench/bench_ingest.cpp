@@ -19,13 +19,13 @@ namespace ab = anchorbench;
 namespace {
 
 struct Chunks {
-  ab::registry::Components parts = ab::eval::MakeComponentsWithOracles();
-  ab::work::Plan plan{{ab::config::LoadConfig(ANCHORBENCH_SOURCE_DIR "/configs/table1.yaml", {}, parts)}};
+  ab::registry::Components components = ab::eval::MakeComponentsWithOracles();
+  ab::work::Plan plan{{ab::config::LoadConfig(ANCHORBENCH_SOURCE_DIR "/configs/table1.yaml", {}, components)}};
   std::map<int, std::string> texts;
   long long units = 0;
 
   Chunks() {
-    ab::work::LocalExecutor executor(parts);
+    ab::work::LocalExecutor executor(components);
     class Texts final : public ab::work::Executor {  // keeps each chunk's text as it is computed
      public:
       Texts(ab::work::Executor& inner, std::map<int, std::string>& texts) : inner_(inner), texts_(texts) {}

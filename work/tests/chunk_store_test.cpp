@@ -3,7 +3,7 @@
 #include <gtest/gtest.h>
 
 #include "anchorbench/schema/input_error.hpp"
-#include "anchorbench/testing/parts.hpp"
+#include "anchorbench/testing/components.hpp"
 #include "anchorbench/testing/small_table.hpp"
 #include "anchorbench/testing/temp_dir.hpp"
 #include "anchorbench/work/run_plan.hpp"
@@ -11,7 +11,7 @@
 namespace anchorbench::work {
 namespace {
 
-using testing::Parts;
+using testing::AllComponents;
 using testing::SmallTable;
 using Mode = ChunkStore::Mode;
 
@@ -20,7 +20,7 @@ class SomeChunks final : public Executor {
  public:
   explicit SomeChunks(std::vector<int> only) : only_(std::move(only)) {}
   void Compute(const Plan& plan, const std::vector<int>&, int threads, const ChunkDone& done) override {
-    LocalExecutor(Parts()).Compute(plan, only_, threads, done);
+    LocalExecutor(AllComponents()).Compute(plan, only_, threads, done);
   }
 
  private:
@@ -44,7 +44,7 @@ TEST(ChunkStore, ResumesItsOwnPlanAndRefusesAnother) {
   EXPECT_THROW(ChunkStore(out, other_plan, Mode::kResume), schema::InputError);
 
   ChunkStore store(out, plan, Mode::kResume);
-  LocalExecutor executor(Parts());
+  LocalExecutor executor(AllComponents());
   std::vector<int> computed;
   class Recording final : public Executor {
    public:
@@ -102,7 +102,7 @@ TEST(LocalExecutor, AnErrorWhileKeepingAChunkEndsTheCall) {
   for (std::size_t i = 0; i < chunks.size(); ++i) chunks[i] = static_cast<int>(i);
   for (int threads : {1, 2}) {
     int kept = 0;
-    LocalExecutor executor(testing::Parts());
+    LocalExecutor executor(testing::AllComponents());
     const auto keep = [&](int, ChunkResult&&, const std::string&) {
       if (++kept == 3) throw schema::InputError("chunk-000002.csv: cannot write the chunk: No space left on device");
     };

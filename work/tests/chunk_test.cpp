@@ -7,14 +7,14 @@
 #include "anchorbench/schema/input_error.hpp"
 #include "anchorbench/report/run_outputs.hpp"
 #include "anchorbench/runner/monte_carlo.hpp"
-#include "anchorbench/testing/parts.hpp"
+#include "anchorbench/testing/components.hpp"
 #include "anchorbench/testing/small_table.hpp"
 #include "anchorbench/work/run_plan.hpp"
 
 namespace anchorbench::work {
 namespace {
 
-using testing::Parts;
+using testing::AllComponents;
 using testing::SmallTable;
 
 std::string AttemptsCsv(const std::vector<schema::Attempt>& attempts, const std::vector<schema::RowConfig>& rows) {
@@ -27,9 +27,9 @@ std::string AttemptsCsv(const std::vector<schema::Attempt>& attempts, const std:
 TEST(RunPlan, IsTheWholeRunForAnyThreadCount) {
   const schema::ExperimentConfig config = SmallTable();
   const std::vector<schema::RowConfig> rows = schema::RowsOf(config);
-  const std::string whole = AttemptsCsv(runner::RunMonteCarlo(config, Parts(), {1, nullptr}), rows);
+  const std::string whole = AttemptsCsv(runner::RunMonteCarlo(config, AllComponents(), {1, nullptr}), rows);
   const Plan plan({config});
-  LocalExecutor executor(Parts());
+  LocalExecutor executor(AllComponents());
   for (int threads : {1, 2, 3}) {
     long long last_done = -1;
     std::map<int, ChunkResult> chunks =
@@ -51,7 +51,7 @@ TEST(RunPlan, IsTheWholeRunForAnyThreadCount) {
 TEST(Chunk, ItsTextReadsBackToTheSameLines) {
   const Plan plan({SmallTable()});
   std::vector<estimator::RangeSample> samples;
-  const ChunkResult computed = ComputeChunk(plan, 3, Parts(), samples);
+  const ChunkResult computed = ComputeChunk(plan, 3, AllComponents(), samples);
   ASSERT_FALSE(computed.attempts.empty());
   const ChunkResult read = ParseChunk(plan, 3, ChunkText(plan, 3, computed), "chunk 3");
   EXPECT_EQ(read.lines, computed.lines);
@@ -68,7 +68,7 @@ TEST(Chunk, ItsTextReadsBackToTheSameLines) {
 TEST(Chunk, ACutForeignOrLongChunkIsRefused) {
   const Plan plan({SmallTable()});
   std::vector<estimator::RangeSample> samples;
-  const std::string text = ChunkText(plan, 3, ComputeChunk(plan, 3, Parts(), samples));
+  const std::string text = ChunkText(plan, 3, ComputeChunk(plan, 3, AllComponents(), samples));
   const std::string cut = text.substr(0, text.rfind('\n', text.size() - 2) + 1);
   EXPECT_THROW(ParseChunk(plan, 3, cut, "cut"), schema::InputError);
   EXPECT_THROW(ParseChunk(plan, 4, text, "foreign"), schema::InputError);
@@ -87,7 +87,7 @@ TEST(Chunk, AnEditedSwappedOrForeignChunkIsRefused) {
   const Plan other({other_seed});
   ASSERT_NE(plan.identity(), other.identity());
   std::vector<estimator::RangeSample> samples;
-  const std::string text = ChunkText(plan, 3, ComputeChunk(plan, 3, Parts(), samples));
+  const std::string text = ChunkText(plan, 3, ComputeChunk(plan, 3, AllComponents(), samples));
   ASSERT_EQ(text.rfind("# anchorbench chunk 3 of plan " + plan.identity() + ", fnv1a64 ", 0), 0u);
   const auto refusal = [&](const std::string& bad) {
     try {
@@ -113,7 +113,7 @@ TEST(Chunk, AnEditedSwappedOrForeignChunkIsRefused) {
   for (const std::string& bad : {swapped, edited, blank}) {
     EXPECT_EQ(refusal(bad), "c:1: its lines do not match its checksum (edited or torn)");
   }
-  EXPECT_NE(refusal(ChunkText(other, 3, ComputeChunk(other, 3, Parts(), samples))).find("is not chunk 3 of plan"),
+  EXPECT_NE(refusal(ChunkText(other, 3, ComputeChunk(other, 3, AllComponents(), samples))).find("is not chunk 3 of plan"),
             std::string::npos);
   EXPECT_NE(refusal(text.substr(lines[0].size())).find("not a chunk file"), std::string::npos);
 }
@@ -122,7 +122,7 @@ TEST(Chunk, AnEditedSwappedOrForeignChunkIsRefused) {
 // byte (the merge command relies on it), for more shards than chunks too.
 TEST(RunPlan, ShardsHoldEveryChunkOnceAndJoinToTheWholeRun) {
   const Plan plan({SmallTable()});  // 12 units, 12 chunks
-  LocalExecutor executor(Parts());
+  LocalExecutor executor(AllComponents());
   const std::vector<std::string> whole = RunWholePlan(plan, executor, 2).front().lines;
   for (int count : {1, 5, 12, 13}) {
     std::map<int, ChunkResult> joined;

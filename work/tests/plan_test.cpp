@@ -3,7 +3,7 @@
 #include <gtest/gtest.h>
 
 #include "anchorbench/schema/input_error.hpp"
-#include "anchorbench/testing/parts.hpp"
+#include "anchorbench/testing/components.hpp"
 #include "anchorbench/testing/small_table.hpp"
 
 namespace anchorbench::work {
@@ -45,12 +45,12 @@ TEST(Plan, ReadBackFromItsTextsItIsTheSamePlan) {
   schema::ExperimentConfig other = SmallTable();
   other.seed = 8;
   const Plan plan({SmallTable(), other});
-  const Plan copy = PlanFromTexts(plan.texts(), plan.identity(), testing::Parts());
+  const Plan copy = PlanFromTexts(plan.texts(), plan.identity(), testing::AllComponents());
   EXPECT_EQ(copy.identity(), plan.identity());
   ASSERT_EQ(copy.chunks().size(), plan.chunks().size());
   EXPECT_EQ(copy.experiments()[1].seed, 8u);
   EXPECT_NE(Plan({SmallTable()}).identity(), plan.identity());
-  EXPECT_THROW(PlanFromTexts(plan.texts(), Plan({SmallTable()}).identity(), testing::Parts()), schema::InputError);
+  EXPECT_THROW(PlanFromTexts(plan.texts(), Plan({SmallTable()}).identity(), testing::AllComponents()), schema::InputError);
 }
 
 }  // namespace

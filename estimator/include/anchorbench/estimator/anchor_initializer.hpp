@@ -57,14 +57,14 @@ struct InitEvent {
   int anchor_id = 0;
   double t_s = 0.0;
   int n_used = 0;              // samples in the solve
-  double pdop_estimate = 0.0;  // closest-point PDOP when the trigger fired (fixed window: at the end)
+  double pdop_closest_point = 0.0;  // Eq. (4) when the trigger fired (fixed window: at the end), not at the estimate
   SolveResult solve;
 };
 
 // What Feed() reports for every sample, for traces.
 struct FeedResult {
   bool accepted = false;
-  int n_accepted = 0;
+  int n_accepted = 0;  // every sample the filter accepted so far (those in the PDOP)
   double pdop = 0.0;               // closest-point PDOP after this sample (+inf if undefined)
   std::optional<InitEvent> event;  // set on the sample that initialized the anchor (inline solves)
   bool solve_pending = false;      // deferred solves: a solve waits for RunPendingSolve()

@@ -14,7 +14,9 @@ namespace anchorbench::estimator {
 struct TriggerInput {
   double t_s = 0.0;        // this sample's time
   double t_first_s = 0.0;  // the anchor's first accepted sample
-  std::size_t n_accepted = 0;  // accepted samples so far, this one included
+  // Accepted samples the trigger has seen, this one included: FeedResult::n_accepted less those
+  // queued behind a pending solve (they come later) and those after the initialization.
+  std::size_t n_admitted = 0;
   Eigen::Vector3d sample_p_world_tag = Eigen::Vector3d::Zero();  // this sample
   double sample_range_m = 0.0;
   // The buffered samples so far, this one last: every accepted sample, unless the initializer's

@@ -54,11 +54,11 @@ class SolveCadence {
   SolveCadence(int every, double growth) : every_(static_cast<std::size_t>(every)), growth_(growth) {}
   bool Due(const TriggerInput& in) {
     if (!in.eligible) return false;
-    if (evaluated_at_ != 0 && (in.n_accepted < evaluated_at_ + every_ ||
-                               static_cast<double>(in.n_accepted) < growth_ * static_cast<double>(evaluated_at_))) {
+    if (evaluated_at_ != 0 && (in.n_admitted < evaluated_at_ + every_ ||
+                               static_cast<double>(in.n_admitted) < growth_ * static_cast<double>(evaluated_at_))) {
       return false;
     }
-    evaluated_at_ = in.n_accepted;
+    evaluated_at_ = in.n_admitted;
     return true;
   }
 
@@ -138,7 +138,7 @@ class FixedWindowTrigger : public InitTrigger {
 class SampleCountTrigger : public InitTrigger {
  public:
   explicit SampleCountTrigger(int count) : count_(static_cast<std::size_t>(count)) {}
-  bool Fire(const TriggerInput& in) override { return in.eligible && in.n_accepted >= count_; }
+  bool Fire(const TriggerInput& in) override { return in.eligible && in.n_admitted >= count_; }
 
  private:
   std::size_t count_;

@@ -44,7 +44,7 @@ struct Attempt {
   bool initialized = false;
   std::optional<double> t_init_s;  // when the solve ran (online: the trigger; fixed: end of data)
   int n_used = 0;                  // samples in the solve, or buffered so far if none ran
-  double pdop_estimate = 0.0;      // closest-point PDOP at that moment (+inf if undefined)
+  double pdop_closest_point = 0.0;  // Eq. (4) at that moment, not at the estimate (+inf if undefined)
   std::optional<estimator::SolveResult> solve;  // absent if the solver never ran
   std::string status;                           // the solver's, or not_triggered / no_data
   std::optional<AttemptEvaluation> evaluation;  // where the truth is known
