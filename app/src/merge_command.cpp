@@ -61,7 +61,7 @@ work::Plan CheckInputs(const std::vector<std::string>& folders, const work::Shar
   }
   for (std::size_t s = 1; s < folders.size(); ++s) {
     const work::ShardInputs other = work::ReadShardInputs(folders[s]);
-    if (other.config_yaml != inputs.config_yaml || runner::DescribeAxes(other.axes) != runner::DescribeAxes(inputs.axes)) {
+    if (other.config_yaml != inputs.config_yaml || schema::DescribeAxes(other.axes) != schema::DescribeAxes(inputs.axes)) {
       throw schema::InputError((fs::path(folders[s]) / "config.yaml").string() + ": with axes.txt differs from " +
                        (first / "config.yaml").string() + "'s: shards of one run hold the same (edited after the run?)");
     }

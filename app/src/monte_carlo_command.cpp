@@ -106,10 +106,10 @@ std::string CommitRun(io::ResultFolder& out, const schema::ExperimentConfig& con
   return markdown.str();
 }
 
-std::string CommitSweep(io::ResultFolder& out, const std::string& name, const std::vector<runner::SweepAxis>& axes,
+std::string CommitSweep(io::ResultFolder& out, const std::string& name, const std::vector<schema::SweepAxis>& axes,
                         const work::Plan& plan, const std::vector<work::ExperimentAttempts>& points,
                         report::RunInfo info) {
-  const std::vector<runner::SweepPoint> grid = runner::SweepGrid(axes);
+  const std::vector<schema::SweepPoint> grid = schema::SweepGrid(axes);
   std::vector<report::SweepPointResult> results;
   for (std::size_t p = 0; p < grid.size(); ++p) {
     const schema::ExperimentConfig& config = plan.experiments()[p];
@@ -124,7 +124,7 @@ std::string CommitSweep(io::ResultFolder& out, const std::string& name, const st
   std::ostringstream md;
   report::WriteSweepMarkdown(md, name, first.realizations, first.seed, axes, results);
   out.Write("sweep.md", md.str());
-  info.sweep_axes = runner::DescribeAxes(axes);
+  info.sweep_axes = schema::DescribeAxes(axes);
   out.Write("manifest.json", report::ManifestJson(first, info));
   out.Commit();
   return md.str();

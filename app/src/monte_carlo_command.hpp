@@ -11,7 +11,7 @@
 #include "anchorbench/io/result_folder.hpp"
 #include "anchorbench/report/run_outputs.hpp"
 #include "anchorbench/schema/experiment.hpp"
-#include "anchorbench/runner/sweep.hpp"
+#include "anchorbench/schema/sweep.hpp"
 #include "anchorbench/work/run_plan.hpp"
 #include "anchorbench/work/shard_folder.hpp"
 #include "commands.hpp"
@@ -65,7 +65,7 @@ std::string CommitRun(io::ResultFolder& out, const schema::ExperimentConfig& con
 
 // A sweep's results (sweep and merge): sweep.csv, timing.csv, sweep.md and manifest.json, committed;
 // returns sweep.md's text. `plan` holds one experiment per grid point of `axes`.
-std::string CommitSweep(io::ResultFolder& out, const std::string& name, const std::vector<runner::SweepAxis>& axes,
+std::string CommitSweep(io::ResultFolder& out, const std::string& name, const std::vector<schema::SweepAxis>& axes,
                         const work::Plan& plan, const std::vector<work::ExperimentAttempts>& points,
                         report::RunInfo info);
 

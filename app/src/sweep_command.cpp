@@ -4,17 +4,17 @@
 #include "anchorbench/io/result_folder.hpp"
 #include "anchorbench/schema/input_error.hpp"
 #include "anchorbench/runner/monte_carlo.hpp"
-#include "anchorbench/runner/sweep.hpp"
+#include "anchorbench/schema/sweep.hpp"
 #include "monte_carlo_command.hpp"
 
 namespace anchorbench::app {
 namespace {
 
 // Every grid point parsed and validated before the first trial runs.
-std::vector<schema::ExperimentConfig> PointConfigs(const SweepArgs& args, const std::vector<runner::SweepPoint>& grid,
+std::vector<schema::ExperimentConfig> PointConfigs(const SweepArgs& args, const std::vector<schema::SweepPoint>& grid,
                                                    const AppContext& app) {
   std::vector<schema::ExperimentConfig> configs;
-  for (const runner::SweepPoint& point : grid) {
+  for (const schema::SweepPoint& point : grid) {
     schema::ExperimentConfig config = config::LoadConfig(args.config, point.overrides, app.components);
     if (args.realizations) config.realizations = *args.realizations;
     runner::CheckWork(config);
@@ -28,15 +28,15 @@ std::vector<schema::ExperimentConfig> PointConfigs(const SweepArgs& args, const 
 
 int SweepCommand(const SweepArgs& args, const AppContext& app) {
   const schema::ExperimentConfig base = config::LoadConfig(args.config, {}, app.components);
-  const std::vector<runner::SweepAxis> axes = runner::SweepAxes(base.sweep, args.axes);
+  const std::vector<schema::SweepAxis> axes = schema::SweepAxes(base.sweep, args.axes);
   if (axes.empty()) throw schema::InputError(args.config + ": nothing to sweep: give --set KEY=VALUES or a 'sweep' section");
-  for (const runner::SweepAxis& axis : axes) {
+  for (const schema::SweepAxis& axis : axes) {
     if (args.realizations && axis.key == "realizations") {
       throw schema::InputError("--realizations " + std::to_string(*args.realizations) +
                            " and the sweep axis 'realizations' both set the realizations: give one of them");
     }
   }
-  const std::vector<runner::SweepPoint> grid = runner::SweepGrid(axes);
+  const std::vector<schema::SweepPoint> grid = schema::SweepGrid(axes);
   const std::vector<schema::ExperimentConfig> configs = PointConfigs(args, grid, app);
   const MonteCarloSetup setup = SetUpMonteCarlo(args, base.name);
   const work::Plan plan(configs);

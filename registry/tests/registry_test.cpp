@@ -42,20 +42,5 @@ TEST(Components, SolversShareTheOwnersKernelTable) {
   EXPECT_EQ(components.tables->Get(options.nls.truncation, options.nls.alpha_min), first);
 }
 
-TEST(EstimatorConfig, ValidationNamesTheKey) {
-  schema::EstimatorConfig config;
-  std::string why;
-  EXPECT_TRUE(config.IsValid(&why)) << why;
-  config.filter.ransac.subset_size = 200;
-  config.filter.ransac.outlier_fraction = 0.99;  // (0.01)^200 underflows: no number of subsets suffices
-  EXPECT_TRUE(config.IsValid(&why)) << why;      // the minimal scheme counts its draws from the data
-  config.filter.ransac.scheme = estimator::RansacScheme::kFullSolve;
-  EXPECT_FALSE(config.IsValid(&why));
-  EXPECT_EQ(why.rfind("subset_size", 0), 0u) << why;
-  config = {};
-  config.triggers.clear();
-  EXPECT_FALSE(config.IsValid(&why));
-}
-
 }  // namespace
 }  // namespace anchorbench::registry

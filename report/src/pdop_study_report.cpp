@@ -12,10 +12,10 @@ namespace {
 
 using io::FormatFixed;
 using io::FormatNumber;
-using runner::kPdopMethods;
-using runner::PdopCheckpoint;
-using runner::PdopMethod;
-using runner::PdopMethodName;
+using schema::kPdopMethods;
+using schema::PdopCheckpoint;
+using schema::PdopMethod;
+using schema::PdopMethodName;
 
 // Fig. 7 spans the first 110 s after an anchor's first range: the time bins stop at 120 s.
 constexpr double kFigure7Span_s = 120.0;
@@ -153,11 +153,11 @@ void WriteBiasAware(std::ostream& md, const std::vector<PdopCheckpoint>& checkpo
 
 // The certified trigger (ours) on the same runs, measured as the DOP triggers above, with why the
 // anchors it did not initialize were left.
-void WriteCertified(std::ostream& md, const std::vector<runner::CertifiedOutcome>& outcomes, double accuracy_m,
+void WriteCertified(std::ostream& md, const std::vector<schema::CertifiedOutcome>& outcomes, double accuracy_m,
                     int anchors) {
   TriggerOutcome o;
   std::map<std::string, int> left;  // status -> anchors not initialized
-  for (const runner::CertifiedOutcome& c : outcomes) {
+  for (const schema::CertifiedOutcome& c : outcomes) {
     if (!c.error_m) {
       ++left[c.status];
       continue;
@@ -181,9 +181,9 @@ void WriteCertified(std::ostream& md, const std::vector<runner::CertifiedOutcome
 
 void WritePdopTrace(std::ostream& out, const std::vector<PdopCheckpoint>& checkpoints) { WriteTraceRows(out, checkpoints); }
 
-void WritePdopStudyMarkdown(std::ostream& md, const schema::ExperimentConfig& config, const runner::PdopStudy& study,
+void WritePdopStudyMarkdown(std::ostream& md, const schema::ExperimentConfig& config, const schema::PdopStudy& study,
                             int every, double bin_s) {
-  const runner::UnderestimateStats& s = study.stats;
+  const schema::UnderestimateStats& s = study.stats;
   std::vector<double> ratios = s.ratios_below;
   std::sort(ratios.begin(), ratios.end());
   md << "# " << config.name << ": the PDOP triggers side by side\n\n" << config.realizations

@@ -7,9 +7,6 @@
 
 namespace anchorbench::report {
 
-static_assert(kBootstrapStream >= sim::kFirstFreeStreamId && kBootstrapStream != runner::kSolverStream,
-              "the bootstrap draws from a stream of its own");
-
 using schema::Attempt;
 namespace {
 
@@ -136,7 +133,7 @@ std::vector<MethodSummary> Summarize(const std::vector<schema::Attempt>& attempt
       // One bootstrap stream per (row, method), named by them rather than numbered in table order:
       // adding a trigger to a config leaves the other methods' intervals as they were.
       MethodSummary s = SummarizeOne(selected, sums, bootstrap_resamples,
-                                     sim::RandomStream(seed, static_cast<std::uint64_t>(row), kBootstrapStream,
+                                     sim::RandomStream(seed, static_cast<std::uint64_t>(row), schema::kBootstrapStream,
                                                        MethodSubstream(method)));
       s.row = row;
       s.method = method;

@@ -21,20 +21,20 @@ void WriteLines(std::ostream& out, const std::vector<SweepPointResult>& results,
   }
 }
 
-void WriteKeys(std::ostream& out, const std::vector<runner::SweepAxis>& axes) {
-  for (const runner::SweepAxis& axis : axes) out << axis.key << ',';
+void WriteKeys(std::ostream& out, const std::vector<schema::SweepAxis>& axes) {
+  for (const schema::SweepAxis& axis : axes) out << axis.key << ',';
 }
 
 }  // namespace
 
-void WriteSweepCsv(std::ostream& out, const std::vector<runner::SweepAxis>& axes,
+void WriteSweepCsv(std::ostream& out, const std::vector<schema::SweepAxis>& axes,
                    const std::vector<SweepPointResult>& results) {
   WriteKeys(out, axes);
   out << kSummaryColumns << '\n';
   WriteLines(out, results, SummaryCsvFields);
 }
 
-void WriteSweepTiming(std::ostream& out, const std::vector<runner::SweepAxis>& axes,
+void WriteSweepTiming(std::ostream& out, const std::vector<schema::SweepAxis>& axes,
                       const std::vector<SweepPointResult>& results) {
   WriteKeys(out, axes);
   out << kTimingColumns << '\n';
@@ -42,9 +42,9 @@ void WriteSweepTiming(std::ostream& out, const std::vector<runner::SweepAxis>& a
 }
 
 void WriteSweepMarkdown(std::ostream& out, const std::string& name, int realizations, std::uint64_t seed,
-                        const std::vector<runner::SweepAxis>& axes, const std::vector<SweepPointResult>& results) {
+                        const std::vector<schema::SweepAxis>& axes, const std::vector<SweepPointResult>& results) {
   out << "# " << name << ": sweep\n\n" << realizations << " realizations per point and row, seed " << seed << ".\n\n|";
-  for (const runner::SweepAxis& axis : axes) out << ' ' << axis.key << " |";
+  for (const schema::SweepAxis& axis : axes) out << ' ' << axis.key << " |";
   out << " Row | Method | Avg. (m) | Med. (m) | Init. | >1m | Ratio (%) |\n|";
   for (std::size_t a = 0; a < axes.size() + 7; ++a) out << "---|";
   out << '\n';

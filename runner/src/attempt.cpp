@@ -5,10 +5,8 @@
 
 namespace anchorbench::runner {
 
-static_assert(kSolverStream >= sim::kFirstFreeStreamId, "stream ids below kFirstFreeStreamId are the simulator's");
-
 std::uint64_t SolverSeed(std::uint64_t seed, std::uint64_t realization, int anchor_id) {
-  return sim::RandomStream(seed, realization, kSolverStream, static_cast<std::uint32_t>(anchor_id)).NextU64();
+  return sim::RandomStream(seed, realization, schema::kSolverStream, static_cast<std::uint32_t>(anchor_id)).NextU64();
 }
 
 const schema::AnchorTruth* TruthOf(const std::map<int, schema::AnchorTruth>* truth, int anchor_id) {

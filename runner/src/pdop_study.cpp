@@ -24,8 +24,8 @@ constexpr double kInf = std::numeric_limits<double>::infinity();
 
 // What one anchor's probe collects.
 struct AnchorStudy {
-  std::vector<PdopCheckpoint> checkpoints;
-  UnderestimateStats stats;
+  std::vector<schema::PdopCheckpoint> checkpoints;
+  schema::UnderestimateStats stats;
   double t_first_s = 0.0;  // the anchor's first accepted sample
 };
 
@@ -69,7 +69,7 @@ class StudyProbe : public estimator::InitTrigger {
   void CountUnderestimate(double estimate) {
     const double true_pdop = truth_.Pdop();
     if (!std::isfinite(estimate) || !std::isfinite(true_pdop)) return;
-    UnderestimateStats& stats = out_->stats;
+    schema::UnderestimateStats& stats = out_->stats;
     ++stats.samples;
     if (estimate < true_pdop) {
       ++stats.below;
@@ -82,8 +82,8 @@ class StudyProbe : public estimator::InitTrigger {
     stats.ideal_below_precondition += precondition_ && ideal_below;
   }
 
-  PdopCheckpoint Checkpoint(const estimator::TriggerInput& in) const {
-    PdopCheckpoint c;
+  schema::PdopCheckpoint Checkpoint(const estimator::TriggerInput& in) const {
+    schema::PdopCheckpoint c;
     c.realization = realization_;
     c.anchor_id = anchor_.id;
     c.n = static_cast<int>(in.n_admitted);
@@ -94,11 +94,11 @@ class StudyProbe : public estimator::InitTrigger {
     c.dop4_confidence = kInf;
     const estimator::SolveResult ls = estimator::SolveDoubleDifferenceLs(in.p_world_tag, in.range_m, ls_);
     if (!estimator::Succeeded(ls.status)) return c;
-    c.pdop[static_cast<int>(PdopMethod::kLs)] = estimator::GeometryPdop(in.p_world_tag, in.range_m, ls.p_world_anchor);
+    c.pdop[static_cast<int>(schema::PdopMethod::kLs)] = estimator::GeometryPdop(in.p_world_tag, in.range_m, ls.p_world_anchor);
     c.ls_error_m = (ls.p_world_anchor - anchor_.p_world_anchor).norm();
     const estimator::SolveResult nls = solver_->Solve(in.p_world_tag, in.range_m);
     if (estimator::Succeeded(nls.status)) {
-      c.pdop[static_cast<int>(PdopMethod::kNls)] = estimator::GeometryPdop(in.p_world_tag, in.range_m, nls.p_world_anchor);
+      c.pdop[static_cast<int>(schema::PdopMethod::kNls)] = estimator::GeometryPdop(in.p_world_tag, in.range_m, nls.p_world_anchor);
       c.nls_error_m = (nls.p_world_anchor - anchor_.p_world_anchor).norm();
       c.dop4_confidence = estimator::WorstBiasAwareDop(in.p_world_tag, nls, confidence_sigmas_);
     }
@@ -119,15 +119,15 @@ class StudyProbe : public estimator::InitTrigger {
 };
 
 // The certified chain's event (or refusal) per anchor, measured against the truth.
-std::vector<CertifiedOutcome> CertifiedOutcomes(const sim::Scenario& scenario, estimator::FrontEnd& front_end,
+std::vector<schema::CertifiedOutcome> CertifiedOutcomes(const sim::Scenario& scenario, estimator::FrontEnd& front_end,
                                                 const std::map<int, AnchorStudy>& by_anchor, int realization) {
   std::map<int, estimator::InitEvent> fired;
   for (const estimator::FrontEndEvent& event : front_end.TakeEvents()) {
     if (event.chain == 1) fired[event.anchor_id] = event.init;
   }
-  std::vector<CertifiedOutcome> outcomes;
+  std::vector<schema::CertifiedOutcome> outcomes;
   for (const sim::SimAnchor& anchor : scenario.anchors) {
-    CertifiedOutcome o;
+    schema::CertifiedOutcome o;
     o.realization = realization;
     o.anchor_id = anchor.id;
     o.status = "waiting";
@@ -145,7 +145,7 @@ std::vector<CertifiedOutcome> CertifiedOutcomes(const sim::Scenario& scenario, e
   return outcomes;
 }
 
-PdopStudy StudyRealization(const schema::ExperimentConfig& config, const registry::Components& components, int realization,
+schema::PdopStudy StudyRealization(const schema::ExperimentConfig& config, const registry::Components& components, int realization,
                            int every) {
   const sim::Scenario scenario =
       sim::GenerateScenario(config.scenario, config.seed, static_cast<std::uint64_t>(realization));
@@ -174,7 +174,7 @@ PdopStudy StudyRealization(const schema::ExperimentConfig& config, const registr
     front_end.AddSample({range.t_s, range.tag_id, range.anchor_id, range.range_m,
                          scenario.p_world_tag_reported[static_cast<std::size_t>(range.tag_id)][range.epoch]});
   }
-  PdopStudy study;
+  schema::PdopStudy study;
   study.anchors = static_cast<int>(scenario.anchors.size());
   for (auto& [anchor_id, anchor] : by_anchor) {
     study.checkpoints.insert(study.checkpoints.end(), anchor.checkpoints.begin(), anchor.checkpoints.end());
@@ -186,30 +186,10 @@ PdopStudy StudyRealization(const schema::ExperimentConfig& config, const registr
 
 }  // namespace
 
-void UnderestimateStats::Add(const UnderestimateStats& other) {
-  samples += other.samples;
-  below += other.below;
-  ideal_below += other.ideal_below;
-  ideal_samples_precondition += other.ideal_samples_precondition;
-  ideal_below_precondition += other.ideal_below_precondition;
-  worst_ratio = std::min(worst_ratio, other.worst_ratio);
-  ratios_below.insert(ratios_below.end(), other.ratios_below.begin(), other.ratios_below.end());
-}
-
-const char* PdopMethodName(PdopMethod method) {
-  switch (method) {
-    case PdopMethod::kClosestPoint: return "closest_point";
-    case PdopMethod::kLs: return "ls";
-    case PdopMethod::kNls: return "nls";
-    case PdopMethod::kTrue: return "true";
-  }
-  return "unknown";
-}
-
-PdopStudy RunPdopStudy(const schema::ExperimentConfig& config, const registry::Components& components, int every, int threads) {
+schema::PdopStudy RunPdopStudy(const schema::ExperimentConfig& config, const registry::Components& components, int every, int threads) {
   std::string why;
   if (!components.filters.Knows(config.estimator.filter.kind, &why)) throw schema::InputError(why);
-  std::vector<PdopStudy> per_realization(static_cast<std::size_t>(config.realizations));
+  std::vector<schema::PdopStudy> per_realization(static_cast<std::size_t>(config.realizations));
   std::vector<std::exception_ptr> errors(per_realization.size());
 #pragma omp parallel for schedule(dynamic, 1) num_threads(threads)
   for (int r = 0; r < config.realizations; ++r) {
@@ -222,8 +202,8 @@ PdopStudy RunPdopStudy(const schema::ExperimentConfig& config, const registry::C
   for (const std::exception_ptr& error : errors) {
     if (error) std::rethrow_exception(error);
   }
-  PdopStudy study;
-  for (PdopStudy& r : per_realization) {
+  schema::PdopStudy study;
+  for (schema::PdopStudy& r : per_realization) {
     study.checkpoints.insert(study.checkpoints.end(), r.checkpoints.begin(), r.checkpoints.end());
     study.certified.insert(study.certified.end(), r.certified.begin(), r.certified.end());
     study.stats.Add(r.stats);

@@ -25,13 +25,13 @@ schema::ExperimentConfig OneAnchor() {
 }
 
 TEST(PdopStudy, IdenticalForAnyThreadCountAndConsistent) {
-  const PdopStudy one = RunPdopStudy(OneAnchor(), AllComponents(), 10, 1);
-  const PdopStudy two = RunPdopStudy(OneAnchor(), AllComponents(), 10, 2);
+  const schema::PdopStudy one = RunPdopStudy(OneAnchor(), AllComponents(), 10, 1);
+  const schema::PdopStudy two = RunPdopStudy(OneAnchor(), AllComponents(), 10, 2);
   ASSERT_EQ(one.checkpoints.size(), two.checkpoints.size());
   ASSERT_GT(one.checkpoints.size(), 6u * 10u);
   for (std::size_t i = 0; i < one.checkpoints.size(); ++i) {
-    const PdopCheckpoint& a = one.checkpoints[i];
-    const PdopCheckpoint& b = two.checkpoints[i];
+    const schema::PdopCheckpoint& a = one.checkpoints[i];
+    const schema::PdopCheckpoint& b = two.checkpoints[i];
     EXPECT_EQ(a.n, b.n);
     for (int m = 0; m < 4; ++m) {
       EXPECT_TRUE(a.pdop[m] == b.pdop[m] || (std::isnan(a.pdop[m]) && std::isnan(b.pdop[m])));
@@ -40,14 +40,14 @@ TEST(PdopStudy, IdenticalForAnyThreadCountAndConsistent) {
     EXPECT_FALSE(std::isnan(a.pdop[0]));
     // With the bias estimated, only the spread of directions counts: never below the true PDOP.
     if (std::isfinite(a.bias_aware_dop)) {
-      EXPECT_GE(a.bias_aware_dop, a.pdop[static_cast<int>(PdopMethod::kTrue)] * (1.0 - 1e-9));
+      EXPECT_GE(a.bias_aware_dop, a.pdop[static_cast<int>(schema::PdopMethod::kTrue)] * (1.0 - 1e-9));
     }
   }
   EXPECT_EQ(one.anchors, 6);  // one anchor per realization, counted from the scenarios
   ASSERT_EQ(one.certified.size(), 6u);  // the certified chain's outcome for every anchor
   for (std::size_t i = 0; i < one.certified.size(); ++i) {
-    const CertifiedOutcome& a = one.certified[i];
-    const CertifiedOutcome& b = two.certified[i];
+    const schema::CertifiedOutcome& a = one.certified[i];
+    const schema::CertifiedOutcome& b = two.certified[i];
     EXPECT_EQ(a.status, b.status);
     EXPECT_EQ(a.n, b.n);
     EXPECT_EQ(a.error_m, b.error_m);
@@ -63,10 +63,10 @@ TEST(PdopStudy, IdenticalForAnyThreadCountAndConsistent) {
 }
 
 TEST(PdopStudy, EstimatesConvergeToTheAnchor) {
-  const PdopStudy study = RunPdopStudy(OneAnchor(), AllComponents(), 10, 2);
+  const schema::PdopStudy study = RunPdopStudy(OneAnchor(), AllComponents(), 10, 2);
   // The last checkpoint of each run has all of the anchor's data: a tunnel pass at 1 m/s.
   for (std::size_t i = 0; i + 1 < study.checkpoints.size(); ++i) {
-    const PdopCheckpoint& c = study.checkpoints[i];
+    const schema::PdopCheckpoint& c = study.checkpoints[i];
     if (study.checkpoints[i + 1].realization == c.realization) continue;
     ASSERT_TRUE(c.nls_error_m.has_value());
     EXPECT_LT(*c.nls_error_m, 1.0) << "realization " << c.realization;

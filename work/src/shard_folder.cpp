@@ -15,7 +15,7 @@ Plan RebuildPlan(const ShardInputs& inputs, const registry::Components& componen
   if (inputs.axes.empty()) {
     experiments.push_back(config::LoadConfigText(inputs.config_yaml, "config.yaml", {}, components));
   } else {
-    for (const runner::SweepPoint& point : runner::SweepGrid(inputs.axes)) {
+    for (const schema::SweepPoint& point : schema::SweepGrid(inputs.axes)) {
       experiments.push_back(config::LoadConfigText(inputs.config_yaml, "config.yaml", point.overrides, components));
     }
   }
@@ -27,7 +27,7 @@ void WriteShardFolder(const std::function<void(const std::string&, const std::st
   for (const auto& [chunk, result] : chunks) write(ChunkFileName(chunk), ChunkText(plan, chunk, result));
   write("config.yaml", inputs.config_yaml);
   std::string axes;
-  for (const std::string& axis : runner::DescribeAxes(inputs.axes)) axes += axis + '\n';
+  for (const std::string& axis : schema::DescribeAxes(inputs.axes)) axes += axis + '\n';
   write("axes.txt", axes);
   std::ostringstream csv;
   csv << "shard,of,chunks,command,name,plan,revision\n"
@@ -60,7 +60,7 @@ ShardInputs ReadShardInputs(const fs::path& folder) {
   ShardInputs inputs;
   inputs.config_yaml = io::ReadWholeFile((folder / "config.yaml").string());
   std::istringstream axes(io::ReadWholeFile((folder / "axes.txt").string()));
-  for (std::string line; std::getline(axes, line);) inputs.axes.push_back(runner::ParseSweepAssignment(line));
+  for (std::string line; std::getline(axes, line);) inputs.axes.push_back(schema::ParseSweepAssignment(line));
   return inputs;
 }
 

@@ -7,7 +7,7 @@
 #include <string>
 #include <vector>
 
-#include "anchorbench/runner/attempt.hpp"
+#include "anchorbench/schema/attempt.hpp"
 #include "anchorbench/schema/experiment.hpp"
 
 namespace anchorbench::report {

@@ -5,7 +5,7 @@
 
 #include "anchorbench/estimator/anchor_initializer.hpp"
 #include "anchorbench/io/recorded_data.hpp"
-#include "anchorbench/runner/attempt.hpp"
+#include "anchorbench/schema/attempt.hpp"
 
 namespace anchorbench::report {
 

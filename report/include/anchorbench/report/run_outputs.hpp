@@ -5,7 +5,7 @@
 #include <vector>
 
 #include "anchorbench/report/summary.hpp"
-#include "anchorbench/runner/attempt.hpp"
+#include "anchorbench/schema/attempt.hpp"
 #include "anchorbench/schema/experiment.hpp"
 
 namespace anchorbench::report {

@@ -6,7 +6,8 @@
 #include <vector>
 
 #include "anchorbench/eval/credibility.hpp"
-#include "anchorbench/runner/attempt.hpp"
+#include "anchorbench/schema/attempt.hpp"
+#include "anchorbench/schema/random_streams.hpp"
 #include "anchorbench/schema/experiment.hpp"
 
 namespace anchorbench::report {
@@ -24,7 +25,7 @@ struct MethodSummary {
   std::optional<double> t_init_mean_s, t_init_med_s;  // when the initialized attempts initialized
   // Avg and Med: the 95% percentile intervals of a bootstrap over realizations (whole realizations
   // are resampled: the anchors of one realization share a trajectory, so they are not
-  // independent), drawn from the stream (seed, row, kBootstrapStream, a hash of the method's name);
+  // independent), drawn from the stream (seed, row, schema::kBootstrapStream, a hash of the method's name);
   // both from the same resamples.
   // Ratio: the 95% Wilson score interval of gt1m out of init, which stays meaningful at 0 or init
   // failures (a bootstrap there collapses to [0, 0]). It treats the initializations as independent.
@@ -34,7 +35,6 @@ struct MethodSummary {
   double compute_s = 0.0;  // summed Attempt::compute_s (timing files only)
 };
 
-constexpr std::uint32_t kBootstrapStream = 9;  // above the simulator's ids and runner::kSolverStream
 
 // The 95% Wilson score interval of a proportion successes / trials, in [0, 1]; absent for no trials.
 struct Interval {

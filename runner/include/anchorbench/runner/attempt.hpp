@@ -7,6 +7,7 @@
 
 #include "anchorbench/estimator/anchor_initializer.hpp"
 #include "anchorbench/schema/attempt.hpp"
+#include "anchorbench/schema/random_streams.hpp"
 
 namespace anchorbench::runner {
 
@@ -16,8 +17,7 @@ schema::Attempt AttemptOf(const estimator::AnchorInitializer& initializer, const
                   const std::string& method, const schema::AnchorTruth* truth);
 
 // The seed of anchor `anchor_id`'s random parts (RANSAC) in realization `realization`: drawn from
-// the stream (seed, realization, kSolverStream, anchor id), so it repeats for any thread count.
-constexpr std::uint32_t kSolverStream = 8;  // sim::kFirstFreeStreamId: the ids below are sim's
+// the stream (seed, realization, schema::kSolverStream, anchor id), so it repeats for any thread count.
 std::uint64_t SolverSeed(std::uint64_t seed, std::uint64_t realization, int anchor_id);
 
 // The truth of one anchor, or nullptr.

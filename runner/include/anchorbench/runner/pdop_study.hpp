@@ -7,71 +7,15 @@
 
 #include "anchorbench/registry/components.hpp"
 #include "anchorbench/schema/experiment.hpp"
+#include "anchorbench/schema/pdop_study.hpp"
 
 namespace anchorbench::runner {
-
-// The PDOP triggers of Sec. III-C / IV-B, side by side (Figs. 6-8).
-enum class PdopMethod { kClosestPoint, kLs, kNls, kTrue };
-constexpr std::array<PdopMethod, 4> kPdopMethods = {PdopMethod::kClosestPoint, PdopMethod::kLs, PdopMethod::kNls,
-                                                    PdopMethod::kTrue};
-const char* PdopMethodName(PdopMethod method);  // closest_point | ls | nls | true
-
-// One checkpoint of one anchor in one realization: the PDOP of every method on the accepted
-// samples so far, and the errors of the LS and NLS estimates on them.
-struct PdopCheckpoint {
-  int realization = 0;
-  int anchor_id = 0;
-  int n = 0;                 // accepted samples so far
-  double t_s = 0.0;          // since the anchor's first accepted range
-  std::array<double, 4> pdop{};  // by PdopMethod; +inf where undefined
-  double bias_aware_dop = 0.0;   // true, with the bias column (CRLB / sigma_d)
-  // The online bias-aware proxies (docs/method.md): the closest-point DOP with a bias column
-  // (dop4_closest_point), and the worst bias-aware DOP over the confidence region of the NLS
-  // estimate (dop4_confidence, trigger.confidence_sigmas); +inf where undefined.
-  double dop4_closest_point = 0.0;
-  double dop4_confidence = 0.0;
-  std::optional<double> ls_error_m, nls_error_m;
-};
-
-// Over every accepted sample (not only checkpoints): how often the closest-point PDOP was below
-// the true PDOP (both finite), and by how much. "Ideal" is Theorem 3.1's exact setting: the
-// closest-point PDOP computed with the true distances (so p_C is the truly closest sample), split
-// by whether the theorem's precondition ||p_k - p_C|| <= ||p_k - p_A|| holds for all k.
-struct UnderestimateStats {
-  long samples = 0;  // with both values finite
-  long below = 0;    // estimate (measured ranges) < true
-  double worst_ratio = 1.0;
-  std::vector<double> ratios_below;  // estimate / true where below (for quantiles)
-  long ideal_below = 0;
-  long ideal_samples_precondition = 0;
-  long ideal_below_precondition = 0;
-
-  void Add(const UnderestimateStats& other);  // other's samples after this one's
-};
-
-// The certified trigger (ours) on the same samples, beside the probe: when it fired, on how many
-// samples, and the error of the estimate it reported; or why it did not (its refusal, or "waiting").
-struct CertifiedOutcome {
-  int realization = 0;
-  int anchor_id = 0;
-  std::optional<double> t_s;  // since the anchor's first accepted range; empty if it never fired
-  int n = 0;
-  std::optional<double> error_m;
-  std::string status;  // the event's status, or the trigger's refusal, or "waiting"
-};
-
-struct PdopStudy {
-  std::vector<PdopCheckpoint> checkpoints;  // realization by realization, anchor by anchor
-  std::vector<CertifiedOutcome> certified;  // in the same order, one per anchor
-  UnderestimateStats stats;
-  int anchors = 0;  // over all realizations
-};
 
 // Runs the config's base scenario for every realization through the online front end: each
 // anchor's chain is the configured filter and a probe in the trigger's place, which sees every
 // accepted sample and takes one checkpoint every `every` of them; a second chain, the configured
 // estimator with the certified trigger, runs beside it. Parallel over realizations,
 // identical for any thread count. The filter comes from `components` by name.
-PdopStudy RunPdopStudy(const schema::ExperimentConfig& config, const registry::Components& components, int every, int threads);
+schema::PdopStudy RunPdopStudy(const schema::ExperimentConfig& config, const registry::Components& components, int every, int threads);
 
 }  // namespace anchorbench::runner

@@ -8,7 +8,7 @@ namespace anchorbench::sim {
 // The simulator's random streams. Each noise source has its own stream (after open_vins), so a new
 // realization changes the noise, and changing one source leaves the others untouched. Stream ids
 // belong to whoever draws them: the simulator uses 1 to 7 and 16 to 18; other layers pick ids from
-// kFirstFreeStreamId up and name them where they draw (runner: solver seeds 8; report: bootstrap 9).
+// kFirstFreeStreamId up and name them where they draw (schema/random_streams.hpp: solver seeds 8, bootstrap 9).
 enum class StreamId : std::uint32_t {
   kLayout = 1,      // anchor positions
   kTrajectory = 2,  // trajectory shape and kind

@@ -13,7 +13,7 @@
 #include <vector>
 
 #include "anchorbench/registry/components.hpp"
-#include "anchorbench/runner/sweep.hpp"
+#include "anchorbench/schema/sweep.hpp"
 #include "anchorbench/work/chunk.hpp"
 #include "anchorbench/work/plan.hpp"
 #include "anchorbench/work/shard.hpp"
@@ -32,7 +32,7 @@ struct ShardInfo {
 // What a shard's config.yaml and axes.txt hold, and the plan they rebuild.
 struct ShardInputs {
   std::string config_yaml;
-  std::vector<runner::SweepAxis> axes;  // empty for a run
+  std::vector<schema::SweepAxis> axes;  // empty for a run
 };
 // One experiment per grid point (the axes' overrides on the config), or the config alone.
 Plan RebuildPlan(const ShardInputs& inputs, const registry::Components& components);

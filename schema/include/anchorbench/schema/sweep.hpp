@@ -4,7 +4,7 @@
 #include <utility>
 #include <vector>
 
-namespace anchorbench::runner {
+namespace anchorbench::schema {
 
 // One sweep axis: a dotted config key and the values it takes, as text ("0.25", "symmetric").
 struct SweepAxis {
@@ -35,4 +35,4 @@ std::vector<SweepAxis> SweepAxes(const std::vector<std::pair<std::string, std::s
 // "KEY=v1,v2,..." per axis, as the manifest records them.
 std::vector<std::string> DescribeAxes(const std::vector<SweepAxis>& axes);
 
-}  // namespace anchorbench::runner
+}  // namespace anchorbench::schema

@@ -1,12 +1,11 @@
-#include "anchorbench/runner/sweep.hpp"
+#include "anchorbench/schema/sweep.hpp"
 
 #include <gtest/gtest.h>
 
 #include "anchorbench/schema/input_error.hpp"
 
-namespace anchorbench::runner {
+namespace anchorbench::schema {
 
-using schema::InputError;
 namespace {
 
 using Values = std::vector<std::string>;
@@ -54,4 +53,4 @@ TEST(Sweep, AxesFromTheCommandLineReplaceTheConfigsOfTheSameKey) {
 }
 
 }  // namespace
-}  // namespace anchorbench::runner
+}  // namespace anchorbench::schema

@@ -1,4 +1,4 @@
-#include "anchorbench/runner/sweep.hpp"
+#include "anchorbench/schema/sweep.hpp"
 
 #include <algorithm>
 
@@ -9,9 +9,8 @@
 
 #include "anchorbench/schema/input_error.hpp"
 
-namespace anchorbench::runner {
+namespace anchorbench::schema {
 
-using schema::InputError;
 namespace {
 
 constexpr std::size_t kMaxValuesPerAxis = 10000;
@@ -30,7 +29,7 @@ double Number(const std::string& key, const std::string& text) {
   const std::string trimmed = Trim(text);
   const auto [end, ec] = std::from_chars(trimmed.data(), trimmed.data() + trimmed.size(), value);
   if (trimmed.empty() || ec != std::errc() || end != trimmed.data() + trimmed.size() || !std::isfinite(value)) {
-    throw schema::InputError("sweep '" + key + "': '" + text + "' is not a number");
+    throw InputError("sweep '" + key + "': '" + text + "' is not a number");
   }
   return value;
 }
@@ -39,7 +38,7 @@ double Number(const std::string& key, const std::string& text) {
 
 SweepAxis ParseSweepAxis(const std::string& key, const std::string& values) {
   SweepAxis axis{key, {}};
-  if (key.empty()) throw schema::InputError("sweep: an axis needs a key, e.g. estimator.trigger.pdop_threshold=0.5,1,2");
+  if (key.empty()) throw InputError("sweep: an axis needs a key, e.g. estimator.trigger.pdop_threshold=0.5,1,2");
   // A range only where the text starts like a number: names such as nlopt:LN_BOBYQA are values.
   const std::string first_part = Trim(values.substr(0, values.find(':')));
   const bool numeric_start = !first_part.empty() && (std::isdigit(static_cast<unsigned char>(first_part[0])) ||
@@ -48,16 +47,16 @@ SweepAxis ParseSweepAxis(const std::string& key, const std::string& values) {
     const std::size_t first = values.find(':');
     const std::size_t second = values.find(':', first + 1);
     if (second == std::string::npos || values.find(':', second + 1) != std::string::npos) {
-      throw schema::InputError("sweep '" + key + "': a range is START:STOP:STEP, got '" + values + "'");
+      throw InputError("sweep '" + key + "': a range is START:STOP:STEP, got '" + values + "'");
     }
     const double start = Number(key, values.substr(0, first));
     const double stop = Number(key, values.substr(first + 1, second - first - 1));
     const double step = Number(key, values.substr(second + 1));
     if (!(step > 0.0) || stop < start) {
-      throw schema::InputError("sweep '" + key + "': a range needs STEP > 0 and STOP >= START, got '" + values + "'");
+      throw InputError("sweep '" + key + "': a range needs STEP > 0 and STOP >= START, got '" + values + "'");
     }
     const double count = std::floor((stop - start) / step + 1e-9) + 1.0;
-    if (count > kMaxValuesPerAxis) throw schema::InputError("sweep '" + key + "': more than 10000 values");
+    if (count > kMaxValuesPerAxis) throw InputError("sweep '" + key + "': more than 10000 values");
     for (int i = 0; i < static_cast<int>(count); ++i) {
       char text[32];
       std::snprintf(text, sizeof(text), "%.12g", start + i * step);
@@ -68,7 +67,7 @@ SweepAxis ParseSweepAxis(const std::string& key, const std::string& values) {
   for (std::size_t start = 0;;) {
     const std::size_t comma = values.find(',', start);
     const std::string value = Trim(values.substr(start, comma == std::string::npos ? std::string::npos : comma - start));
-    if (value.empty()) throw schema::InputError("sweep '" + key + "': empty value in '" + values + "'");
+    if (value.empty()) throw InputError("sweep '" + key + "': empty value in '" + values + "'");
     axis.values.push_back(value);
     if (comma == std::string::npos) break;
     start = comma + 1;
@@ -79,7 +78,7 @@ SweepAxis ParseSweepAxis(const std::string& key, const std::string& values) {
 SweepAxis ParseSweepAssignment(const std::string& assignment) {
   const std::size_t equals = assignment.find('=');
   if (equals == std::string::npos) {
-    throw schema::InputError("--set '" + assignment + "': expected KEY=VALUES, e.g. estimator.trigger.pdop_threshold=0.5,1,2");
+    throw InputError("--set '" + assignment + "': expected KEY=VALUES, e.g. estimator.trigger.pdop_threshold=0.5,1,2");
   }
   return ParseSweepAxis(assignment.substr(0, equals), assignment.substr(equals + 1));
 }
@@ -88,7 +87,7 @@ std::vector<SweepPoint> SweepGrid(const std::vector<SweepAxis>& axes) {
   double points = 1.0;
   for (const SweepAxis& axis : axes) points *= static_cast<double>(axis.values.size());
   if (points > kMaxGridPoints) {
-    throw schema::InputError("sweep: " + std::to_string(static_cast<long long>(std::min(points, 1e18))) +
+    throw InputError("sweep: " + std::to_string(static_cast<long long>(std::min(points, 1e18))) +
                      " grid points; at most 10000 (split the sweep)");
   }
   std::vector<SweepPoint> grid{{}};
@@ -132,4 +131,4 @@ std::vector<std::string> DescribeAxes(const std::vector<SweepAxis>& axes) {
   return described;
 }
 
-}  // namespace anchorbench::runner
+}  // namespace anchorbench::schema
