@@ -222,7 +222,7 @@ int UsageError(const CLI::App& cli, const CLI::ParseError& e) {
 
 // The command line parsed and run; every error reported here, as its exit code.
 int RunCommandLine(int argc, char** argv, const anchorbench::registry::Components& components,
-                   anchorbench::work::Executor& executor) {
+                   anchorbench::engine::Executor& executor) {
   CLI::App cli{"anchorbench: online initialization of unknown UWB anchors (Delama et al., IROS 2025)"};
   cli.footer(kExitCodes);
   cli.require_subcommand(1);
@@ -253,7 +253,7 @@ int main(int argc, char** argv) {
   if (job.worker()) return job.Serve();
   return job.Finish(RunCommandLine(argc, argv, components, job.executor()));
 #else
-  anchorbench::work::LocalExecutor executor(components);
+  anchorbench::engine::LocalExecutor executor(components);
   return RunCommandLine(argc, argv, components, executor);
 #endif
 }

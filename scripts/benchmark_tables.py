@@ -71,7 +71,7 @@ with open(os.path.join(folder, "micro.csv"), "w", newline="") as f:
             counters = ";".join(f"{k}={v:.4g}" for k, v in b.items() if k not in known and isinstance(v, (int, float)))
             w.writerow([bench, name, f"{b['real_time']:.4g}", b["time_unit"], counters])
 
-# Table I on 1 and 2 threads: the runner's scaling.
+# Table I on 1 and 2 threads: the engine's scaling.
 walls = {}
 for threads in (1, 2):
     with open(os.path.join(folder, f"table1_threads_{threads}", "manifest.json")) as f:

@@ -27,7 +27,7 @@ CONFIG = ROOT / "configs" / "table1.yaml"
 # benchmarks.sh runs the same for the thread speed-up): a fifth of the time of all three.
 PAPER_COLUMNS = ["--set", "estimator.triggers=[fixed_window,pdop_closest_point]"]
 FILES = ("attempts.csv", "summary.csv", "summary.md")
-CHUNKS_PER_EXPERIMENT, MAX_CHUNK_UNITS = 256, 64  # work/plan.hpp
+CHUNKS_PER_EXPERIMENT, MAX_CHUNK_UNITS = 256, 64  # engine/plan.hpp
 
 
 def timed(command):

@@ -684,7 +684,7 @@ def cluster_costs():
 
 
 def chunks_of(units):
-    """The chunks of an experiment of `units` units (work/plan.hpp: 256 an experiment, at most 64 units each)."""
+    """The chunks of an experiment of `units` units (engine/plan.hpp: 256 an experiment, at most 64 units each)."""
     size = min(64, max(1, -(-units // 256)))
     return -(-units // size)
 

@@ -14,8 +14,8 @@
 #include "anchorbench/schema/input_error.hpp"
 #include "anchorbench/report/paper_cells.hpp"
 #include "anchorbench/report/summary.hpp"
-#include "anchorbench/runner/monte_carlo.hpp"
-#include "anchorbench/work/run_plan.hpp"
+#include "anchorbench/engine/monte_carlo.hpp"
+#include "anchorbench/engine/run_plan.hpp"
 #include "monte_carlo_command.hpp"
 
 namespace anchorbench::app {
@@ -38,10 +38,10 @@ std::vector<PaperCell> RunCells(const schema::CalibrationSpec& spec, std::vector
   overrides.push_back(std::string("estimator.triggers=[") + schema::kFixedWindowTrigger + "," + schema::kPaperTrigger + "]");
   const schema::ExperimentConfig config = config::LoadConfig(spec.experiment_path, overrides, app.components);
   const std::vector<schema::RowConfig> rows = schema::RowsOf(config);
-  runner::CheckWork(config);
-  runner::CheckRows(rows, app.components);
-  const work::Plan plan({config});
-  const std::vector<schema::Attempt> attempts = work::RunWholePlan(plan, app.executor, threads).front().attempts;
+  engine::CheckWork(config);
+  engine::CheckRows(rows, app.components);
+  const engine::Plan plan({config});
+  const std::vector<schema::Attempt> attempts = engine::RunWholePlan(plan, app.executor, threads).front().attempts;
   return report::CompareWithPaper(
       report::Summarize(attempts, rows, config.realizations, config.bootstrap_resamples, config.seed), rows);
 }
@@ -64,8 +64,8 @@ std::vector<double> CheckParameters(const schema::CalibrationSpec& spec, const s
       const std::string assignment = parameter.key + "=" + Fit::ValueText(parameter, u);
       try {
         const schema::ExperimentConfig at_bound = config::LoadConfig(spec.experiment_path, {assignment}, app.components);
-        runner::CheckWork(at_bound);
-        runner::CheckRows(schema::RowsOf(at_bound), app.components);
+        engine::CheckWork(at_bound);
+        engine::CheckRows(schema::RowsOf(at_bound), app.components);
       } catch (const schema::InputError& e) {
         throw schema::InputError(what + " (" + parameter.key + ") at its " + (u == 0.0 ? "min" : "max") + ": " + e.what());
       }

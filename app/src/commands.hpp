@@ -10,7 +10,7 @@
 
 #include "anchorbench/io/log_policy.hpp"
 #include "anchorbench/registry/components.hpp"
-#include "anchorbench/work/executor.hpp"
+#include "anchorbench/engine/executor.hpp"
 
 namespace anchorbench::app {
 
@@ -19,7 +19,7 @@ namespace anchorbench::app {
 struct AppContext {
   const registry::Components& components;
   std::string revision;
-  work::Executor& executor;
+  engine::Executor& executor;
 };
 
 struct SimulateArgs {
@@ -50,7 +50,7 @@ struct MonteCarloArgs {
   std::optional<int> realizations;
   bool quiet = false;
   bool overwrite = false;  // replace a folder holding earlier results
-  bool resume = false;     // run, sweep: continue from <out>.chunks/ (work/chunk_store.hpp)
+  bool resume = false;     // run, sweep: continue from <out>.chunks/ (engine/chunk_store.hpp)
   std::string shard;       // run, sweep: "I/N", this share of the chunks into a shard folder
 };
 

@@ -6,7 +6,7 @@
 #include "anchorbench/config/load_config.hpp"
 #include "anchorbench/schema/input_error.hpp"
 #include "anchorbench/io/result_folder.hpp"
-#include "anchorbench/work/shard_folder.hpp"
+#include "anchorbench/engine/shard_folder.hpp"
 #include "monte_carlo_command.hpp"
 
 namespace anchorbench::app {
@@ -16,13 +16,13 @@ namespace fs = std::filesystem;
 using schema::InputError;
 
 // The shards' identities: one plan (command, config and build), every shard of it exactly once.
-std::vector<work::ShardInfo> CheckShards(const std::vector<std::string>& folders) {
-  std::vector<work::ShardInfo> infos;
+std::vector<engine::ShardInfo> CheckShards(const std::vector<std::string>& folders) {
+  std::vector<engine::ShardInfo> infos;
   std::map<int, std::string> seen;
   for (const std::string& folder : folders) {
-    infos.push_back(work::ReadShardInfo(folder));
-    const work::ShardInfo& info = infos.back();
-    const work::ShardInfo& first = infos.front();
+    infos.push_back(engine::ReadShardInfo(folder));
+    const engine::ShardInfo& info = infos.back();
+    const engine::ShardInfo& first = infos.front();
     const std::string name = folder + ": shard " + std::to_string(info.shard.index) + "/" +
                              std::to_string(info.shard.count);
     if (info.shard.count != first.shard.count || info.plan != first.plan || info.command != first.command ||
@@ -50,17 +50,17 @@ std::vector<work::ShardInfo> CheckShards(const std::vector<std::string>& folders
 
 // Every folder's config.yaml and axes.txt, each the first folder's (a shard of one run holds the
 // same): the plan they rebuild, checked against shard.csv's.
-work::Plan CheckInputs(const std::vector<std::string>& folders, const work::ShardInfo& info,
-                       const registry::Components& components, work::ShardInputs& inputs) {
+engine::Plan CheckInputs(const std::vector<std::string>& folders, const engine::ShardInfo& info,
+                       const registry::Components& components, engine::ShardInputs& inputs) {
   const fs::path first(folders.front());
-  inputs = work::ReadShardInputs(first);
-  const work::Plan plan = work::RebuildPlan(inputs, components);
+  inputs = engine::ReadShardInputs(first);
+  const engine::Plan plan = engine::RebuildPlan(inputs, components);
   if (plan.identity() != info.plan) {
     throw schema::InputError((first / "config.yaml").string() + ": with axes.txt gives plan " + plan.identity() +
                      ", shard.csv says " + info.plan + " (edited after the run?)");
   }
   for (std::size_t s = 1; s < folders.size(); ++s) {
-    const work::ShardInputs other = work::ReadShardInputs(folders[s]);
+    const engine::ShardInputs other = engine::ReadShardInputs(folders[s]);
     if (other.config_yaml != inputs.config_yaml || schema::DescribeAxes(other.axes) != schema::DescribeAxes(inputs.axes)) {
       throw schema::InputError((fs::path(folders[s]) / "config.yaml").string() + ": with axes.txt differs from " +
                        (first / "config.yaml").string() + "'s: shards of one run hold the same (edited after the run?)");
@@ -88,16 +88,16 @@ std::unique_ptr<io::ResultFolder> OpenMerged(const MergeArgs& args, const std::s
 }  // namespace
 
 int MergeCommand(const MergeArgs& args, const AppContext& app) {
-  const std::vector<work::ShardInfo> infos = CheckShards(args.shards);
-  work::ShardInputs inputs;
-  const work::Plan plan = CheckInputs(args.shards, infos.front(), app.components, inputs);
+  const std::vector<engine::ShardInfo> infos = CheckShards(args.shards);
+  engine::ShardInputs inputs;
+  const engine::Plan plan = CheckInputs(args.shards, infos.front(), app.components, inputs);
   const std::unique_ptr<io::ResultFolder> out = OpenMerged(args, infos.front().name);
-  std::map<int, work::ChunkResult> chunks;
+  std::map<int, engine::ChunkResult> chunks;
   for (std::size_t s = 0; s < args.shards.size(); ++s) {
-    chunks.merge(work::ReadShardChunks(args.shards[s], infos[s], plan));
+    chunks.merge(engine::ReadShardChunks(args.shards[s], infos[s], plan));
   }
 
-  const std::vector<work::ExperimentAttempts> joined = work::Join(plan, chunks);
+  const std::vector<engine::ExperimentAttempts> joined = engine::Join(plan, chunks);
   const fs::path first(args.shards.front());
   report::RunInfo info;
   info.config_path = (first / "config.yaml").string();

@@ -8,13 +8,13 @@
 #include "anchorbench/config/load_config.hpp"
 #include "anchorbench/report/summary.hpp"
 #include "anchorbench/report/sweep_report.hpp"
-#include "anchorbench/runner/monte_carlo.hpp"
+#include "anchorbench/engine/monte_carlo.hpp"
 
 namespace anchorbench::app {
 
 MonteCarloSetup SetUpMonteCarlo(const MonteCarloArgs& args, const std::string& config_name) {
   MonteCarloSetup setup;
-  setup.threads = runner::ResolveThreads(args.threads);
+  setup.threads = engine::ResolveThreads(args.threads);
   setup.out = io::ResultFolderPath(args.out, config_name);
   return setup;
 }
@@ -36,27 +36,27 @@ std::unique_ptr<io::ResultFolder> OpenResultFolder(const MonteCarloArgs& args, c
 
 namespace {
 
-work::ChunkStore::Mode StoreMode(const MonteCarloArgs& args) {
-  if (args.resume) return work::ChunkStore::Mode::kResume;
-  return args.overwrite ? work::ChunkStore::Mode::kOverwrite : work::ChunkStore::Mode::kFresh;
+engine::ChunkStore::Mode StoreMode(const MonteCarloArgs& args) {
+  if (args.resume) return engine::ChunkStore::Mode::kResume;
+  return args.overwrite ? engine::ChunkStore::Mode::kOverwrite : engine::ChunkStore::Mode::kFresh;
 }
 
-work::Shard ShardOf(const MonteCarloArgs& args) {
-  return args.shard.empty() ? work::Shard{} : work::ParseShard(args.shard, "--shard");
+engine::Shard ShardOf(const MonteCarloArgs& args) {
+  return args.shard.empty() ? engine::Shard{} : engine::ParseShard(args.shard, "--shard");
 }
 
 }  // namespace
 
-std::uintmax_t RunResultBytes(const work::Plan& plan, const MonteCarloArgs& args) {
+std::uintmax_t RunResultBytes(const engine::Plan& plan, const MonteCarloArgs& args) {
   constexpr std::uintmax_t kTables = 1 << 16, kBytesPerAttempt = 360;
-  if (!args.shard.empty()) return work::ChunkBytes(plan, ShardOf(args)) + kTables;
+  if (!args.shard.empty()) return engine::ChunkBytes(plan, ShardOf(args)) + kTables;
   return kBytesPerAttempt * static_cast<std::uintmax_t>(plan.attempts()) + kTables;
 }
 
 PlanOutcome ComputePlan(const MonteCarloArgs& args, const MonteCarloSetup& setup, const PlanJob& job,
                         const AppContext& app, io::ResultFolder& out) {
-  const std::optional<work::Shard> shard = args.shard.empty() ? std::nullopt : std::optional(ShardOf(args));
-  work::ChunkStore store(out.target(), job.plan, StoreMode(args), work::ChunkBytes(job.plan, ShardOf(args)),
+  const std::optional<engine::Shard> shard = args.shard.empty() ? std::nullopt : std::optional(ShardOf(args));
+  engine::ChunkStore store(out.target(), job.plan, StoreMode(args), engine::ChunkBytes(job.plan, ShardOf(args)),
                          InputsOf(args));
   if (store.unreadable() > 0) {  // even with --quiet: the store was damaged
     std::cerr << "anchorbench: note: " << store.folder().string() << ": " << store.unreadable()
@@ -64,20 +64,20 @@ PlanOutcome ComputePlan(const MonteCarloArgs& args, const MonteCarloSetup& setup
   }
   Progress progress(job.command + " " + job.name, args.quiet);
   long long units = 0;
-  std::map<int, work::ChunkResult> chunks =
-      work::RunPlan(job.plan, app.executor,
+  std::map<int, engine::ChunkResult> chunks =
+      engine::RunPlan(job.plan, app.executor,
                     {setup.threads, &store, [&](long long done, long long total) { progress.Update(done, units = total); },
-                     shard.value_or(work::Shard{})});
+                     shard.value_or(engine::Shard{})});
   PlanOutcome outcome;
   outcome.wall_time_s = progress.elapsed_s();
   progress.Finish(units);
   if (!shard) {
-    outcome.experiments = work::Join(job.plan, chunks);
+    outcome.experiments = engine::Join(job.plan, chunks);
     return outcome;
   }
-  const work::ShardInfo info{*shard, static_cast<int>(chunks.size()), job.command, job.name, job.plan.identity(),
+  const engine::ShardInfo info{*shard, static_cast<int>(chunks.size()), job.command, job.name, job.plan.identity(),
                              app.revision};
-  work::WriteShardFolder([&](const std::string& name, const std::string& text) { out.Write(name, text); }, info,
+  engine::WriteShardFolder([&](const std::string& name, const std::string& text) { out.Write(name, text); }, info,
                          job.inputs, job.plan, chunks);
   out.Commit();
   store.Remove();
@@ -86,11 +86,11 @@ PlanOutcome ComputePlan(const MonteCarloArgs& args, const MonteCarloSetup& setup
 
 void RemoveStore(const io::ResultFolder& out) {
   std::error_code error;
-  std::filesystem::remove_all(work::ChunkStorePath(out.target()), error);
+  std::filesystem::remove_all(engine::ChunkStorePath(out.target()), error);
 }
 
 std::string CommitRun(io::ResultFolder& out, const schema::ExperimentConfig& config,
-                      const work::ExperimentAttempts& run, const report::RunInfo& info) {
+                      const engine::ExperimentAttempts& run, const report::RunInfo& info) {
   const std::vector<schema::RowConfig> rows = schema::RowsOf(config);
   // Every file into the new folder, then the folder in place: an error leaves the old results intact.
   out.Write("attempts.csv", [&](std::ostream& file) { report::WriteAttemptLines(file, run.lines); });
@@ -107,7 +107,7 @@ std::string CommitRun(io::ResultFolder& out, const schema::ExperimentConfig& con
 }
 
 std::string CommitSweep(io::ResultFolder& out, const std::string& name, const std::vector<schema::SweepAxis>& axes,
-                        const work::Plan& plan, const std::vector<work::ExperimentAttempts>& points,
+                        const engine::Plan& plan, const std::vector<engine::ExperimentAttempts>& points,
                         report::RunInfo info) {
   const std::vector<schema::SweepPoint> grid = schema::SweepGrid(axes);
   std::vector<report::SweepPointResult> results;

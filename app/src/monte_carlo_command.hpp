@@ -12,8 +12,8 @@
 #include "anchorbench/report/run_outputs.hpp"
 #include "anchorbench/schema/experiment.hpp"
 #include "anchorbench/schema/sweep.hpp"
-#include "anchorbench/work/run_plan.hpp"
-#include "anchorbench/work/shard_folder.hpp"
+#include "anchorbench/engine/run_plan.hpp"
+#include "anchorbench/engine/shard_folder.hpp"
 #include "commands.hpp"
 #include "progress.hpp"
 
@@ -36,18 +36,18 @@ std::unique_ptr<io::ResultFolder> OpenResultFolder(const MonteCarloArgs& args, c
 
 // The bytes run and sweep claim for their results: a run's attempts.csv (lines of 250-310 bytes)
 // and tables; a shard's folder of chunk files.
-std::uintmax_t RunResultBytes(const work::Plan& plan, const MonteCarloArgs& args);
+std::uintmax_t RunResultBytes(const engine::Plan& plan, const MonteCarloArgs& args);
 
 // What run and sweep share once their plan is made: which command on which experiment, and what
 // a shard folder records to rebuild the plan.
 struct PlanJob {
-  const work::Plan& plan;
+  const engine::Plan& plan;
   std::string command;  // "run" or "sweep"
   std::string name;     // the experiment's
-  work::ShardInputs inputs;
+  engine::ShardInputs inputs;
 };
 struct PlanOutcome {
-  std::optional<std::vector<work::ExperimentAttempts>> experiments;  // none for a shard: its folder is written
+  std::optional<std::vector<engine::ExperimentAttempts>> experiments;  // none for a shard: its folder is written
   double wall_time_s = 0.0;
 };
 // Computes the job's chunks (all, or --shard's) into the chunk store beside `out` (--resume takes
@@ -61,12 +61,12 @@ void RemoveStore(const io::ResultFolder& out);
 // A run's results from its attempts (run and merge write the same): attempts.csv, summary.csv,
 // summary.md, timing.csv and manifest.json into `out`, committed; returns summary.md's text.
 std::string CommitRun(io::ResultFolder& out, const schema::ExperimentConfig& config,
-                      const work::ExperimentAttempts& run, const report::RunInfo& info);
+                      const engine::ExperimentAttempts& run, const report::RunInfo& info);
 
 // A sweep's results (sweep and merge): sweep.csv, timing.csv, sweep.md and manifest.json, committed;
 // returns sweep.md's text. `plan` holds one experiment per grid point of `axes`.
 std::string CommitSweep(io::ResultFolder& out, const std::string& name, const std::vector<schema::SweepAxis>& axes,
-                        const work::Plan& plan, const std::vector<work::ExperimentAttempts>& points,
+                        const engine::Plan& plan, const std::vector<engine::ExperimentAttempts>& points,
                         report::RunInfo info);
 
 // The manifest's record: the command line's changes (--realizations and any `more`), threads,

@@ -60,8 +60,8 @@ std::vector<std::string> Unpack(const std::string& packed) {
 
 }  // namespace
 
-void MpiExecutor::Compute(const work::Plan& plan, const std::vector<int>& chunks, int threads,
-                          const work::ChunkDone& done) {
+void MpiExecutor::Compute(const engine::Plan& plan, const std::vector<int>& chunks, int threads,
+                          const engine::ChunkDone& done) {
   if (ranks_ == 1 || chunks.empty()) return local_.Compute(plan, chunks, threads, done);
   busy_ = true;
   std::vector<std::string> message = {plan.identity()};
@@ -87,7 +87,7 @@ void MpiExecutor::Compute(const work::Plan& plan, const std::vector<int>& chunks
     const std::vector<std::string> fields = Unpack(text);  // thread [, chunk, chunk text]
     if (status.MPI_TAG == kResult) {
       const int chunk = std::stoi(fields[1]);
-      done(chunk, work::ParseChunk(plan, chunk, fields[2], rank + "'s chunk " + std::to_string(chunk)), fields[2]);
+      done(chunk, engine::ParseChunk(plan, chunk, fields[2], rank + "'s chunk " + std::to_string(chunk)), fields[2]);
       ++received;
     }
     const int reply_tag = kChunkFor + std::stoi(fields[0]);
@@ -120,7 +120,7 @@ MpiJob::MpiJob(int& argc, char**& argv, const registry::Components& components)
 
 // One worker thread: asks for a chunk, computes it, sends it (asking for the next), until rank 0
 // says no more. Errors go to rank 0, which ends the job.
-void ServeThread(const work::Plan* plan, const std::string& plan_error, int thread,
+void ServeThread(const engine::Plan* plan, const std::string& plan_error, int thread,
                  const registry::Components& components) {
   std::vector<estimator::RangeSample> samples;
   std::string request = Pack({std::to_string(thread)});
@@ -133,8 +133,8 @@ void ServeThread(const work::Plan* plan, const std::string& plan_error, int thre
     const int chunk = std::stoi(chunk_text);
     try {
       if (!plan) throw schema::InputError(plan_error);
-      const work::ChunkResult result = work::ComputeChunk(*plan, chunk, components, samples);
-      request = Pack({std::to_string(thread), chunk_text, work::ChunkText(*plan, chunk, result)});
+      const engine::ChunkResult result = engine::ComputeChunk(*plan, chunk, components, samples);
+      request = Pack({std::to_string(thread), chunk_text, engine::ChunkText(*plan, chunk, result)});
       tag = kResult;
     } catch (const schema::InputError& e) {
       request = std::string("2") + e.what();
@@ -147,7 +147,7 @@ void ServeThread(const work::Plan* plan, const std::string& plan_error, int thre
 }
 
 int MpiJob::Serve() {
-  std::optional<work::Plan> plan;
+  std::optional<engine::Plan> plan;
   std::string plan_error;
   for (;;) {
     MPI_Status status;
@@ -158,14 +158,14 @@ int MpiJob::Serve() {
       plan.reset();
       plan_error = "no plan";
       try {
-        plan.emplace(work::PlanFromTexts({message.begin() + 1, message.end()}, message[0], components_));
+        plan.emplace(engine::PlanFromTexts({message.begin() + 1, message.end()}, message[0], components_));
       } catch (const std::exception& e) {
         plan_error = e.what();  // reported for the first chunk asked of it
       }
       continue;
     }
     const int threads = std::stoi(text);  // kStart
-    const work::Plan* computing = plan ? &*plan : nullptr;
+    const engine::Plan* computing = plan ? &*plan : nullptr;
 #pragma omp parallel num_threads(threads)
     ServeThread(computing, plan_error, omp_get_thread_num(), components_);
   }

@@ -1,7 +1,7 @@
 #pragma once
 // anchorbench-mpi: the same commands over the ranks of an MPI job (mpirun -n K anchorbench-mpi
 // run ...). Rank 0 runs the command as the plain binary would and hands out chunks of the plan
-// (work/plan.hpp) to the other ranks as they ask for more; the others only compute chunks, so
+// (engine/plan.hpp) to the other ranks as they ask for more; the others only compute chunks, so
 // they read no file and write none. A chunk's bytes do not depend on who computed it, so the
 // results are the plain binary's, byte for byte, for any K and any thread count (docs/cluster.md).
 
@@ -9,22 +9,22 @@
 #include <vector>
 
 #include "anchorbench/registry/components.hpp"
-#include "anchorbench/work/executor.hpp"
+#include "anchorbench/engine/executor.hpp"
 
 namespace anchorbench::app {
 
 // Rank 0's executor: K-1 worker ranks of `threads` threads each; every thread asks rank 0 for one
 // chunk at a time (the next with each result), so a slow rank or thread holds only its own chunk.
 // With no worker (-n 1) it computes on its own threads.
-class MpiExecutor final : public work::Executor {
+class MpiExecutor final : public engine::Executor {
  public:
   MpiExecutor(const registry::Components& components, int ranks) : local_(components), ranks_(ranks) {}
-  void Compute(const work::Plan& plan, const std::vector<int>& chunks, int threads, const work::ChunkDone& done) override;
+  void Compute(const engine::Plan& plan, const std::vector<int>& chunks, int threads, const engine::ChunkDone& done) override;
   // Whether workers hold chunks of a Compute that did not end (an error mid-plan).
   bool busy() const { return busy_; }
 
  private:
-  work::LocalExecutor local_;
+  engine::LocalExecutor local_;
   int ranks_;
   std::string plan_sent_;  // the plan the workers hold
   bool busy_ = false;
@@ -39,7 +39,7 @@ class MpiJob {
   MpiJob(const MpiJob&) = delete;
   MpiJob& operator=(const MpiJob&) = delete;
   bool worker() const { return rank_ != 0; }
-  work::Executor& executor() { return executor_; }
+  engine::Executor& executor() { return executor_; }
   int Serve();
   int Finish(int exit_code);
 

@@ -10,7 +10,7 @@
 #include "anchorbench/io/result_folder.hpp"
 #include "anchorbench/report/replay_report.hpp"
 #include "anchorbench/report/replay_summary.hpp"
-#include "anchorbench/runner/replay.hpp"
+#include "anchorbench/engine/replay.hpp"
 #include "commands.hpp"
 #include "progress.hpp"
 
@@ -56,7 +56,7 @@ int ReplayCommand(const ReplayArgs& args, const AppContext& app) {
   std::map<int, schema::AnchorTruth> truth;
   if (!args.anchors.empty()) truth = io::LoadAnchors(args.anchors);
   const std::map<int, schema::AnchorTruth>* known = args.anchors.empty() ? nullptr : &truth;
-  runner::CheckReplayable(survey.anchor_ids, known, config.estimator, app.components);
+  engine::CheckReplayable(survey.anchor_ids, known, config.estimator, app.components);
 
   // The outputs, before any work: never an input, never earlier results without --overwrite.
   std::unique_ptr<io::ResultFolder> out;
@@ -68,7 +68,7 @@ int ReplayCommand(const ReplayArgs& args, const AppContext& app) {
     out = std::make_unique<io::ResultFolder>(args.out, options);
   }
   std::unique_ptr<io::AtomicFile> trace_file;
-  runner::TraceSink trace;
+  engine::TraceSink trace;
   if (!args.trace.empty()) {
     if (out && io::IsInside(args.trace, out->target())) {
       throw schema::InputError("--trace " + args.trace + ": lies inside --out " + args.out +
@@ -88,12 +88,12 @@ int ReplayCommand(const ReplayArgs& args, const AppContext& app) {
   io::RecordedLog log(files, policy, survey.default_tag_id, summary.drops);
   Progress progress("replay", args.quiet, "MB", kBytesPerMb);
   std::int64_t rows = 0;
-  const runner::LogSource source = [&](io::RecordedLog::Kind& kind, io::PoseRecord& pose, io::RangeRecord& range) {
+  const engine::LogSource source = [&](io::RecordedLog::Kind& kind, io::PoseRecord& pose, io::RangeRecord& range) {
     if ((++rows & 0xffff) == 0) progress.Update(static_cast<long long>(log.bytes_read()), static_cast<long long>(survey.bytes));
     return log.Next(kind, pose, range);
   };
-  const runner::ReplayResult result =
-      runner::Replay(source, files.ranges, known, config.estimator, app.components, config.seed, trace);
+  const engine::ReplayResult result =
+      engine::Replay(source, files.ranges, known, config.estimator, app.components, config.seed, trace);
   if (progress.elapsed_s() > 1.0) progress.Finish(static_cast<long long>(survey.bytes));
   summary.drops.Add(result.drops);
   summary.samples_by_anchor = result.samples_by_anchor;

@@ -2,7 +2,7 @@
 
 #include "anchorbench/config/load_config.hpp"
 #include "anchorbench/io/result_folder.hpp"
-#include "anchorbench/runner/monte_carlo.hpp"
+#include "anchorbench/engine/monte_carlo.hpp"
 #include "monte_carlo_command.hpp"
 
 namespace anchorbench::app {
@@ -10,10 +10,10 @@ int RunCommand(const RunArgs& args, const AppContext& app) {
   schema::ExperimentConfig config = config::LoadConfig(args.config, args.overrides, app.components);
   if (args.seed) config.seed = *args.seed;
   if (args.realizations) config.realizations = *args.realizations;
-  runner::CheckWork(config);
-  runner::CheckRows(schema::RowsOf(config), app.components);
+  engine::CheckWork(config);
+  engine::CheckRows(schema::RowsOf(config), app.components);
   const MonteCarloSetup setup = SetUpMonteCarlo(args, config.name);
-  const work::Plan plan({config});
+  const engine::Plan plan({config});
   const std::unique_ptr<io::ResultFolder> out = OpenResultFolder(args, setup, RunResultBytes(plan, args));
 
   const PlanOutcome run = ComputePlan(args, setup, {plan, "run", config.name, {config::ToYaml(config), {}}}, app, *out);

@@ -3,7 +3,7 @@
 #include "anchorbench/config/load_config.hpp"
 #include "anchorbench/io/result_folder.hpp"
 #include "anchorbench/schema/input_error.hpp"
-#include "anchorbench/runner/monte_carlo.hpp"
+#include "anchorbench/engine/monte_carlo.hpp"
 #include "anchorbench/schema/sweep.hpp"
 #include "monte_carlo_command.hpp"
 
@@ -17,8 +17,8 @@ std::vector<schema::ExperimentConfig> PointConfigs(const SweepArgs& args, const 
   for (const schema::SweepPoint& point : grid) {
     schema::ExperimentConfig config = config::LoadConfig(args.config, point.overrides, app.components);
     if (args.realizations) config.realizations = *args.realizations;
-    runner::CheckWork(config);
-    runner::CheckRows(schema::RowsOf(config), app.components);
+    engine::CheckWork(config);
+    engine::CheckRows(schema::RowsOf(config), app.components);
     configs.push_back(std::move(config));
   }
   return configs;
@@ -39,7 +39,7 @@ int SweepCommand(const SweepArgs& args, const AppContext& app) {
   const std::vector<schema::SweepPoint> grid = schema::SweepGrid(axes);
   const std::vector<schema::ExperimentConfig> configs = PointConfigs(args, grid, app);
   const MonteCarloSetup setup = SetUpMonteCarlo(args, base.name);
-  const work::Plan plan(configs);
+  const engine::Plan plan(configs);
   // Per point, row and trigger a line of ~200 bytes in each of three files; a shard's chunk files.
   std::uintmax_t lines = 0;
   for (const schema::ExperimentConfig& config : configs) {
@@ -49,8 +49,8 @@ int SweepCommand(const SweepArgs& args, const AppContext& app) {
   const std::unique_ptr<io::ResultFolder> out = OpenResultFolder(args, setup, bytes);
   schema::ExperimentConfig resolved = base;
   if (args.realizations) resolved.realizations = *args.realizations;
-  const work::ShardInputs inputs{config::ToYaml(resolved), axes};
-  if (!args.shard.empty() && work::RebuildPlan(inputs, app.components).identity() != plan.identity()) {
+  const engine::ShardInputs inputs{config::ToYaml(resolved), axes};
+  if (!args.shard.empty() && engine::RebuildPlan(inputs, app.components).identity() != plan.identity()) {
     throw schema::InputError(args.config + ": this sweep does not rebuild from its config and axes (an axis on "
                          "'realizations' with --realizations?): it cannot be sharded");
   }

@@ -11,7 +11,7 @@
 #include "anchorbench/eval/oracles.hpp"
 #include "anchorbench/schema/input_error.hpp"
 #include "anchorbench/report/summary.hpp"
-#include "anchorbench/runner/monte_carlo.hpp"
+#include "anchorbench/engine/monte_carlo.hpp"
 
 namespace est = anchorbench::estimator;
 namespace ab = anchorbench;
@@ -65,7 +65,7 @@ int main(int argc, char** argv) {
     const ab::schema::ExperimentConfig ours = ab::config::LoadConfig(argv[1], {}, components);
     const ab::schema::ExperimentConfig paper = ab::config::LoadConfig(argv[1], {"estimator.solver=lm_adaptive"}, components);
     for (const ab::schema::ExperimentConfig* config : {&ours, &paper}) {
-      const auto attempts = ab::runner::RunMonteCarlo(*config, components, {2, nullptr});
+      const auto attempts = ab::engine::RunMonteCarlo(*config, components, {2, nullptr});
       const auto rows = ab::schema::RowsOf(*config);
       for (const auto& s : ab::report::Summarize(attempts, rows, config->realizations, 0, config->seed)) {
         if (s.method != ab::schema::kPaperTrigger) continue;

@@ -20,7 +20,7 @@ struct AttemptsFile {
 };
 
 // attempts.csv's text, named `source` in errors, with compute_s as a last column (a chunk:
-// work/chunk.hpp), which is cut from the header and the lines. Rows are named as in `rows`.
+// engine/chunk.hpp), which is cut from the header and the lines. Rows are named as in `rows`.
 // Throws schema::InputError "SOURCE:LINE: ..." on anything malformed.
 AttemptsFile ParseAttempts(const std::string& text, const std::string& source,
                            const std::vector<schema::RowConfig>& rows);

@@ -18,7 +18,7 @@ constexpr const char* kAttemptsColumns =
     "bias_err,alpha,status,bias_aware_dop,nees_pos,nees,bias_aware_hdop,bias_aware_vdop";
 void WriteAttempts(std::ostream& out, const std::vector<schema::Attempt>& attempts,
                    const std::vector<schema::RowConfig>& rows);
-// The same file from lines written before (work::ChunkResult's): the header, then the lines.
+// The same file from lines written before (engine::ChunkResult's): the header, then the lines.
 void WriteAttemptLines(std::ostream& out, const std::vector<std::string>& lines);
 
 // summary.csv: row,method,avg_m,med_m,init,gt1m,ratio_pct,avg_lo,avg_hi,ratio_lo,ratio_hi, the

@@ -7,7 +7,7 @@
 namespace anchorbench::schema {
 
 // The random streams drawn outside the simulator, in one table (sim::StreamId has the simulator's).
-constexpr std::uint32_t kSolverStream = 8;     // an anchor's random parts (RANSAC), runner::SolverSeed
+constexpr std::uint32_t kSolverStream = 8;     // an anchor's random parts (RANSAC), engine::SolverSeed
 constexpr std::uint32_t kBootstrapStream = 9;  // the realization bootstrap of summary.csv, report::Summarize
 static_assert(kSolverStream >= sim::kFirstFreeStreamId && kBootstrapStream >= sim::kFirstFreeStreamId &&
                   kSolverStream != kBootstrapStream,

@@ -1,0 +1,53 @@
+#pragma once
+// One chunk's attempts, computed or read back, and the text they travel and rest in.
+
+#include <cstdint>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "anchorbench/estimator/range_sample.hpp"
+#include "anchorbench/registry/components.hpp"
+#include "anchorbench/engine/attempt.hpp"
+#include "anchorbench/engine/plan.hpp"
+#include "anchorbench/engine/shard.hpp"
+
+namespace anchorbench::engine {
+
+// A chunk's attempts in unit order, each with its line of attempts.csv, so that output written
+// from a chunk read back (a resumed run, an MPI rank's) has the computed chunk's bytes. Read back,
+// an attempt holds what the summaries use (report::ParseAttempts).
+struct ChunkResult {
+  std::vector<schema::Attempt> attempts;
+  std::vector<std::string> lines;
+};
+
+// Computes chunk `chunk` of `plan` on the calling thread (engine::RunRealization per unit);
+// `samples` is the caller's scratch.
+ChunkResult ComputeChunk(const Plan& plan, int chunk, const registry::Components& components,
+                         std::vector<estimator::RangeSample>& samples);
+
+// The chunk's text: an identity line, then attempts.csv's header and lines, each with compute_s as
+// its last column. The identity line names the chunk, its plan and a checksum of the lines below:
+//   # anchorbench chunk 12 of plan 0123456789abcdef, fnv1a64 fedcba9876543210
+// The checksum (FNV-1a, 64 bits) finds edits, swapped lines, torn files and chunks of another run;
+// it is no signature against someone who recomputes it.
+inline constexpr std::string_view kChunkMark = "# anchorbench chunk ";
+std::string ChunkText(const Plan& plan, int chunk, const ChunkResult& result);
+
+// About the bytes of the chunk files of `shard`'s chunks (a store's or a shard folder's), for the
+// space a run claims before its work: attempts.csv lines are 250-310 bytes (Table I, the halls),
+// a chunk's line adds compute_s, and each file its identity and header lines.
+std::uintmax_t ChunkBytes(const Plan& plan, const Shard& shard);
+
+// The file a chunk rests in (a chunk store's, a shard folder's): chunk-000012.csv.
+std::string ChunkFileName(int chunk);
+
+// A chunk's text read back; `source` names it in errors. Refuses (schema::InputError) a text whose
+// identity line is not this chunk's of this plan or whose checksum does not match, and one that is
+// not every attempt of exactly the chunk's units, in order (one per anchor and trigger).
+ChunkResult ParseChunk(const Plan& plan, int chunk, const std::string& text, const std::string& source);
+// The same from a chunk file (a store's, a shard folder's), named in errors.
+ChunkResult ReadChunkFile(const Plan& plan, int chunk, const std::string& path);
+
+}  // namespace anchorbench::engine

@@ -1,0 +1,40 @@
+#pragma once
+// Who computes a plan's chunks. The commands hand an Executor the chunks still to compute and take
+// each one back through a callback; this process's threads (LocalExecutor) and the ranks of an MPI
+// job (app's MpiExecutor) are interchangeable because a chunk's bytes do not depend on either.
+
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "anchorbench/registry/components.hpp"
+#include "anchorbench/engine/chunk.hpp"
+#include "anchorbench/engine/plan.hpp"
+
+namespace anchorbench::engine {
+
+// Called once per chunk, from one thread at a time, in no particular order: the chunk's index,
+// its result and its text (ChunkText).
+using ChunkDone = std::function<void(int chunk, ChunkResult&& result, const std::string& text)>;
+
+class Executor {
+ public:
+  virtual ~Executor() = default;
+  // Computes `chunks` (indices into plan.chunks()) with `threads` threads per process. An error
+  // in any chunk, or thrown by `done` (a chunk that cannot be stored), ends the call with that
+  // error (schema::InputError for bad input): chunks not yet started are skipped, and `done` has seen
+  // every chunk that finished.
+  virtual void Compute(const Plan& plan, const std::vector<int>& chunks, int threads, const ChunkDone& done) = 0;
+};
+
+// This process's threads (OpenMP), one chunk per thread at a time, dynamically scheduled.
+class LocalExecutor final : public Executor {
+ public:
+  explicit LocalExecutor(const registry::Components& components) : components_(components) {}
+  void Compute(const Plan& plan, const std::vector<int>& chunks, int threads, const ChunkDone& done) override;
+
+ private:
+  const registry::Components& components_;
+};
+
+}  // namespace anchorbench::engine

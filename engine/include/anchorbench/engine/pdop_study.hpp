@@ -1,0 +1,21 @@
+#pragma once
+
+#include <array>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "anchorbench/registry/components.hpp"
+#include "anchorbench/schema/experiment.hpp"
+#include "anchorbench/schema/pdop_study.hpp"
+
+namespace anchorbench::engine {
+
+// Runs the config's base scenario for every realization through the online front end: each
+// anchor's chain is the configured filter and a probe in the trigger's place, which sees every
+// accepted sample and takes one checkpoint every `every` of them; a second chain, the configured
+// estimator with the certified trigger, runs beside it. Parallel over realizations,
+// identical for any thread count. The filter comes from `components` by name.
+schema::PdopStudy RunPdopStudy(const schema::ExperimentConfig& config, const registry::Components& components, int every, int threads);
+
+}  // namespace anchorbench::engine
