@@ -38,8 +38,7 @@ std::vector<PaperCell> RunCells(const schema::CalibrationSpec& spec, std::vector
   overrides.push_back(std::string("estimator.triggers=[") + schema::kFixedWindowTrigger + "," + schema::kPaperTrigger + "]");
   const schema::ExperimentConfig config = config::LoadConfig(spec.experiment_path, overrides, app.components);
   const std::vector<schema::RowConfig> rows = schema::RowsOf(config);
-  engine::CheckWork(config);
-  engine::CheckRows(rows, app.components);
+  engine::CheckExperiment(config, app.components);
   const engine::Plan plan({config});
   const std::vector<schema::Attempt> attempts = engine::RunWholePlan(plan, app.executor, threads).front().attempts;
   return report::CompareWithPaper(
@@ -64,8 +63,7 @@ std::vector<double> CheckParameters(const schema::CalibrationSpec& spec, const s
       const std::string assignment = parameter.key + "=" + Fit::ValueText(parameter, u);
       try {
         const schema::ExperimentConfig at_bound = config::LoadConfig(spec.experiment_path, {assignment}, app.components);
-        engine::CheckWork(at_bound);
-        engine::CheckRows(schema::RowsOf(at_bound), app.components);
+        engine::CheckExperiment(at_bound, app.components);
       } catch (const schema::InputError& e) {
         throw schema::InputError(what + " (" + parameter.key + ") at its " + (u == 0.0 ? "min" : "max") + ": " + e.what());
       }

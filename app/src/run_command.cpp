@@ -10,8 +10,7 @@ int RunCommand(const RunArgs& args, const AppContext& app) {
   schema::ExperimentConfig config = config::LoadConfig(args.config, args.overrides, app.components);
   if (args.seed) config.seed = *args.seed;
   if (args.realizations) config.realizations = *args.realizations;
-  engine::CheckWork(config);
-  engine::CheckRows(schema::RowsOf(config), app.components);
+  engine::CheckExperiment(config, app.components);
   const MonteCarloSetup setup = SetUpMonteCarlo(args, config.name);
   const engine::Plan plan({config});
   const std::unique_ptr<io::ResultFolder> out = OpenResultFolder(args, setup, RunResultBytes(plan, args));

@@ -17,8 +17,7 @@ std::vector<schema::ExperimentConfig> PointConfigs(const SweepArgs& args, const 
   for (const schema::SweepPoint& point : grid) {
     schema::ExperimentConfig config = config::LoadConfig(args.config, point.overrides, app.components);
     if (args.realizations) config.realizations = *args.realizations;
-    engine::CheckWork(config);
-    engine::CheckRows(schema::RowsOf(config), app.components);
+    engine::CheckExperiment(config, app.components);
     configs.push_back(std::move(config));
   }
   return configs;

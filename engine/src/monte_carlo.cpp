@@ -9,6 +9,8 @@
 #include <map>
 #include <stdexcept>
 
+#include "anchorbench/engine/executor.hpp"
+#include "anchorbench/engine/run_plan.hpp"
 #include "anchorbench/estimator/front_end.hpp"
 #include "anchorbench/schema/input_error.hpp"
 #include "anchorbench/sim/scenario.hpp"
@@ -136,47 +138,18 @@ std::vector<schema::Attempt> RunRealization(const schema::RowConfig& row, int ro
   return attempts;
 }
 
-std::vector<schema::Attempt> RunMonteCarlo(const schema::ExperimentConfig& config, const registry::Components& components,
-                                   const MonteCarloOptions& options) {
-  const std::vector<schema::RowConfig> rows = schema::RowsOf(config);
+void CheckExperiment(const schema::ExperimentConfig& config, const registry::Components& components) {
   CheckWork(config);
-  CheckRows(rows, components);
-  const int realizations = config.realizations;
-  const int tasks = static_cast<int>(rows.size()) * realizations;
-  std::vector<std::vector<schema::Attempt>> per_task(static_cast<std::size_t>(tasks));
-  std::vector<std::exception_ptr> errors(static_cast<std::size_t>(tasks));
-  int done = 0;
+  CheckRows(schema::RowsOf(config), components);
+}
 
-#pragma omp parallel num_threads(options.threads)
-  {
-    // One sample buffer per thread: megabytes allocated and freed per realization made glibc
-    // return and re-fault the pages every time (+45% run time on Table I).
-    std::vector<estimator::RangeSample> samples;
-#pragma omp for schedule(dynamic, 1)
-    for (int task = 0; task < tasks; ++task) {
-      const int row = task / realizations;
-      try {  // an exception must not leave the parallel region (std::terminate)
-        per_task[static_cast<std::size_t>(task)] = RunRealization(rows[static_cast<std::size_t>(row)], row, config.seed,
-                                                                  task % realizations, components, samples);
-      } catch (...) {
-        errors[static_cast<std::size_t>(task)] = std::current_exception();
-      }
-#pragma omp critical(anchorbench_progress)
-      {
-        ++done;
-        if (options.progress) options.progress(done, tasks);
-      }
-    }
-  }
-  for (const std::exception_ptr& error : errors) {
-    if (error) std::rethrow_exception(error);
-  }
-
-  std::vector<schema::Attempt> attempts;
-  for (auto& task_attempts : per_task) {
-    for (schema::Attempt& a : task_attempts) attempts.push_back(std::move(a));
-  }
-  return attempts;
+std::vector<schema::Attempt> RunMonteCarlo(const schema::ExperimentConfig& config, const registry::Components& components,
+                                           const MonteCarloOptions& options) {
+  CheckExperiment(config, components);
+  const Plan plan({config});
+  LocalExecutor executor(components);
+  std::map<int, ChunkResult> chunks = RunPlan(plan, executor, {options.threads, nullptr, options.progress, {}});
+  return std::move(Join(plan, chunks).front().attempts);
 }
 
 }  // namespace anchorbench::engine

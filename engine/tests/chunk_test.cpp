@@ -23,11 +23,27 @@ std::string AttemptsCsv(const std::vector<schema::Attempt>& attempts, const std:
   return csv.str();
 }
 
-// Chunk by chunk on any thread count, the run is RunMonteCarlo's whole run, byte for byte.
+// The units one after another on this thread, without a plan or an executor.
+std::vector<schema::Attempt> UnitByUnit(const schema::ExperimentConfig& config) {
+  const std::vector<schema::RowConfig> rows = schema::RowsOf(config);
+  std::vector<schema::Attempt> attempts;
+  std::vector<estimator::RangeSample> samples;
+  for (std::size_t row = 0; row < rows.size(); ++row) {
+    for (int realization = 0; realization < config.realizations; ++realization) {
+      for (schema::Attempt& a : RunRealization(rows[row], static_cast<int>(row), config.seed, realization,
+                                               AllComponents(), samples)) {
+        attempts.push_back(std::move(a));
+      }
+    }
+  }
+  return attempts;
+}
+
+// Chunk by chunk on any thread count, the run is the units' run one after another, byte for byte.
 TEST(RunPlan, IsTheWholeRunForAnyThreadCount) {
   const schema::ExperimentConfig config = SmallTable();
   const std::vector<schema::RowConfig> rows = schema::RowsOf(config);
-  const std::string whole = AttemptsCsv(engine::RunMonteCarlo(config, AllComponents(), {1, nullptr}), rows);
+  const std::string whole = AttemptsCsv(UnitByUnit(config), rows);
   const Plan plan({config});
   LocalExecutor executor(AllComponents());
   for (int threads : {1, 2, 3}) {

@@ -25,8 +25,8 @@ void CheckWork(const schema::ExperimentConfig& config);
 
 struct MonteCarloOptions {
   int threads = 1;
-  // Called from one thread at a time with (tasks done, tasks total); tasks are (row, realization).
-  std::function<void(int, int)> progress;
+  // Called from one thread at a time with (units done, units total); a unit is a (row, realization).
+  std::function<void(long long, long long)> progress;
 };
 
 // Builds every row's initializers once, on a stand-in anchor, so that what a realization would
@@ -34,13 +34,16 @@ struct MonteCarloOptions {
 // Throws schema::InputError naming the row.
 void CheckRows(const std::vector<schema::RowConfig>& rows, const registry::Components& components);
 
-// Runs every row's realizations (parallel over (row, realization) with OpenMP; realization k of
-// every row uses the random streams keyed (seed, k), so rows differ only by their parameters).
-// Parts are built from `components` (the caller's registries). The result is ordered by row,
-// realization, anchor, method: identical for any thread count. An error in any task ends the run
-// with that error (the first task's, in task order), thrown after the parallel region.
+// Both, on the experiment's rows: what every command checks before it plans any work.
+void CheckExperiment(const schema::ExperimentConfig& config, const registry::Components& components);
+
+// Runs every row's realizations: the experiment checked (CheckExperiment), planned (plan.hpp) and
+// computed by this process's threads (LocalExecutor), as `run` does without a store. Realization
+// k of every row uses the random streams keyed (seed, k), so rows differ only by their
+// parameters. The result is ordered by row, realization, anchor, method: identical for any thread
+// count. An error in any unit ends the run with that error.
 std::vector<schema::Attempt> RunMonteCarlo(const schema::ExperimentConfig& config, const registry::Components& components,
-                                   const MonteCarloOptions& options);
+                                           const MonteCarloOptions& options);
 
 // The attempts of one realization of one row (what each task computes): the simulated samples
 // go through one front end per trigger (each trigger's pass is timed on its own). `samples` is

@@ -32,7 +32,7 @@ constexpr int kMaxChunkUnits = 64;
 
 class Plan {
  public:
-  // `experiments` must have passed engine::CheckWork and CheckRows.
+  // `experiments` must have passed CheckExperiment (monte_carlo.hpp).
   explicit Plan(std::vector<schema::ExperimentConfig> experiments);
 
   const std::vector<schema::ExperimentConfig>& experiments() const { return experiments_; }
