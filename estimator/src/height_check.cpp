@@ -30,7 +30,10 @@ double TrimmedSquares(std::vector<double> residuals, double trim_fraction) {
   return sum;
 }
 
-// d_k - |p_k - p_A| - gamma for every sample.
+// d_k - |p_k - p_A| - gamma for every sample: the negative of Eq. (11)'s RangeResidual
+// (range_residual.hpp), as measured minus predicted. Written as the negation, (|p_k - p_A| + gamma)
+// - d_k, its rounding moves a borderline mirror decision and changes committed tables (flat_path,
+// cone_approach), so it stays in this form until results may move.
 std::vector<double> Residuals(std::span<const Eigen::Vector3d> p, std::span<const double> d, const Eigen::Vector3d& p_anchor,
                               double bias_m) {
   std::vector<double> r(p.size());

@@ -104,22 +104,26 @@ void WriteAgainstThePaper(std::ostream& out, const std::vector<MethodSummary>& s
 
 }  // namespace
 
+std::string AttemptLine(const schema::Attempt& a, const std::vector<schema::RowConfig>& rows) {
+  const schema::AttemptEvaluation none;
+  const schema::AttemptEvaluation& e = a.evaluation ? *a.evaluation : none;
+  std::ostringstream out;
+  out << rows[static_cast<std::size_t>(a.row)].name << ',' << a.realization << ',' << a.anchor_id << ','
+      << a.method << ',' << (a.initialized ? 1 : 0) << ',' << FormatOptional(a.t_init_s) << ',' << a.n_used << ','
+      << FormatNumber(a.pdop_closest_point) << ','
+      << (a.evaluation ? FormatNumber(e.pdop_true) : "") << ',' << FormatOptional(a.crlb_m) << ','
+      << FormatOptional(e.error_m) << ',' << FormatOptional(Of(e.error_xyz_m, 0)) << ','
+      << FormatOptional(Of(e.error_xyz_m, 1)) << ',' << FormatOptional(Of(e.error_xyz_m, 2)) << ','
+      << FormatOptional(e.bias_error_m) << ',' << FormatOptional(a.solve ? std::optional(a.solve->alpha) : std::nullopt)
+      << ',' << a.status << ',' << FormatOptional(e.bias_aware_dop) << ',' << FormatOptional(e.nees_position) << ','
+      << FormatOptional(e.nees) << ',' << FormatOptional(e.bias_aware_hdop) << ','
+      << FormatOptional(e.bias_aware_vdop);
+  return out.str();
+}
+
 void WriteAttempts(std::ostream& out, const std::vector<schema::Attempt>& attempts, const std::vector<schema::RowConfig>& rows) {
   out << kAttemptsColumns << '\n';
-  const schema::AttemptEvaluation none;
-  for (const schema::Attempt& a : attempts) {
-    const schema::AttemptEvaluation& e = a.evaluation ? *a.evaluation : none;
-    out << rows[static_cast<std::size_t>(a.row)].name << ',' << a.realization << ',' << a.anchor_id << ','
-        << a.method << ',' << (a.initialized ? 1 : 0) << ',' << FormatOptional(a.t_init_s) << ',' << a.n_used << ','
-        << FormatNumber(a.pdop_closest_point) << ','
-        << (a.evaluation ? FormatNumber(e.pdop_true) : "") << ',' << FormatOptional(a.crlb_m) << ','
-        << FormatOptional(e.error_m) << ',' << FormatOptional(Of(e.error_xyz_m, 0)) << ','
-        << FormatOptional(Of(e.error_xyz_m, 1)) << ',' << FormatOptional(Of(e.error_xyz_m, 2)) << ','
-        << FormatOptional(e.bias_error_m) << ',' << FormatOptional(a.solve ? std::optional(a.solve->alpha) : std::nullopt)
-        << ',' << a.status << ',' << FormatOptional(e.bias_aware_dop) << ',' << FormatOptional(e.nees_position) << ','
-        << FormatOptional(e.nees) << ',' << FormatOptional(e.bias_aware_hdop) << ','
-        << FormatOptional(e.bias_aware_vdop) << '\n';
-  }
+  for (const schema::Attempt& a : attempts) out << AttemptLine(a, rows) << '\n';
 }
 
 void WriteAttemptLines(std::ostream& out, const std::vector<std::string>& lines) {

@@ -18,6 +18,8 @@ constexpr const char* kAttemptsColumns =
     "bias_err,alpha,status,bias_aware_dop,nees_pos,nees,bias_aware_hdop,bias_aware_vdop";
 void WriteAttempts(std::ostream& out, const std::vector<schema::Attempt>& attempts,
                    const std::vector<schema::RowConfig>& rows);
+// One attempt's line of attempts.csv, without its line break.
+std::string AttemptLine(const schema::Attempt& attempt, const std::vector<schema::RowConfig>& rows);
 // The same file from lines written before (engine::ChunkResult's): the header, then the lines.
 void WriteAttemptLines(std::ostream& out, const std::vector<std::string>& lines);
 
