@@ -127,7 +127,7 @@ double MirrorEvidence(std::span<const Eigen::Vector3d> p_world_tag, std::span<co
 
 SolveResult HeightCheckedSolver::Solve(std::span<const Eigen::Vector3d> p_world_tag, std::span<const double> range_m) const {
   using Side = HeightCheckOptions::Side;
-  SolveResult result = inner_->Solve(p_world_tag, range_m);
+  SolveResult result = inner().Solve(p_world_tag, range_m);
   if (!Succeeded(result.status)) return result;
   Mirror mirror = MirrorOf(p_world_tag, range_m, result, options_.trim_fraction);
   if (mirror.exists && options_.height_prior) {

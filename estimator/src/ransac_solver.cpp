@@ -213,7 +213,7 @@ Hypothesis BestHypothesis(const RansacOptions& options, std::span<const Eigen::V
 }  // namespace
 
 SolveResult RansacSolver::Solve(std::span<const Eigen::Vector3d> p, std::span<const double> d) const {
-  if (d.size() <= static_cast<std::size_t>(options_.subset_size)) return inner_->Solve(p, d);  // nothing to leave out
+  if (d.size() <= static_cast<std::size_t>(options_.subset_size)) return inner().Solve(p, d);  // nothing to leave out
   return options_.scheme == RansacScheme::kMinimal ? SolveMinimal(p, d) : SolveFullSolve(p, d);
 }
 
@@ -231,7 +231,7 @@ SolveResult RansacSolver::SolveMinimal(std::span<const Eigen::Vector3d> p, std::
     result.status = SolveStatus::kTooFewSamples;
     return result;
   }
-  result = inner_->Solve(consensus_p, consensus_d);
+  result = inner().Solve(consensus_p, consensus_d);
   result.iterations += best.draws;
   return result;
 }
@@ -245,7 +245,7 @@ SolveResult RansacSolver::SolveFullSolve(std::span<const Eigen::Vector3d> p, std
   const int iterations = options_.Iterations();
   for (int it = 0; it < iterations; ++it) {
     drawer.Draw(p, d);
-    const SolveResult candidate = inner_->Solve(drawer.p(), drawer.d());
+    const SolveResult candidate = inner().Solve(drawer.p(), drawer.d());
     if (!Succeeded(candidate.status)) continue;
     const std::size_t inliers = scorer.Consensus(ThetaOf(candidate));
     if (inliers > best_inliers) {
@@ -261,7 +261,7 @@ SolveResult RansacSolver::SolveFullSolve(std::span<const Eigen::Vector3d> p, std
   std::vector<double> inlier_d;
   scorer.Consensus(ThetaOf(best));
   scorer.Gather(p, d, inlier_p, inlier_d);
-  SolveResult result = inner_->Solve(inlier_p, inlier_d);
+  SolveResult result = inner().Solve(inlier_p, inlier_d);
   result.iterations += iterations;
   return result;
 }

@@ -43,12 +43,12 @@ bool ScaleOptions::IsValid(std::string* why) const {
 }
 
 SolveResult ScaledSolver::Solve(std::span<const Eigen::Vector3d> p_world_tag, std::span<const double> range_m) const {
-  if (!options_.estimate) return inner_->Solve(p_world_tag, range_m);
+  if (!options_.estimate) return inner().Solve(p_world_tag, range_m);
   std::vector<double> scaled(range_m.size());
-  const AtScale middle = SolveAt(*inner_, p_world_tag, range_m, 0.0, scaled);
+  const AtScale middle = SolveAt(inner(), p_world_tag, range_m, 0.0, scaled);
   if (!Succeeded(middle.solve.status) || range_m.size() <= 5) return middle.solve;
-  const AtScale low = SolveAt(*inner_, p_world_tag, range_m, -kStep, scaled);
-  const AtScale high = SolveAt(*inner_, p_world_tag, range_m, kStep, scaled);
+  const AtScale low = SolveAt(inner(), p_world_tag, range_m, -kStep, scaled);
+  const AtScale high = SolveAt(inner(), p_world_tag, range_m, kStep, scaled);
   if (!Succeeded(low.solve.status) || !Succeeded(high.solve.status)) return middle.solve;
   // The parabola C(s) = a s^2 + b s + c through the three.
   const double a = (high.cost + low.cost - 2.0 * middle.cost) / (2.0 * kStep * kStep);
@@ -58,7 +58,7 @@ SolveResult ScaledSolver::Solve(std::span<const Eigen::Vector3d> p_world_tag, st
   const double vertex = -b / (2.0 * a);
   const double sigma = std::sqrt(variance / a);
   if (!(sigma <= options_.max_sigma) || !(std::abs(vertex) <= options_.max_scale)) return middle.solve;
-  AtScale best = SolveAt(*inner_, p_world_tag, range_m, vertex, scaled);
+  AtScale best = SolveAt(inner(), p_world_tag, range_m, vertex, scaled);
   if (!Succeeded(best.solve.status)) return middle.solve;
   // The estimate's dependence on s, from the two side solves, carries sigma_s into its covariance.
   Eigen::Vector4d slope;

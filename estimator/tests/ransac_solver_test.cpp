@@ -50,13 +50,13 @@ double Error(const SolveResult& result) { return (result.p_world_anchor - kAncho
 TEST(Ransac, MinimalSchemeFindsTheAnchorThroughAThirdOfOutliers) {
   const Samples data = WithOutliers(3, 1);
   const auto inner = PlainLeastSquares();
-  const SolveResult minimal = RansacSolver(RansacOptions{}, inner, 5).Solve(data.p, data.d);
+  const SolveResult minimal = RansacSolver(inner, RansacOptions{}, 5).Solve(data.p, data.d);
   ASSERT_TRUE(Succeeded(minimal.status));
   EXPECT_LT(Error(minimal), 0.05);
   EXPECT_GT(Error(inner->Solve(data.p, data.d)), 4.0 * Error(minimal));
   // w = 2/3 asks for log(0.01) / log(1 - (2/3)^6) = 51 draws: the floor's, plus the solve's iterations.
   EXPECT_LT(minimal.iterations, RansacOptions{}.min_subsets + 50);
-  const SolveResult full = RansacSolver(TableII(), inner, 5).Solve(data.p, data.d);
+  const SolveResult full = RansacSolver(inner, TableII(), 5).Solve(data.p, data.d);
   EXPECT_GT(Error(full), 1.0);
   EXPECT_GT(full.iterations, 1666);
 }
@@ -65,8 +65,8 @@ TEST(Ransac, MinimalSchemeFindsTheAnchorThroughAThirdOfOutliers) {
 TEST(Ransac, BothSchemesFindTheAnchorAtTenPercent) {
   const Samples data = WithOutliers(10, 1);
   const auto inner = PlainLeastSquares();
-  EXPECT_LT(Error(RansacSolver(RansacOptions{}, inner, 5).Solve(data.p, data.d)), 0.05);
-  EXPECT_LT(Error(RansacSolver(TableII(), inner, 5).Solve(data.p, data.d)), 0.05);
+  EXPECT_LT(Error(RansacSolver(inner, RansacOptions{}, 5).Solve(data.p, data.d)), 0.05);
+  EXPECT_LT(Error(RansacSolver(inner, TableII(), 5).Solve(data.p, data.d)), 0.05);
 }
 
 // The count follows the data: clean ranges stop the draws at the floor; with half of them outliers
@@ -74,7 +74,7 @@ TEST(Ransac, BothSchemesFindTheAnchorAtTenPercent) {
 // most the true one), and not the cap.
 TEST(Ransac, DrawsFollowTheObservedInlierShare) {
   const auto inner = std::make_shared<DoubleDifferenceLsSolver>();  // one iteration: iterations - 1 = draws
-  const RansacSolver ransac(RansacOptions{}, inner, 3);
+  const RansacSolver ransac(inner, RansacOptions{}, 3);
   const Samples clean = WithOutliers(0, 2), half = WithOutliers(2, 2);
   EXPECT_EQ(ransac.Solve(clean.p, clean.d).iterations - 1, RansacOptions{}.min_subsets);
   const int draws = ransac.Solve(half.p, half.d).iterations - 1;
@@ -86,8 +86,8 @@ TEST(Ransac, DrawsFollowTheObservedInlierShare) {
 TEST(Ransac, RepeatsExactlyForOneSeed) {
   const Samples data = WithOutliers(4, 3);
   const auto inner = PlainLeastSquares();
-  const SolveResult a = RansacSolver(RansacOptions{}, inner, 9).Solve(data.p, data.d);
-  const SolveResult b = RansacSolver(RansacOptions{}, inner, 9).Solve(data.p, data.d);
+  const SolveResult a = RansacSolver(inner, RansacOptions{}, 9).Solve(data.p, data.d);
+  const SolveResult b = RansacSolver(inner, RansacOptions{}, 9).Solve(data.p, data.d);
   EXPECT_EQ(a.p_world_anchor, b.p_world_anchor);
   EXPECT_EQ(a.bias_m, b.bias_m);
   EXPECT_EQ(a.iterations, b.iterations);
@@ -100,11 +100,11 @@ TEST(Ransac, SmallOrHopelessInputsSayWhatHappened) {
   const auto inner = PlainLeastSquares();
   const std::span<const Eigen::Vector3d> few_p(data.p.data(), 6);
   const std::span<const double> few_d(data.d.data(), 6);
-  EXPECT_EQ(RansacSolver(RansacOptions{}, inner, 1).Solve(few_p, few_d).p_world_anchor,
+  EXPECT_EQ(RansacSolver(inner, RansacOptions{}, 1).Solve(few_p, few_d).p_world_anchor,
             inner->Solve(few_p, few_d).p_world_anchor);
   RansacOptions tight;
   tight.inlier_threshold_m = 1e-9;  // no sample is within a nanometre of any hypothesis
-  const SolveResult none = RansacSolver(tight, inner, 1).Solve(data.p, data.d);
+  const SolveResult none = RansacSolver(inner, tight, 1).Solve(data.p, data.d);
   EXPECT_FALSE(Succeeded(none.status));
 }
 

@@ -93,7 +93,7 @@ void BM_Ransac(benchmark::State& state, est::RansacScheme scheme) {
     options.subset_size = 60;
   }
   std::string why;
-  const est::RansacSolver ransac(options, Registered("lm_adaptive", &why), 1);
+  const est::RansacSolver ransac(Registered("lm_adaptive", &why), options, 1);
   Measure(state, ransac);
 }
 

@@ -35,11 +35,11 @@ std::vector<std::string> SolverNames() {
 }
 
 std::unique_ptr<Solver> Make(const std::string& name) {
-  if (name == kRansacAroundLmL2) return std::make_unique<RansacSolver>(RansacOptions{}, Make("lm_l2"), 42);
+  if (name == kRansacAroundLmL2) return std::make_unique<RansacSolver>(Make("lm_l2"), RansacOptions{}, 42);
   if (name == kFullSolveRansacAroundLmL2) {
     RansacOptions options;
     options.scheme = RansacScheme::kFullSolve;
-    return std::make_unique<RansacSolver>(options, Make("lm_l2"), 42);
+    return std::make_unique<RansacSolver>(Make("lm_l2"), options, 42);
   }
   AnchorSolverOptions options;
   options.nls.kernel_scale_m = 0.1;

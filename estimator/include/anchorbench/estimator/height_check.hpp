@@ -79,14 +79,13 @@ double MirrorEvidence(std::span<const Eigen::Vector3d> p_world_tag, std::span<co
 // A solver whose successful estimates must beat their mirror: otherwise the status is
 // kHeightUnobservable (not a success: an online initializer retries with more data, the fixed
 // window reports it).
-class HeightCheckedSolver : public Solver {
+class HeightCheckedSolver : public SolverDecorator {
  public:
   HeightCheckedSolver(std::shared_ptr<const Solver> inner, const HeightCheckOptions& options)
-      : inner_(std::move(inner)), options_(options) {}
+      : SolverDecorator(std::move(inner)), options_(options) {}
   SolveResult Solve(std::span<const Eigen::Vector3d> p_world_tag, std::span<const double> range_m) const override;
 
  private:
-  std::shared_ptr<const Solver> inner_;
   HeightCheckOptions options_;
 };
 

@@ -58,10 +58,10 @@ int AdaptiveDraws(double inlier_share, int subset_size, double success_probabili
 // inlier_threshold_m over all samples) is solved by `inner` once more. Subsets come from
 // std::mt19937_64 (a sequence the C++ standard fixes) seeded per solver, with our own index
 // mapping, so results repeat anywhere. Nothing is allocated per draw.
-class RansacSolver : public Solver {
+class RansacSolver : public SolverDecorator {
  public:
-  RansacSolver(const RansacOptions& options, std::shared_ptr<const Solver> inner, std::uint64_t seed)
-      : options_(options), inner_(std::move(inner)), seed_(seed) {}
+  RansacSolver(std::shared_ptr<const Solver> inner, const RansacOptions& options, std::uint64_t seed)
+      : SolverDecorator(std::move(inner)), options_(options), seed_(seed) {}
 
   SolveResult Solve(std::span<const Eigen::Vector3d> p_world_tag, std::span<const double> range_m) const override;
 
@@ -70,7 +70,6 @@ class RansacSolver : public Solver {
   SolveResult SolveFullSolve(std::span<const Eigen::Vector3d> p_world_tag, std::span<const double> range_m) const;
 
   RansacOptions options_;
-  std::shared_ptr<const Solver> inner_;
   std::uint64_t seed_;
 };
 
@@ -82,7 +81,7 @@ class RansacFilter : public OutlierFilter {
 
   bool Accept(const RangeSample&) override { return true; }
   std::shared_ptr<const Solver> AtSolve(std::shared_ptr<const Solver> solver) const override {
-    return std::make_shared<RansacSolver>(options_, std::move(solver), seed_);
+    return std::make_shared<RansacSolver>(std::move(solver), options_, seed_);
   }
 
  private:

@@ -26,14 +26,13 @@ struct ScaleOptions {
 // is beyond max_scale, or the parabola opens downwards, the 4-unknown solve stands (s = 0,
 // range_scale_observable = false). With s, the covariance gains sigma_s^2 (d theta/ds)(...)^T.
 // Cost: four solves of the inner solver.
-class ScaledSolver : public Solver {
+class ScaledSolver : public SolverDecorator {
  public:
   ScaledSolver(std::shared_ptr<const Solver> inner, const ScaleOptions& options)
-      : inner_(std::move(inner)), options_(options) {}
+      : SolverDecorator(std::move(inner)), options_(options) {}
   SolveResult Solve(std::span<const Eigen::Vector3d> p_world_tag, std::span<const double> range_m) const override;
 
  private:
-  std::shared_ptr<const Solver> inner_;
   ScaleOptions options_;
 };
 

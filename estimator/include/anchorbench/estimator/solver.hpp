@@ -1,5 +1,6 @@
 #pragma once
 
+#include <memory>
 #include <span>
 
 #include <Eigen/Core>
@@ -21,6 +22,21 @@ class Solver {
  public:
   virtual ~Solver() = default;
   virtual SolveResult Solve(std::span<const Eigen::Vector3d> p_world_tag, std::span<const double> range_m) const = 0;
+};
+
+// A solver around another one, which it calls (once or many times) and whose result it checks or
+// extends: ScaledSolver (the range scale), RansacSolver (consensus subsets), HeightCheckedSolver
+// (the mirror). Each takes the inner solver first, then its options. An initializer stacks them
+// in one order, inner to outer: the named solver, ScaledSolver (registry::MakeInitializer, with
+// AnchorSolverOptions::scale), RansacSolver (the filter's solve stage, OutlierFilter::AtSolve),
+// HeightCheckedSolver (InitializerOptions::height_check).
+class SolverDecorator : public Solver {
+ protected:
+  explicit SolverDecorator(std::shared_ptr<const Solver> inner) : inner_(std::move(inner)) {}
+  const Solver& inner() const { return *inner_; }
+
+ private:
+  std::shared_ptr<const Solver> inner_;
 };
 
 }  // namespace anchorbench::estimator
