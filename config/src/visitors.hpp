@@ -32,14 +32,13 @@ void Tunnel(V& v, sim::TunnelOptions& o) {
 template <typename V>
 void Hall(V& v, sim::HallOptions& o) {
   Box(v, o);
-  v.Choice("anchor_walls", o.anchor_walls, sim::ParseHallWalls, [](auto w) { return sim::ToString(w); }, "all, front");
+  v.Choice("anchor_walls", o.anchor_walls, sim::kHallWallsNames);
   v.Check(o);
 }
 
 template <typename V>
 void Trajectory(V& v, sim::TrajectoryOptions& o) {
-  v.Choice("kind", o.kind, sim::ParseTrajectoryKind, [](auto k) { return sim::ToString(k); },
-           "random, straight, planar, short, approach");
+  v.Choice("kind", o.kind, sim::kTrajectoryKindNames);
   v.Number("fraction_straight", o.fraction_straight);
   v.Number("fraction_planar", o.fraction_planar);
   v.Number("fraction_short", o.fraction_short);
@@ -64,14 +63,12 @@ void Trajectory(V& v, sim::TrajectoryOptions& o) {
 template <typename V>
 void Ranging(V& v, sim::RangeModelOptions& o) {
   v.Number("sigma_range_m", o.sigma_range_m);
-  v.Choice("bias_distribution", o.bias_distribution, sim::ParseBiasDistribution,
-           [](auto d) { return sim::ToString(d); }, "uniform, normal");
+  v.Choice("bias_distribution", o.bias_distribution, sim::kBiasDistributionNames);
   v.Number("bias_a_m", o.bias_a_m);
   v.Number("bias_b_m", o.bias_b_m);
   v.Number("outlier_probability", o.outlier_probability);
   v.Number("outlier_burst_length", o.outlier_burst_length);
-  v.Choice("outlier_kind", o.outlier_kind, sim::ParseOutlierKind, [](auto k) { return sim::ToString(k); },
-           "positive, symmetric");
+  v.Choice("outlier_kind", o.outlier_kind, sim::kOutlierKindNames);
   v.Number("outlier_min_m", o.outlier_min_m);
   v.Number("outlier_max_m", o.outlier_max_m);
   v.Number("max_range_m", o.max_range_m);
@@ -86,8 +83,7 @@ void Ranging(V& v, sim::RangeModelOptions& o) {
 
 template <typename V>
 void Scenario(V& v, sim::ScenarioOptions& o) {
-  v.Choice("environment", o.environment, sim::ParseEnvironmentKind, [](auto k) { return sim::ToString(k); },
-           "tunnel, hall");
+  v.Choice("environment", o.environment, sim::kEnvironmentKindNames);
   v.VectorList("tag_offsets_m", o.tag_offsets_m);
   v.Section("tunnel", [&](auto& s) { Tunnel(s, o.tunnel); });
   v.Section("hall", [&](auto& s) { Hall(s, o.hall); });
@@ -103,8 +99,7 @@ void Filter(V& v, schema::FilterConfig& o, const registry::Components& component
   v.Integer("reseed_after_rejections", o.consistency.reseed_after_rejections);
   v.Check(o.consistency);
   v.Section("ransac", [&](auto& r) {
-    r.Choice("scheme", o.ransac.scheme, estimator::ParseRansacScheme, [](auto m) { return estimator::ToString(m); },
-             "minimal, full_solve");
+    r.Choice("scheme", o.ransac.scheme, estimator::kRansacSchemeNames);
     r.Number("success_probability", o.ransac.success_probability);
     r.Integer("subset_size", o.ransac.subset_size);
     r.Number("outlier_fraction", o.ransac.outlier_fraction);
@@ -122,8 +117,7 @@ void Trigger(V& v, schema::EstimatorConfig& o) {
   v.Integer("min_samples", o.initializer.min_samples);
   v.Number("retry_growth", o.initializer.retry_growth);
   v.Integer("max_buffered_samples", o.initializer.max_buffered_samples);
-  v.Choice("at_cap", o.initializer.at_cap, estimator::ParseBufferPolicy, [](auto p) { return estimator::ToString(p); },
-           "thin, keep_first");
+  v.Choice("at_cap", o.initializer.at_cap, estimator::kBufferPolicyNames);
   v.Integer("sample_count", o.trigger.sample_count);
   v.Number("timeout_s", o.trigger.timeout_s);
   v.Integer("evaluate_every", o.trigger.evaluate_every);
@@ -138,10 +132,8 @@ void Trigger(V& v, schema::EstimatorConfig& o) {
 
 template <typename V>
 void Ls(V& v, estimator::LsOptions& o) {
-  v.Choice("method", o.method, estimator::ParseLsMethod, [](auto m) { return estimator::ToString(m); },
-           "ordinary, total");
-  v.Choice("pivot", o.pivot, estimator::ParseLsPivot, [](auto p) { return estimator::ToString(p); },
-           "shortest_range, minimum_variance");
+  v.Choice("method", o.method, estimator::kLsMethodNames);
+  v.Choice("pivot", o.pivot, estimator::kLsPivotNames);
   v.Number("sigma_range_m", o.sigma_range_m);
   v.Number("sigma_position_m", o.sigma_position_m);
   v.Check(o);
@@ -149,8 +141,7 @@ void Ls(V& v, estimator::LsOptions& o) {
 
 template <typename V>
 void Nls(V& v, estimator::NlsOptions& o) {
-  v.Choice("kernel", o.kernel, estimator::ParseKernelMode, [](auto k) { return estimator::ToString(k); },
-           "adaptive, l2, fixed");
+  v.Choice("kernel", o.kernel, estimator::kKernelModeNames);
   v.Number("fixed_alpha", o.fixed_alpha);
   v.Number("alpha_min", o.alpha_min);
   v.Number("kernel_scale_m", o.kernel_scale_m);
@@ -188,8 +179,7 @@ void Estimator(V& v, schema::EstimatorConfig& o, const registry::Components& com
     s.Number("min_evidence", o.initializer.height_check.min_evidence);
     s.Number("min_separation", o.initializer.height_check.min_separation);
     s.Number("trim_fraction", o.initializer.height_check.trim_fraction);
-    s.Choice("side", o.initializer.height_check.side, estimator::ParseSide,
-             [](auto side) { return estimator::ToString(side); }, "any, above, below");
+    s.Choice("side", o.initializer.height_check.side, estimator::kSideNames);
     s.Check(o.initializer.height_check);
   });
   v.Section("certificate", [&](auto& s) {

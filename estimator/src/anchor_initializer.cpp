@@ -6,15 +6,6 @@
 
 namespace anchorbench::estimator {
 
-std::string_view ToString(BufferPolicy policy) { return policy == BufferPolicy::kThin ? "thin" : "keep_first"; }
-
-bool ParseBufferPolicy(std::string_view name, BufferPolicy* policy) {
-  if (name == "thin") *policy = BufferPolicy::kThin;
-  else if (name == "keep_first") *policy = BufferPolicy::kKeepFirst;
-  else return false;
-  return true;
-}
-
 bool InitializerOptions::IsValid(std::string* why) const {
   auto fail = [why](std::string message) {
     if (why) *why = std::move(message);

@@ -54,25 +54,6 @@ bool HeightCheckOptions::IsValid(std::string* why) const {
   return !height_prior || height_prior->IsValid(why);
 }
 
-std::string_view ToString(HeightCheckOptions::Side side) {
-  switch (side) {
-    case HeightCheckOptions::Side::kAny: return "any";
-    case HeightCheckOptions::Side::kAbove: return "above";
-    case HeightCheckOptions::Side::kBelow: return "below";
-  }
-  return "any";
-}
-
-bool ParseSide(std::string_view name, HeightCheckOptions::Side* side) {
-  for (auto candidate : {HeightCheckOptions::Side::kAny, HeightCheckOptions::Side::kAbove, HeightCheckOptions::Side::kBelow}) {
-    if (name == ToString(candidate)) {
-      *side = candidate;
-      return true;
-    }
-  }
-  return false;
-}
-
 Mirror MirrorOf(std::span<const Eigen::Vector3d> p_world_tag, std::span<const double> range_m,
                 const SolveResult& estimate, double trim_fraction) {
   Mirror mirror;

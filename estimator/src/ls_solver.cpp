@@ -64,26 +64,6 @@ class RowBuilder {
 
 }  // namespace
 
-std::string_view ToString(LsPivot pivot) {
-  return pivot == LsPivot::kShortestRange ? "shortest_range" : "minimum_variance";
-}
-
-std::string_view ToString(LsMethod method) { return method == LsMethod::kOrdinary ? "ordinary" : "total"; }
-
-bool ParseLsMethod(std::string_view name, LsMethod* method) {
-  if (name == "ordinary") *method = LsMethod::kOrdinary;
-  else if (name == "total") *method = LsMethod::kTotal;
-  else return false;
-  return true;
-}
-
-bool ParseLsPivot(std::string_view name, LsPivot* pivot) {
-  if (name == "shortest_range") *pivot = LsPivot::kShortestRange;
-  else if (name == "minimum_variance") *pivot = LsPivot::kMinimumVariance;
-  else return false;
-  return true;
-}
-
 bool LsOptions::IsValid(std::string* why) const {
   if (!(sigma_range_m > 0.0) || !std::isfinite(sigma_range_m)) {
     if (why) *why = "sigma_range_m must be > 0";

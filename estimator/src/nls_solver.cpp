@@ -106,25 +106,6 @@ std::optional<Eigen::Matrix4d> RobustCovariance(std::span<const Eigen::Vector3d>
 
 }  // namespace
 
-std::string_view ToString(KernelMode kernel) {
-  switch (kernel) {
-    case KernelMode::kL2: return "l2";
-    case KernelMode::kAdaptive: return "adaptive";
-    case KernelMode::kFixed: return "fixed";
-  }
-  return "unknown";
-}
-
-bool ParseKernelMode(std::string_view name, KernelMode* kernel) {
-  for (KernelMode k : {KernelMode::kL2, KernelMode::kAdaptive, KernelMode::kFixed}) {
-    if (name == ToString(k)) {
-      *kernel = k;
-      return true;
-    }
-  }
-  return false;
-}
-
 bool NlsOptions::IsValid(std::string* why) const {
   auto fail = [why](const char* message) {
     if (why) *why = message;

@@ -13,15 +13,6 @@
 
 namespace anchorbench::estimator {
 
-std::string_view ToString(RansacScheme scheme) { return scheme == RansacScheme::kMinimal ? "minimal" : "full_solve"; }
-
-bool ParseRansacScheme(std::string_view name, RansacScheme* scheme) {
-  if (name == "minimal") *scheme = RansacScheme::kMinimal;
-  else if (name == "full_solve") *scheme = RansacScheme::kFullSolve;
-  else return false;
-  return true;
-}
-
 double RansacOptions::RequiredIterations() const {
   const double clean_subset = std::pow(1.0 - outlier_fraction, subset_size);
   if (clean_subset >= 1.0) return 1.0;

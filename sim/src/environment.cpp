@@ -55,15 +55,6 @@ std::vector<Eigen::Vector3d> TunnelAnchors(const TunnelOptions& o, RandomStream&
   return anchors;
 }
 
-std::string_view ToString(HallWalls walls) { return walls == HallWalls::kAll ? "all" : "front"; }
-
-bool ParseHallWalls(std::string_view name, HallWalls* walls) {
-  if (name == "all") *walls = HallWalls::kAll;
-  else if (name == "front") *walls = HallWalls::kFront;
-  else return false;
-  return true;
-}
-
 std::vector<Eigen::Vector3d> HallAnchors(const HallOptions& o, RandomStream& layout) {
   std::vector<Eigen::Vector3d> anchors;
   anchors.reserve(o.num_anchors);

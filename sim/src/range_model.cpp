@@ -5,23 +5,6 @@
 
 namespace anchorbench::sim {
 
-std::string_view ToString(BiasDistribution d) { return d == BiasDistribution::kUniform ? "uniform" : "normal"; }
-std::string_view ToString(OutlierKind k) { return k == OutlierKind::kPositive ? "positive" : "symmetric"; }
-
-bool ParseBiasDistribution(std::string_view name, BiasDistribution* d) {
-  if (name == "uniform") *d = BiasDistribution::kUniform;
-  else if (name == "normal") *d = BiasDistribution::kNormal;
-  else return false;
-  return true;
-}
-
-bool ParseOutlierKind(std::string_view name, OutlierKind* k) {
-  if (name == "positive") *k = OutlierKind::kPositive;
-  else if (name == "symmetric") *k = OutlierKind::kSymmetric;
-  else return false;
-  return true;
-}
-
 bool RangeModelOptions::IsValid(std::string* why) const {
   auto fail = [why](std::string m) {
     if (why) *why = std::move(m);

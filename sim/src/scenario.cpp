@@ -210,15 +210,6 @@ std::vector<SimRange> DrawRanges(const RangeModelOptions& model, std::uint64_t s
 
 }  // namespace
 
-std::string_view ToString(EnvironmentKind kind) { return kind == EnvironmentKind::kTunnel ? "tunnel" : "hall"; }
-
-bool ParseEnvironmentKind(std::string_view name, EnvironmentKind* kind) {
-  if (name == "tunnel") *kind = EnvironmentKind::kTunnel;
-  else if (name == "hall") *kind = EnvironmentKind::kHall;
-  else return false;
-  return true;
-}
-
 bool ScenarioOptions::IsValid(std::string* why) const {
   if (tag_offsets_m.empty() || tag_offsets_m.size() > static_cast<std::size_t>(kMaxTags) ||
       !std::all_of(tag_offsets_m.begin(), tag_offsets_m.end(), [](const Eigen::Vector3d& p) { return p.allFinite(); })) {

@@ -52,28 +52,6 @@ double VerticalExcursion(const TrajectoryOptions& o, RandomStream& rng) {
 
 }  // namespace
 
-std::string_view ToString(TrajectoryKind kind) {
-  switch (kind) {
-    case TrajectoryKind::kRandom: return "random";
-    case TrajectoryKind::kStraight: return "straight";
-    case TrajectoryKind::kPlanar: return "planar";
-    case TrajectoryKind::kShort: return "short";
-    case TrajectoryKind::kApproach: return "approach";
-  }
-  return "unknown";
-}
-
-bool ParseTrajectoryKind(std::string_view name, TrajectoryKind* kind) {
-  for (TrajectoryKind k : {TrajectoryKind::kRandom, TrajectoryKind::kStraight, TrajectoryKind::kPlanar,
-                           TrajectoryKind::kShort, TrajectoryKind::kApproach}) {
-    if (name == ToString(k)) {
-      *kind = k;
-      return true;
-    }
-  }
-  return false;
-}
-
 bool TrajectoryOptions::IsValid(std::string* why) const {
   auto fail = [why](const char* m) {
     if (why) *why = m;

@@ -11,6 +11,8 @@
 #include <Eigen/Core>
 #include <yaml-cpp/yaml.h>
 
+#include "anchorbench/base/enum_names.hpp"
+
 namespace anchorbench::config {
 
 struct Bounds {
@@ -32,12 +34,12 @@ class YamlSection {
   // A whole number in [0, max], read from its text (a seed: every value round-trips exactly).
   void Unsigned(std::string_view key, std::uint64_t& value, std::uint64_t max);
   void Flag(std::string_view key, bool& value);
-  template <typename Enum, typename Parse, typename Name>
-  void Choice(std::string_view key, Enum& value, Parse parse, Name /*to_string*/, std::string_view choices) {
+  template <typename Enum, std::size_t N>
+  void Choice(std::string_view key, Enum& value, const base::EnumNames<Enum, N>& names) {
     if (!Has(key)) return;
     const YAML::Node n = Get(key);
-    if (!n.IsScalar() || !parse(n.Scalar(), &value)) {
-      Fail(key, "unknown value " + Describe(n) + " (choices: " + std::string(choices) + ")");
+    if (!n.IsScalar() || !names.Parse(n.Scalar(), &value)) {
+      Fail(key, "unknown value " + Describe(n) + " (choices: " + names.Choices() + ")");
     }
   }
   void Text(std::string_view key, std::string& value);
@@ -136,9 +138,9 @@ class YamlWriter {
     node_[std::string(key)] = std::to_string(value);  // as text: yaml-cpp would go through a signed type
   }
   void Flag(std::string_view key, bool& value) { node_[std::string(key)] = value; }
-  template <typename Enum, typename Parse, typename Name>
-  void Choice(std::string_view key, Enum& value, Parse, Name to_string, std::string_view) {
-    node_[std::string(key)] = std::string(to_string(value));
+  template <typename Enum, std::size_t N>
+  void Choice(std::string_view key, Enum& value, const base::EnumNames<Enum, N>& names) {
+    node_[std::string(key)] = std::string(names.Name(value));
   }
   void Text(std::string_view key, std::string& value) { node_[std::string(key)] = value; }
   void Label(std::string_view key, std::string& value) { Text(key, value); }

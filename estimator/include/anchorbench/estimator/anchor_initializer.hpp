@@ -9,6 +9,7 @@
 #include <string_view>
 #include <vector>
 
+#include "anchorbench/base/enum_names.hpp"
 #include "anchorbench/estimator/anchor_solver.hpp"
 #include "anchorbench/estimator/closest_point_pdop.hpp"
 #include "anchorbench/estimator/consistency_filter.hpp"
@@ -27,8 +28,10 @@ enum class BufferPolicy {
                // (then every 4th, ...): the buffer keeps spanning the whole run, at a coarser rate
   kKeepFirst,  // stop buffering: solves use the first max_buffered_samples accepted samples
 };
-std::string_view ToString(BufferPolicy policy);
-bool ParseBufferPolicy(std::string_view name, BufferPolicy* policy);
+inline constexpr base::EnumNames<BufferPolicy, 2> kBufferPolicyNames({
+    {BufferPolicy::kThin, "thin"}, {BufferPolicy::kKeepFirst, "keep_first"}});
+inline std::string_view ToString(BufferPolicy value) { return kBufferPolicyNames.Name(value); }
+inline bool ParseBufferPolicy(std::string_view name, BufferPolicy* value) { return kBufferPolicyNames.Parse(name, value); }
 
 struct InitializerOptions {
   int min_samples = 20;  // accepted samples needed before any trigger may fire (ours; the paper gives none)

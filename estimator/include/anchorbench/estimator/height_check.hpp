@@ -9,6 +9,7 @@
 
 #include <Eigen/Core>
 
+#include "anchorbench/base/enum_names.hpp"
 #include "anchorbench/estimator/height_prior.hpp"
 #include "anchorbench/estimator/solver.hpp"
 
@@ -46,8 +47,11 @@ struct HeightCheckOptions {
 
   bool IsValid(std::string* why) const;
 };
-std::string_view ToString(HeightCheckOptions::Side side);
-bool ParseSide(std::string_view name, HeightCheckOptions::Side* side);
+inline constexpr base::EnumNames<HeightCheckOptions::Side, 3> kSideNames({
+    {HeightCheckOptions::Side::kAny, "any"}, {HeightCheckOptions::Side::kAbove, "above"},
+    {HeightCheckOptions::Side::kBelow, "below"}});
+inline std::string_view ToString(HeightCheckOptions::Side value) { return kSideNames.Name(value); }
+inline bool ParseSide(std::string_view name, HeightCheckOptions::Side* value) { return kSideNames.Parse(name, value); }
 
 // An estimate's mirror through the plane of the tag positions.
 struct Mirror {

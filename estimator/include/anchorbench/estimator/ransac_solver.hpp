@@ -5,6 +5,7 @@
 #include <string>
 #include <string_view>
 
+#include "anchorbench/base/enum_names.hpp"
 #include "anchorbench/estimator/outlier_filter.hpp"
 #include "anchorbench/estimator/solver.hpp"
 
@@ -23,8 +24,10 @@ enum class RansacScheme {
   // assumed outlier share, each solved by the full solver and scored by its inlier count.
   kFullSolve,
 };
-std::string_view ToString(RansacScheme scheme);
-bool ParseRansacScheme(std::string_view name, RansacScheme* scheme);
+inline constexpr base::EnumNames<RansacScheme, 2> kRansacSchemeNames({
+    {RansacScheme::kMinimal, "minimal"}, {RansacScheme::kFullSolve, "full_solve"}});
+inline std::string_view ToString(RansacScheme value) { return kRansacSchemeNames.Name(value); }
+inline bool ParseRansacScheme(std::string_view name, RansacScheme* value) { return kRansacSchemeNames.Parse(name, value); }
 
 // RANSAC pre-filtering (the filter `ransac`). For kFullSolve, n = log(1 - p) / log(1 - (1 - e)^s)
 // subsets. The paper prints this formula without the log in the denominator (as printed it gives

@@ -4,6 +4,8 @@
 
 #include <Eigen/Core>
 
+#include "anchorbench/base/enum_names.hpp"
+
 namespace anchorbench::estimator {
 
 // How a solve ended. Numerical failure is a status, never an exception.
@@ -18,7 +20,12 @@ enum class SolveStatus {
   kBudgetSpent,         // the caller's work budget ran out first (NlsOptions::max_passes): no trusted estimate
 };
 
-std::string_view ToString(SolveStatus status);
+inline constexpr base::EnumNames<SolveStatus, 8> kSolveStatusNames({
+    {SolveStatus::kConverged, "converged"}, {SolveStatus::kMaxIterations, "max_iterations"},
+    {SolveStatus::kNoConvergence, "no_convergence"}, {SolveStatus::kTooFewSamples, "too_few_samples"},
+    {SolveStatus::kDegenerateGeometry, "degenerate_geometry"}, {SolveStatus::kNumericalFailure, "numerical_failure"},
+    {SolveStatus::kHeightUnobservable, "height_unobservable"}, {SolveStatus::kBudgetSpent, "budget_spent"}});
+inline std::string_view ToString(SolveStatus value) { return kSolveStatusNames.Name(value); }
 inline bool Succeeded(SolveStatus s) {
   return s == SolveStatus::kConverged || s == SolveStatus::kMaxIterations;
 }

@@ -6,6 +6,7 @@
 
 #include <Eigen/Core>
 
+#include "anchorbench/base/enum_names.hpp"
 #include "anchorbench/sim/random_stream.hpp"
 
 namespace anchorbench::sim {
@@ -31,8 +32,10 @@ enum class HallWalls {
   kAll,    // evenly spaced around the perimeter
   kFront,  // evenly spaced along the front wall (y = 0), e.g. in front of a machine hall
 };
-std::string_view ToString(HallWalls walls);
-bool ParseHallWalls(std::string_view name, HallWalls* walls);
+inline constexpr base::EnumNames<HallWalls, 2> kHallWallsNames({
+    {HallWalls::kAll, "all"}, {HallWalls::kFront, "front"}});
+inline std::string_view ToString(HallWalls value) { return kHallWallsNames.Name(value); }
+inline bool ParseHallWalls(std::string_view name, HallWalls* value) { return kHallWallsNames.Parse(name, value); }
 
 // Hall frame: a box [0, length] x [0, width] x [0, height]; anchors on its walls, heights
 // uniform in [min, max].

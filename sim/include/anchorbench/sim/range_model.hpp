@@ -3,6 +3,8 @@
 #include <string>
 #include <string_view>
 
+#include "anchorbench/base/enum_names.hpp"
+
 namespace anchorbench::sim {
 
 enum class BiasDistribution { kUniform, kNormal };
@@ -11,10 +13,14 @@ enum class OutlierKind {
   kSymmetric,  // spikes of either sign
 };
 
-std::string_view ToString(BiasDistribution d);
-std::string_view ToString(OutlierKind k);
-bool ParseBiasDistribution(std::string_view name, BiasDistribution* d);
-bool ParseOutlierKind(std::string_view name, OutlierKind* k);
+inline constexpr base::EnumNames<BiasDistribution, 2> kBiasDistributionNames({
+    {BiasDistribution::kUniform, "uniform"}, {BiasDistribution::kNormal, "normal"}});
+inline std::string_view ToString(BiasDistribution value) { return kBiasDistributionNames.Name(value); }
+inline constexpr base::EnumNames<OutlierKind, 2> kOutlierKindNames({
+    {OutlierKind::kPositive, "positive"}, {OutlierKind::kSymmetric, "symmetric"}});
+inline std::string_view ToString(OutlierKind value) { return kOutlierKindNames.Name(value); }
+inline bool ParseBiasDistribution(std::string_view name, BiasDistribution* value) { return kBiasDistributionNames.Parse(name, value); }
+inline bool ParseOutlierKind(std::string_view name, OutlierKind* value) { return kOutlierKindNames.Parse(name, value); }
 
 // Range model of Eq. (1): d = ||p_U - p_A|| + gamma_A + eta, eta ~ N(0, sigma_d^2), plus outliers,
 // and (ours, off by default) what Eq. (1) leaves out: d = (1 + s_A) ||p_U - p_A|| + gamma_A +

@@ -8,6 +8,7 @@
 
 #include <Eigen/Core>
 
+#include "anchorbench/base/enum_names.hpp"
 #include "anchorbench/sim/environment.hpp"
 #include "anchorbench/sim/range_model.hpp"
 #include "anchorbench/sim/trajectory.hpp"
@@ -15,8 +16,10 @@
 namespace anchorbench::sim {
 
 enum class EnvironmentKind { kTunnel, kHall };
-std::string_view ToString(EnvironmentKind kind);
-bool ParseEnvironmentKind(std::string_view name, EnvironmentKind* kind);
+inline constexpr base::EnumNames<EnvironmentKind, 2> kEnvironmentKindNames({
+    {EnvironmentKind::kTunnel, "tunnel"}, {EnvironmentKind::kHall, "hall"}});
+inline std::string_view ToString(EnvironmentKind value) { return kEnvironmentKindNames.Name(value); }
+inline bool ParseEnvironmentKind(std::string_view name, EnvironmentKind* value) { return kEnvironmentKindNames.Parse(name, value); }
 
 struct ScenarioOptions {
   // Random sub-streams are keyed (tag << 16 | anchor id) in 24 bits (RandomStream): with at most

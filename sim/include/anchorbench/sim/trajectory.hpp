@@ -6,6 +6,7 @@
 
 #include <Eigen/Core>
 
+#include "anchorbench/base/enum_names.hpp"
 #include "anchorbench/sim/environment.hpp"
 #include "anchorbench/sim/random_stream.hpp"
 
@@ -19,8 +20,11 @@ enum class TrajectoryKind {
   kApproach,  // hall only (ours): a hand-held approach at anchor 0 inside a narrow cone, then kRandom
 };
 
-std::string_view ToString(TrajectoryKind kind);
-bool ParseTrajectoryKind(std::string_view name, TrajectoryKind* kind);
+inline constexpr base::EnumNames<TrajectoryKind, 5> kTrajectoryKindNames({
+    {TrajectoryKind::kRandom, "random"}, {TrajectoryKind::kStraight, "straight"},
+    {TrajectoryKind::kPlanar, "planar"}, {TrajectoryKind::kShort, "short"}, {TrajectoryKind::kApproach, "approach"}});
+inline std::string_view ToString(TrajectoryKind value) { return kTrajectoryKindNames.Name(value); }
+inline bool ParseTrajectoryKind(std::string_view name, TrajectoryKind* value) { return kTrajectoryKindNames.Parse(name, value); }
 
 struct TrajectoryOptions {
   TrajectoryKind kind = TrajectoryKind::kRandom;
