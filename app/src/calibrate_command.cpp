@@ -2,9 +2,9 @@
 #include <iostream>
 #include <sstream>
 
-#include "anchorbench/calibrate/calibration_report.hpp"
-#include "anchorbench/calibrate/evaluation_log.hpp"
-#include "anchorbench/calibrate/fit.hpp"
+#include "anchorbench/engine/calibration_report.hpp"
+#include "anchorbench/engine/evaluation_log.hpp"
+#include "anchorbench/engine/fit.hpp"
 #include "anchorbench/config/config_yaml.hpp"
 #include "anchorbench/config/load_calibration.hpp"
 #include "anchorbench/config/load_config.hpp"
@@ -22,7 +22,7 @@ namespace anchorbench::app {
 namespace {
 
 namespace fs = std::filesystem;
-using calibrate::Fit;
+using engine::Fit;
 using schema::InputError;
 using report::PaperCell;
 
@@ -80,13 +80,13 @@ std::uint64_t Context(const schema::CalibrationSpec& spec, const schema::Experim
 }
 
 // The evaluation log, seeded with what --reuse and a killed run's running log already hold.
-calibrate::EvaluationLog OpenLog(const CalibrateArgs& args, const schema::CalibrationSpec& spec,
+engine::EvaluationLog OpenLog(const CalibrateArgs& args, const schema::CalibrationSpec& spec,
                                  const schema::ExperimentConfig& experiment, const std::vector<PaperCell>& targets,
                                  const std::vector<std::string>& row_names, const fs::path& running_log) {
   std::vector<std::string> keys, cell_names;
   for (const schema::FreeParameter& parameter : spec.parameters) keys.push_back(parameter.key);
-  for (const PaperCell& cell : targets) cell_names.push_back(calibrate::CellName(cell, row_names));
-  calibrate::EvaluationLog log(keys, cell_names, Context(spec, experiment));
+  for (const PaperCell& cell : targets) cell_names.push_back(engine::CellName(cell, row_names));
+  engine::EvaluationLog log(keys, cell_names, Context(spec, experiment));
   for (const fs::path& source : {fs::path(args.reuse), running_log}) {
     if (source.empty() || !fs::exists(source)) continue;
     int reused = 0;
@@ -105,7 +105,7 @@ calibrate::EvaluationLog OpenLog(const CalibrateArgs& args, const schema::Calibr
 
 // Our cells at the fit's seed and size, with Init and >1m (counts over all attempts) scaled up to
 // the experiment's size before they meet the paper's.
-calibrate::CellEvaluator FitEvaluator(const schema::CalibrationSpec& spec, int full_realizations, int threads,
+engine::CellEvaluator FitEvaluator(const schema::CalibrationSpec& spec, int full_realizations, int threads,
                                       const AppContext& app) {
   const double count_scale = static_cast<double>(full_realizations) / spec.realizations;
   return [&spec, count_scale, threads, &app](const std::vector<std::string>& overrides) {
@@ -121,9 +121,9 @@ calibrate::CellEvaluator FitEvaluator(const schema::CalibrationSpec& spec, int f
 }
 
 // The experiment as configured and as calibrated (`best`), full size, on the unseen seeds.
-std::vector<calibrate::Verification> Verify(const schema::CalibrationSpec& spec, const std::vector<std::string>& best,
+std::vector<engine::Verification> Verify(const schema::CalibrationSpec& spec, const std::vector<std::string>& best,
                                             int threads, Progress& progress, const AppContext& app) {
-  std::vector<calibrate::Verification> verification;
+  std::vector<engine::Verification> verification;
   for (std::uint64_t seed : spec.verify_seeds) {
     verification.push_back({seed, RunCells(spec, {}, seed, std::nullopt, true, threads, app),
                             RunCells(spec, best, seed, std::nullopt, true, threads, app)});
@@ -186,30 +186,30 @@ int CalibrateCommand(const CalibrateArgs& args, const AppContext& app) {
     throw schema::InputError(running_log.string() + ": is a folder (or not a regular file), not the evaluation log of a " +
                      "killed calibration; move it away");
   }
-  calibrate::EvaluationLog log = OpenLog(args, spec, experiment, targets, row_names, running_log);
+  engine::EvaluationLog log = OpenLog(args, spec, experiment, targets, row_names, running_log);
 
   // The search, then the verification of its best point.
   Progress progress("calibrate " + name, args.quiet, "evaluations");
   Fit fit(spec, targets, hand, FitEvaluator(spec, experiment.realizations, setup.threads, app), &log,
           [&](int done, int total) { progress.Update(done, total); });
-  const calibrate::FitResult result = fit.Run();
+  const engine::FitResult result = fit.Run();
   progress.Finish(static_cast<int>(log.evaluations().size()));
   std::vector<std::string> best;
   for (std::size_t p = 0; p < spec.parameters.size(); ++p) {
     best.push_back(spec.parameters[p].key + "=" + log.evaluations()[result.best].values[p]);
   }
   Progress verifying("verify " + name, args.quiet, "seeds");
-  const calibrate::CalibrationOutcome outcome{spec,   row_names, experiment.realizations, fit,
+  const engine::CalibrationOutcome outcome{spec,   row_names, experiment.realizations, fit,
                                               result, log,       Verify(spec, best, setup.threads, verifying, app)};
   const double wall_time_s = progress.elapsed_s();  // the search and the verification
   verifying.Finish(static_cast<int>(spec.verify_seeds.size()));
 
   // The folder, then the calibrated config; the running log goes once both are in place.
-  out.Write("evaluations.csv", [&](std::ostream& file) { calibrate::WriteEvaluationsCsv(file, log); });
-  out.Write("verification.csv", [&](std::ostream& file) { calibrate::WriteVerificationCsv(file, outcome); });
-  out.Write("profile.csv", [&](std::ostream& file) { calibrate::WriteProfileCsv(file, outcome); });
+  out.Write("evaluations.csv", [&](std::ostream& file) { engine::WriteEvaluationsCsv(file, log); });
+  out.Write("verification.csv", [&](std::ostream& file) { engine::WriteVerificationCsv(file, outcome); });
+  out.Write("profile.csv", [&](std::ostream& file) { engine::WriteProfileCsv(file, outcome); });
   std::ostringstream markdown;
-  calibrate::WriteCalibrationMarkdown(markdown, outcome);
+  engine::WriteCalibrationMarkdown(markdown, outcome);
   out.Write("calibration.md", markdown.str());
   const schema::ExperimentConfig calibrated_experiment = config::LoadConfig(spec.experiment_path, best, app.components);
   std::vector<std::string> command_line{"calibrate " + args.config};
@@ -217,7 +217,7 @@ int CalibrateCommand(const CalibrateArgs& args, const AppContext& app) {
   out.Write("manifest.json", report::ManifestJson(calibrated_experiment,
                                                    RunInfoOf(args, setup, app, calibrated_experiment, wall_time_s,
                                                              command_line)));
-  calibrated.stream() << calibrate::CalibratedConfigYaml(outcome, experiment_path.filename().string());
+  calibrated.stream() << engine::CalibratedConfigYaml(outcome, experiment_path.filename().string());
   out.Commit();
   calibrated.Commit();
   fs::remove(running_log);

@@ -13,7 +13,7 @@ namespace anchorbench {
 namespace {
 
 template <typename Enum, std::size_t N>
-void ExpectRoundTrips(const base::EnumNames<Enum, N>& names, std::initializer_list<Enum> values) {
+void ExpectRoundTrips(const estimator::EnumNames<Enum, N>& names, std::initializer_list<Enum> values) {
   std::set<std::string> seen;
   for (Enum value : values) {
     Enum parsed{};

@@ -85,7 +85,9 @@ TEST(LiveCore, DeferredSolvingTriggersNeverSolveInsideFeed) {
     EXPECT_EQ(inside_feed, 0) << static_cast<int>(kind);
     EXPECT_GT(pending, 0);
     EXPECT_GT(solver->solves, 1);  // the evaluations ran, outside Feed()
-    if (kind == Kind::kPdopLs) EXPECT_TRUE(event.has_value());
+    if (kind == Kind::kPdopLs) {
+      EXPECT_TRUE(event.has_value());
+    }
     ExpectSameEvent(event, FeedInline(kind, samples));
   }
 }

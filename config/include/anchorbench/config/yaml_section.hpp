@@ -11,7 +11,7 @@
 #include <Eigen/Core>
 #include <yaml-cpp/yaml.h>
 
-#include "anchorbench/base/enum_names.hpp"
+#include "anchorbench/estimator/enum_names.hpp"
 
 namespace anchorbench::config {
 
@@ -35,7 +35,7 @@ class YamlSection {
   void Unsigned(std::string_view key, std::uint64_t& value, std::uint64_t max);
   void Flag(std::string_view key, bool& value);
   template <typename Enum, std::size_t N>
-  void Choice(std::string_view key, Enum& value, const base::EnumNames<Enum, N>& names) {
+  void Choice(std::string_view key, Enum& value, const estimator::EnumNames<Enum, N>& names) {
     if (!Has(key)) return;
     const YAML::Node n = Get(key);
     if (!n.IsScalar() || !names.Parse(n.Scalar(), &value)) {
@@ -139,7 +139,7 @@ class YamlWriter {
   }
   void Flag(std::string_view key, bool& value) { node_[std::string(key)] = value; }
   template <typename Enum, std::size_t N>
-  void Choice(std::string_view key, Enum& value, const base::EnumNames<Enum, N>& names) {
+  void Choice(std::string_view key, Enum& value, const estimator::EnumNames<Enum, N>& names) {
     node_[std::string(key)] = std::string(names.Name(value));
   }
   void Text(std::string_view key, std::string& value) { node_[std::string(key)] = value; }

@@ -9,7 +9,7 @@
 #include <string_view>
 #include <vector>
 
-#include "anchorbench/base/enum_names.hpp"
+#include "anchorbench/estimator/enum_names.hpp"
 #include "anchorbench/estimator/anchor_solver.hpp"
 #include "anchorbench/estimator/closest_point_pdop.hpp"
 #include "anchorbench/estimator/consistency_filter.hpp"
@@ -28,7 +28,7 @@ enum class BufferPolicy {
                // (then every 4th, ...): the buffer keeps spanning the whole run, at a coarser rate
   kKeepFirst,  // stop buffering: solves use the first max_buffered_samples accepted samples
 };
-inline constexpr base::EnumNames<BufferPolicy, 2> kBufferPolicyNames({
+inline constexpr EnumNames<BufferPolicy, 2> kBufferPolicyNames({
     {BufferPolicy::kThin, "thin"}, {BufferPolicy::kKeepFirst, "keep_first"}});
 inline std::string_view ToString(BufferPolicy value) { return kBufferPolicyNames.Name(value); }
 inline bool ParseBufferPolicy(std::string_view name, BufferPolicy* value) { return kBufferPolicyNames.Parse(name, value); }

@@ -9,7 +9,7 @@
 
 #include <Eigen/Core>
 
-#include "anchorbench/base/enum_names.hpp"
+#include "anchorbench/estimator/enum_names.hpp"
 #include "anchorbench/estimator/height_prior.hpp"
 #include "anchorbench/estimator/solver.hpp"
 
@@ -47,7 +47,7 @@ struct HeightCheckOptions {
 
   bool IsValid(std::string* why) const;
 };
-inline constexpr base::EnumNames<HeightCheckOptions::Side, 3> kSideNames({
+inline constexpr EnumNames<HeightCheckOptions::Side, 3> kSideNames({
     {HeightCheckOptions::Side::kAny, "any"}, {HeightCheckOptions::Side::kAbove, "above"},
     {HeightCheckOptions::Side::kBelow, "below"}});
 inline std::string_view ToString(HeightCheckOptions::Side value) { return kSideNames.Name(value); }

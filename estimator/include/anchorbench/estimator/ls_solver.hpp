@@ -5,7 +5,7 @@
 #include <string>
 #include <string_view>
 
-#include "anchorbench/base/enum_names.hpp"
+#include "anchorbench/estimator/enum_names.hpp"
 #include "anchorbench/estimator/height_prior.hpp"
 #include "anchorbench/estimator/solve_result.hpp"
 #include "anchorbench/estimator/solver.hpp"
@@ -19,7 +19,7 @@ enum class LsPivot {
                      // as in the original)
 };
 
-inline constexpr base::EnumNames<LsPivot, 2> kLsPivotNames({
+inline constexpr EnumNames<LsPivot, 2> kLsPivotNames({
     {LsPivot::kShortestRange, "shortest_range"}, {LsPivot::kMinimumVariance, "minimum_variance"}});
 inline std::string_view ToString(LsPivot value) { return kLsPivotNames.Name(value); }
 inline bool ParseLsPivot(std::string_view name, LsPivot* value) { return kLsPivotNames.Parse(name, value); }
@@ -28,7 +28,7 @@ enum class LsMethod {
   kOrdinary,  // min ||A x - b||: errors in b only (our default; every committed result uses it)
   kTotal,     // total least squares, errors in A and b alike: the paper's name for its linear step
 };
-inline constexpr base::EnumNames<LsMethod, 2> kLsMethodNames({
+inline constexpr EnumNames<LsMethod, 2> kLsMethodNames({
     {LsMethod::kOrdinary, "ordinary"}, {LsMethod::kTotal, "total"}});
 inline std::string_view ToString(LsMethod value) { return kLsMethodNames.Name(value); }
 inline bool ParseLsMethod(std::string_view name, LsMethod* value) { return kLsMethodNames.Parse(name, value); }

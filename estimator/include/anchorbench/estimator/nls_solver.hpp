@@ -6,7 +6,7 @@
 #include <string>
 #include <string_view>
 
-#include "anchorbench/base/enum_names.hpp"
+#include "anchorbench/estimator/enum_names.hpp"
 #include "anchorbench/estimator/height_prior.hpp"
 #include "anchorbench/estimator/robust_kernel.hpp"
 #include "anchorbench/estimator/solve_result.hpp"
@@ -22,7 +22,7 @@ enum class KernelMode {
   kFixed,     // alpha fixed at fixed_alpha (1: smooth Huber / pseudo-Huber, 0: Cauchy, -2: Geman-McClure)
 };
 
-inline constexpr base::EnumNames<KernelMode, 3> kKernelModeNames({
+inline constexpr EnumNames<KernelMode, 3> kKernelModeNames({
     {KernelMode::kAdaptive, "adaptive"}, {KernelMode::kL2, "l2"}, {KernelMode::kFixed, "fixed"}});
 inline std::string_view ToString(KernelMode value) { return kKernelModeNames.Name(value); }
 inline bool ParseKernelMode(std::string_view name, KernelMode* value) { return kKernelModeNames.Parse(name, value); }

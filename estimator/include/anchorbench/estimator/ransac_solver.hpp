@@ -5,7 +5,7 @@
 #include <string>
 #include <string_view>
 
-#include "anchorbench/base/enum_names.hpp"
+#include "anchorbench/estimator/enum_names.hpp"
 #include "anchorbench/estimator/outlier_filter.hpp"
 #include "anchorbench/estimator/solver.hpp"
 
@@ -24,7 +24,7 @@ enum class RansacScheme {
   // assumed outlier share, each solved by the full solver and scored by its inlier count.
   kFullSolve,
 };
-inline constexpr base::EnumNames<RansacScheme, 2> kRansacSchemeNames({
+inline constexpr EnumNames<RansacScheme, 2> kRansacSchemeNames({
     {RansacScheme::kMinimal, "minimal"}, {RansacScheme::kFullSolve, "full_solve"}});
 inline std::string_view ToString(RansacScheme value) { return kRansacSchemeNames.Name(value); }
 inline bool ParseRansacScheme(std::string_view name, RansacScheme* value) { return kRansacSchemeNames.Parse(name, value); }

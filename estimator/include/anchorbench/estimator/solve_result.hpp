@@ -4,7 +4,7 @@
 
 #include <Eigen/Core>
 
-#include "anchorbench/base/enum_names.hpp"
+#include "anchorbench/estimator/enum_names.hpp"
 
 namespace anchorbench::estimator {
 
@@ -20,7 +20,7 @@ enum class SolveStatus {
   kBudgetSpent,         // the caller's work budget ran out first (NlsOptions::max_passes): no trusted estimate
 };
 
-inline constexpr base::EnumNames<SolveStatus, 8> kSolveStatusNames({
+inline constexpr EnumNames<SolveStatus, 8> kSolveStatusNames({
     {SolveStatus::kConverged, "converged"}, {SolveStatus::kMaxIterations, "max_iterations"},
     {SolveStatus::kNoConvergence, "no_convergence"}, {SolveStatus::kTooFewSamples, "too_few_samples"},
     {SolveStatus::kDegenerateGeometry, "degenerate_geometry"}, {SolveStatus::kNumericalFailure, "numerical_failure"},

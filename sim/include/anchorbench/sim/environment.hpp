@@ -6,7 +6,7 @@
 
 #include <Eigen/Core>
 
-#include "anchorbench/base/enum_names.hpp"
+#include "anchorbench/estimator/enum_names.hpp"
 #include "anchorbench/sim/random_stream.hpp"
 
 namespace anchorbench::sim {
@@ -32,7 +32,7 @@ enum class HallWalls {
   kAll,    // evenly spaced around the perimeter
   kFront,  // evenly spaced along the front wall (y = 0), e.g. in front of a machine hall
 };
-inline constexpr base::EnumNames<HallWalls, 2> kHallWallsNames({
+inline constexpr estimator::EnumNames<HallWalls, 2> kHallWallsNames({
     {HallWalls::kAll, "all"}, {HallWalls::kFront, "front"}});
 inline std::string_view ToString(HallWalls value) { return kHallWallsNames.Name(value); }
 inline bool ParseHallWalls(std::string_view name, HallWalls* value) { return kHallWallsNames.Parse(name, value); }

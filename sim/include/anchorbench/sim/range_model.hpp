@@ -3,7 +3,7 @@
 #include <string>
 #include <string_view>
 
-#include "anchorbench/base/enum_names.hpp"
+#include "anchorbench/estimator/enum_names.hpp"
 
 namespace anchorbench::sim {
 
@@ -13,10 +13,10 @@ enum class OutlierKind {
   kSymmetric,  // spikes of either sign
 };
 
-inline constexpr base::EnumNames<BiasDistribution, 2> kBiasDistributionNames({
+inline constexpr estimator::EnumNames<BiasDistribution, 2> kBiasDistributionNames({
     {BiasDistribution::kUniform, "uniform"}, {BiasDistribution::kNormal, "normal"}});
 inline std::string_view ToString(BiasDistribution value) { return kBiasDistributionNames.Name(value); }
-inline constexpr base::EnumNames<OutlierKind, 2> kOutlierKindNames({
+inline constexpr estimator::EnumNames<OutlierKind, 2> kOutlierKindNames({
     {OutlierKind::kPositive, "positive"}, {OutlierKind::kSymmetric, "symmetric"}});
 inline std::string_view ToString(OutlierKind value) { return kOutlierKindNames.Name(value); }
 inline bool ParseBiasDistribution(std::string_view name, BiasDistribution* value) { return kBiasDistributionNames.Parse(name, value); }

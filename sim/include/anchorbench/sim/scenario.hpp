@@ -8,7 +8,7 @@
 
 #include <Eigen/Core>
 
-#include "anchorbench/base/enum_names.hpp"
+#include "anchorbench/estimator/enum_names.hpp"
 #include "anchorbench/sim/environment.hpp"
 #include "anchorbench/sim/range_model.hpp"
 #include "anchorbench/sim/trajectory.hpp"
@@ -16,7 +16,7 @@
 namespace anchorbench::sim {
 
 enum class EnvironmentKind { kTunnel, kHall };
-inline constexpr base::EnumNames<EnvironmentKind, 2> kEnvironmentKindNames({
+inline constexpr estimator::EnumNames<EnvironmentKind, 2> kEnvironmentKindNames({
     {EnvironmentKind::kTunnel, "tunnel"}, {EnvironmentKind::kHall, "hall"}});
 inline std::string_view ToString(EnvironmentKind value) { return kEnvironmentKindNames.Name(value); }
 inline bool ParseEnvironmentKind(std::string_view name, EnvironmentKind* value) { return kEnvironmentKindNames.Parse(name, value); }

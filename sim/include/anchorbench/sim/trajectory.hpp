@@ -6,7 +6,7 @@
 
 #include <Eigen/Core>
 
-#include "anchorbench/base/enum_names.hpp"
+#include "anchorbench/estimator/enum_names.hpp"
 #include "anchorbench/sim/environment.hpp"
 #include "anchorbench/sim/random_stream.hpp"
 
@@ -20,7 +20,7 @@ enum class TrajectoryKind {
   kApproach,  // hall only (ours): a hand-held approach at anchor 0 inside a narrow cone, then kRandom
 };
 
-inline constexpr base::EnumNames<TrajectoryKind, 5> kTrajectoryKindNames({
+inline constexpr estimator::EnumNames<TrajectoryKind, 5> kTrajectoryKindNames({
     {TrajectoryKind::kRandom, "random"}, {TrajectoryKind::kStraight, "straight"},
     {TrajectoryKind::kPlanar, "planar"}, {TrajectoryKind::kShort, "short"}, {TrajectoryKind::kApproach, "approach"}});
 inline std::string_view ToString(TrajectoryKind value) { return kTrajectoryKindNames.Name(value); }

@@ -1,10 +1,10 @@
-#include "anchorbench/calibrate/objective.hpp"
+#include "anchorbench/engine/objective.hpp"
 
 #include <cmath>
 
 #include <gtest/gtest.h>
 
-namespace anchorbench::calibrate {
+namespace anchorbench::engine {
 namespace {
 
 using report::PaperCell;
@@ -53,4 +53,4 @@ TEST(ObjectiveTest, PerfectMatchCostsNothing) {
 }
 
 }  // namespace
-}  // namespace anchorbench::calibrate
+}  // namespace anchorbench::engine

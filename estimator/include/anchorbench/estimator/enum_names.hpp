@@ -6,7 +6,7 @@
 #include <string_view>
 #include <utility>
 
-namespace anchorbench::base {
+namespace anchorbench::estimator {
 
 // An enum's names, each value once, in the order a config lists its choices: ToString and Parse
 // of every enum read such a table, and the config reader lists the choices from it.
@@ -44,4 +44,4 @@ class EnumNames {
   std::array<Entry, N> entries_{};
 };
 
-}  // namespace anchorbench::base
+}  // namespace anchorbench::estimator

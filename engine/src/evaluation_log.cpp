@@ -1,4 +1,4 @@
-#include "anchorbench/calibrate/evaluation_log.hpp"
+#include "anchorbench/engine/evaluation_log.hpp"
 
 #include <cerrno>
 #include <cmath>
@@ -11,7 +11,7 @@
 #include "anchorbench/io/hash.hpp"
 #include "anchorbench/schema/input_error.hpp"
 
-namespace anchorbench::calibrate {
+namespace anchorbench::engine {
 
 EvaluationLog::EvaluationLog(std::vector<std::string> keys, std::vector<std::string> cell_names, std::uint64_t context)
     : keys_(std::move(keys)), cell_names_(std::move(cell_names)) {
@@ -134,4 +134,4 @@ void EvaluationLog::Record(const Evaluation& evaluation, bool computed) {
   if (!file_) throw schema::InputError(path_.string() + ": writing the evaluation log failed: " + std::strerror(errno));
 }
 
-}  // namespace anchorbench::calibrate
+}  // namespace anchorbench::engine

@@ -1,13 +1,13 @@
-#include "anchorbench/calibrate/calibration_report.hpp"
+#include "anchorbench/engine/calibration_report.hpp"
 
 #include <algorithm>
 #include <cmath>
 #include <map>
 
-#include "anchorbench/calibrate/objective.hpp"
+#include "anchorbench/engine/objective.hpp"
 #include "anchorbench/io/format.hpp"
 
-namespace anchorbench::calibrate {
+namespace anchorbench::engine {
 
 using io::FormatFixed;
 using io::FormatNumber;
@@ -317,4 +317,4 @@ std::string CalibratedConfigYaml(const CalibrationOutcome& o, const std::string&
   return text;
 }
 
-}  // namespace anchorbench::calibrate
+}  // namespace anchorbench::engine

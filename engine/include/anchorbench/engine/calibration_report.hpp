@@ -7,12 +7,12 @@
 #include <string>
 #include <vector>
 
-#include "anchorbench/calibrate/evaluation_log.hpp"
-#include "anchorbench/calibrate/fit.hpp"
+#include "anchorbench/engine/evaluation_log.hpp"
+#include "anchorbench/engine/fit.hpp"
 #include "anchorbench/report/paper_cells.hpp"
 #include "anchorbench/schema/calibration_spec.hpp"
 
-namespace anchorbench::calibrate {
+namespace anchorbench::engine {
 
 // The experiment as configured (before) and as calibrated (after) on one unseen seed, at the
 // experiment's own size, with its 95% intervals.
@@ -47,4 +47,4 @@ void WriteProfileCsv(std::ostream& out, const CalibrationOutcome& outcome);
 // with the fitted values, each commented with its bounds and provenance.
 std::string CalibratedConfigYaml(const CalibrationOutcome& outcome, const std::string& experiment_file_name);
 
-}  // namespace anchorbench::calibrate
+}  // namespace anchorbench::engine

@@ -1,4 +1,4 @@
-#include "anchorbench/calibrate/evaluation_log.hpp"
+#include "anchorbench/engine/evaluation_log.hpp"
 
 #include <filesystem>
 #include <fstream>
@@ -9,7 +9,7 @@
 #include "anchorbench/io/hash.hpp"
 #include "anchorbench/schema/input_error.hpp"
 
-namespace anchorbench::calibrate {
+namespace anchorbench::engine {
 namespace {
 
 namespace fs = std::filesystem;
@@ -148,4 +148,4 @@ TEST_F(EvaluationLogTest, AFailedWriteSaysWhy) {
 }
 
 }  // namespace
-}  // namespace anchorbench::calibrate
+}  // namespace anchorbench::engine

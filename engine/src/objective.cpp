@@ -1,9 +1,9 @@
-#include "anchorbench/calibrate/objective.hpp"
+#include "anchorbench/engine/objective.hpp"
 
 #include <algorithm>
 #include <cmath>
 
-namespace anchorbench::calibrate {
+namespace anchorbench::engine {
 
 using report::PaperColumn;
 
@@ -37,4 +37,4 @@ double Objective(const std::vector<report::PaperCell>& cells, const schema::Pape
   return weights > 0.0 ? sum / weights : 0.0;
 }
 
-}  // namespace anchorbench::calibrate
+}  // namespace anchorbench::engine

@@ -8,7 +8,7 @@
 #include "anchorbench/report/paper_cells.hpp"
 #include "anchorbench/schema/experiment.hpp"
 
-namespace anchorbench::calibrate {
+namespace anchorbench::engine {
 
 // ln((ours + f) / (paper + f)), absent where ours is. The floor f keeps zero counts finite
 // (our choice): 0.5 for Init and >1m (half a count), 0.1 for Ratio (%), 0 for Avg and Med (in m;
@@ -28,4 +28,4 @@ double CellCost(const report::PaperCell& cell, double band = 0.0);
 double Objective(const std::vector<report::PaperCell>& cells, const schema::PaperCells& weight, bool held_out = false,
                  double band = 0.0);
 
-}  // namespace anchorbench::calibrate
+}  // namespace anchorbench::engine

@@ -11,11 +11,11 @@
 #include <string>
 #include <vector>
 
-#include "anchorbench/calibrate/evaluation_log.hpp"
+#include "anchorbench/engine/evaluation_log.hpp"
 #include "anchorbench/report/paper_cells.hpp"
 #include "anchorbench/schema/calibration_spec.hpp"
 
-namespace anchorbench::calibrate {
+namespace anchorbench::engine {
 
 // Our value of each target cell with the experiment's parameters set by `overrides`
 // ("key=value", one per parameter), at the fit's seed and realizations.
@@ -65,4 +65,4 @@ class Fit {
   std::exception_ptr error_;            // an evaluation's error, rethrown once NLopt has stopped
 };
 
-}  // namespace anchorbench::calibrate
+}  // namespace anchorbench::engine

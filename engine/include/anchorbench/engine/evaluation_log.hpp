@@ -11,7 +11,7 @@
 #include <string>
 #include <vector>
 
-namespace anchorbench::calibrate {
+namespace anchorbench::engine {
 
 // One evaluation: the parameter values as the experiment read them (text: exactly what --set
 // passes), our value of each target cell (absent where nothing initialized) and the objective.
@@ -61,4 +61,4 @@ class EvaluationLog {
   std::filesystem::path path_;
 };
 
-}  // namespace anchorbench::calibrate
+}  // namespace anchorbench::engine

@@ -1,4 +1,4 @@
-#include "anchorbench/calibrate/fit.hpp"
+#include "anchorbench/engine/fit.hpp"
 
 #include <cmath>
 #include <filesystem>
@@ -7,9 +7,9 @@
 
 #include <gtest/gtest.h>
 
-#include "anchorbench/calibrate/calibration_report.hpp"
+#include "anchorbench/engine/calibration_report.hpp"
 
-namespace anchorbench::calibrate {
+namespace anchorbench::engine {
 namespace {
 
 namespace fs = std::filesystem;
@@ -102,4 +102,4 @@ TEST(FitTest, ValuesAreEvaluatedOnAGridAndPrintedAsEvaluated) {
 }
 
 }  // namespace
-}  // namespace anchorbench::calibrate
+}  // namespace anchorbench::engine

@@ -1,4 +1,4 @@
-#include "anchorbench/calibrate/fit.hpp"
+#include "anchorbench/engine/fit.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -6,11 +6,11 @@
 
 #include <nlopt.hpp>
 
-#include "anchorbench/calibrate/objective.hpp"
+#include "anchorbench/engine/objective.hpp"
 #include "anchorbench/estimator/nlopt_solver.hpp"
 #include "anchorbench/io/format.hpp"
 
-namespace anchorbench::calibrate {
+namespace anchorbench::engine {
 namespace {
 
 constexpr double kGrid = 1e4;                               // u is evaluated on a grid of 1/kGrid
@@ -148,4 +148,4 @@ FitResult Fit::Run() {
   return result;
 }
 
-}  // namespace anchorbench::calibrate
+}  // namespace anchorbench::engine
