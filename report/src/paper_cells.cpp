@@ -93,8 +93,8 @@ std::vector<PaperCell> CompareWithPaper(const std::vector<MethodSummary>& summar
 
 bool WithinQuarter(const PaperCell& cell) {
   if (!cell.ours) return false;
-  const double relative = cell.paper != 0.0 ? (*cell.ours - cell.paper) / cell.paper : 0.0;
-  return std::abs(relative) <= 0.25 + 1e-12;
+  if (cell.paper == 0.0) return *cell.ours == 0.0;  // no relative distance to zero: only zero matches
+  return std::abs((*cell.ours - cell.paper) / cell.paper) <= 0.25 + 1e-12;
 }
 
 bool PaperInsideInterval(const PaperCell& cell) {
