@@ -1,8 +1,6 @@
 #include "anchorbench/engine/chunk.hpp"
 
 #include <cstdio>
-#include <sstream>
-#include <stdexcept>
 
 #include "anchorbench/io/csv_reader.hpp"
 #include "anchorbench/io/format.hpp"

@@ -129,9 +129,7 @@ NlsSolver::NlsSolver(const NlsOptions& options, std::shared_ptr<const LogPartiti
   if (options_.kernel != KernelMode::kAdaptive) {
     table_.reset();
   } else if (!table_ || table_->truncation() != options_.truncation || table_->alpha_min() != options_.alpha_min) {
-    table_ = options_.truncation == kDefaultTruncation && options_.alpha_min == kDefaultAlphaMin
-                 ? DefaultLogPartitionTable()
-                 : std::make_shared<const LogPartitionTable>(options_.truncation, options_.alpha_min);
+    table_ = MakeLogPartitionTable(options_.truncation, options_.alpha_min);
   }
 }
 

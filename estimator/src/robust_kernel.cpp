@@ -154,13 +154,17 @@ std::shared_ptr<const LogPartitionTable> DefaultLogPartitionTable() {
   return table;
 }
 
-std::shared_ptr<const LogPartitionTable> LogPartitionTables::Get(double truncation, double alpha_min) {
+std::shared_ptr<const LogPartitionTable> MakeLogPartitionTable(double truncation, double alpha_min) {
   if (truncation == kDefaultTruncation && alpha_min == kDefaultAlphaMin) return DefaultLogPartitionTable();
+  return std::make_shared<const LogPartitionTable>(truncation, alpha_min);
+}
+
+std::shared_ptr<const LogPartitionTable> LogPartitionTables::Get(double truncation, double alpha_min) {
   std::lock_guard<std::mutex> lock(mutex_);
   for (const auto& table : tables_) {
     if (table->truncation() == truncation && table->alpha_min() == alpha_min) return table;
   }
-  tables_.push_back(std::make_shared<const LogPartitionTable>(truncation, alpha_min));
+  tables_.push_back(MakeLogPartitionTable(truncation, alpha_min));
   return tables_.back();
 }
 

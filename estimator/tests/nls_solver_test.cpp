@@ -20,6 +20,13 @@ testing::AnchorData OutlierBox(std::uint64_t seed, const Eigen::Vector3d& center
   return data;
 }
 
+// 300 tags in a box of half-size 5 m around (4, 0, 1), the anchor at (1, 2, 3), 0.1 m bias and
+// 0.05 m noise: a geometry every kernel converges on.
+testing::AnchorData GoodBox(std::uint64_t seed) {
+  auto rng = testing::TestStream(seed);
+  return testing::BoxData(rng, 300, Eigen::Vector3d(1, 2, 3), Eigen::Vector3d(4, 0, 1), 5.0, 0.1, 0.05);
+}
+
 NlsOptions Options(KernelMode kernel) {
   NlsOptions options;
   options.kernel = kernel;
@@ -66,40 +73,41 @@ TEST(NlsSolver, AdaptiveKernelResistsOutliersBetterThanL2) {
   EXPECT_LT(testing::Median(error_adaptive), 0.2 * testing::Median(error_l2));
 }
 
+// A solve started metres from the anchor (6 m and more): it takes several iterations.
+SolveResult FromAfar(const NlsOptions& options, const testing::AnchorData& data) {
+  return NlsSolver(options).Solve(data.p_world_tag, data.range_m, Eigen::Vector3d(6, -3, 0), 0.0);
+}
+
 // An iteration budget too small to converge ends in kMaxIterations, which counts as a success
 // (the best estimate reached), with exactly the budget spent, per stage.
 TEST(NlsSolver, AnIterationBudgetSpentEndsInMaxIterations) {
-  auto rng = testing::TestStream(410);
-  const Eigen::Vector3d p_anchor(1, 2, 3);
-  const auto data = testing::BoxData(rng, 300, p_anchor, Eigen::Vector3d(4, 0, 1), 5.0, 0.1, 0.05);
+  const auto data = GoodBox(410);
   for (KernelMode kernel : {KernelMode::kL2, KernelMode::kAdaptive}) {
     NlsOptions options = Options(kernel);
     options.max_iterations = 2;
-    const SolveResult result = NlsSolver(options).Solve(data.p_world_tag, data.range_m, Eigen::Vector3d(6, -3, 0), 0.0);
+    const SolveResult result = FromAfar(options, data);
     EXPECT_EQ(result.status, SolveStatus::kMaxIterations) << ToString(kernel);
     EXPECT_TRUE(Succeeded(result.status));
     EXPECT_EQ(result.iterations, kernel == KernelMode::kL2 ? 2 : 4);  // the adaptive mode's L2 warm start too
     options.max_iterations = 50;
-    EXPECT_EQ(NlsSolver(options).Solve(data.p_world_tag, data.range_m, Eigen::Vector3d(6, -3, 0), 0.0).status,
+    EXPECT_EQ(FromAfar(options, data).status,
               SolveStatus::kConverged);
   }
 }
 
 // A pass budget too small ends in kBudgetSpent, a failure; one large enough changes nothing, to
-// the bit; and an initializer treats a spent budget as a failed solve and retries on more data.
+// the bit (AnchorInitializer.ASpentSolveBudgetIsAFailedSolve: what an initializer does with it).
 TEST(NlsSolver, APassBudgetSpentIsAFailureAndAnAmpleOneChangesNothing) {
-  auto rng = testing::TestStream(440);
-  const Eigen::Vector3d p_anchor(1, 2, 3);
-  const auto data = testing::BoxData(rng, 300, p_anchor, Eigen::Vector3d(4, 0, 1), 5.0, 0.1, 0.05);
+  const auto data = GoodBox(440);
   for (KernelMode kernel : {KernelMode::kL2, KernelMode::kAdaptive}) {
     NlsOptions options = Options(kernel);
-    const SolveResult free = NlsSolver(options).Solve(data.p_world_tag, data.range_m, Eigen::Vector3d(6, -3, 0), 0.0);
+    const SolveResult free = FromAfar(options, data);
     options.max_passes = 3;
-    const SolveResult cut = NlsSolver(options).Solve(data.p_world_tag, data.range_m, Eigen::Vector3d(6, -3, 0), 0.0);
+    const SolveResult cut = FromAfar(options, data);
     EXPECT_EQ(cut.status, SolveStatus::kBudgetSpent) << ToString(kernel);
     EXPECT_FALSE(Succeeded(cut.status));
     options.max_passes = 10000;
-    const SolveResult ample = NlsSolver(options).Solve(data.p_world_tag, data.range_m, Eigen::Vector3d(6, -3, 0), 0.0);
+    const SolveResult ample = FromAfar(options, data);
     EXPECT_EQ(ample.status, free.status);
     EXPECT_EQ(ample.p_world_anchor, free.p_world_anchor);
     EXPECT_EQ(ample.covariance, free.covariance);
@@ -136,9 +144,8 @@ TEST(NlsSolver, AFixedKernelKeepsItsShape) {
 // Without the L2 warm start the adaptive stage starts at the seed itself: from the truth the
 // result is the same minimum as with it; from a seed metres away it spends no L2 iterations.
 TEST(NlsSolver, WithoutTheL2WarmStartTheAdaptiveStageStartsAtTheSeed) {
-  auto rng = testing::TestStream(430);
-  const Eigen::Vector3d p_anchor(1, 2, 3);
-  const auto data = testing::BoxData(rng, 300, p_anchor, Eigen::Vector3d(4, 0, 1), 5.0, 0.1, 0.05);
+  const auto data = GoodBox(430);
+  const Eigen::Vector3d& p_anchor = data.p_world_anchor;
   NlsOptions warm = Options(KernelMode::kAdaptive);
   NlsOptions cold = warm;
   cold.l2_warm_start = false;

@@ -102,12 +102,9 @@ void WriteAgainstThePaper(std::ostream& out, const std::vector<MethodSummary>& s
       << "The paper's conclusions, row by row:\n" << conclusions;
 }
 
-}  // namespace
-
-std::string AttemptLine(const schema::Attempt& a, const std::vector<schema::RowConfig>& rows) {
+void WriteAttemptLine(std::ostream& out, const schema::Attempt& a, const std::vector<schema::RowConfig>& rows) {
   const schema::AttemptEvaluation none;
   const schema::AttemptEvaluation& e = a.evaluation ? *a.evaluation : none;
-  std::ostringstream out;
   out << rows[static_cast<std::size_t>(a.row)].name << ',' << a.realization << ',' << a.anchor_id << ','
       << a.method << ',' << (a.initialized ? 1 : 0) << ',' << FormatOptional(a.t_init_s) << ',' << a.n_used << ','
       << FormatNumber(a.pdop_closest_point) << ','
@@ -118,12 +115,22 @@ std::string AttemptLine(const schema::Attempt& a, const std::vector<schema::RowC
       << ',' << a.status << ',' << FormatOptional(e.bias_aware_dop) << ',' << FormatOptional(e.nees_position) << ','
       << FormatOptional(e.nees) << ',' << FormatOptional(e.bias_aware_hdop) << ','
       << FormatOptional(e.bias_aware_vdop);
-  return out.str();
+}
+
+}  // namespace
+
+std::string AttemptLine(const schema::Attempt& attempt, const std::vector<schema::RowConfig>& rows) {
+  std::ostringstream line;
+  WriteAttemptLine(line, attempt, rows);
+  return line.str();
 }
 
 void WriteAttempts(std::ostream& out, const std::vector<schema::Attempt>& attempts, const std::vector<schema::RowConfig>& rows) {
   out << kAttemptsColumns << '\n';
-  for (const schema::Attempt& a : attempts) out << AttemptLine(a, rows) << '\n';
+  for (const schema::Attempt& a : attempts) {
+    WriteAttemptLine(out, a, rows);
+    out << '\n';
+  }
 }
 
 void WriteAttemptLines(std::ostream& out, const std::vector<std::string>& lines) {

@@ -82,6 +82,8 @@ constexpr double kDefaultAlphaMin = -10.0;
 // first). Solvers with the default settings use it unless given a table; a navigation stack that
 // calls it at start-up keeps the build out of its first range callback.
 std::shared_ptr<const LogPartitionTable> DefaultLogPartitionTable();
+// The table of (truncation, alpha_min): the default settings' shared one, or a new one (~40 ms).
+std::shared_ptr<const LogPartitionTable> MakeLogPartitionTable(double truncation, double alpha_min);
 
 // Tables by (truncation, alpha_min), each built on first request (~40 ms; the default settings'
 // is DefaultLogPartitionTable()) and then shared by every solver that asks. Owned by whoever builds the solvers (the registry's Components, or your code):
