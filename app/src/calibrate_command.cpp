@@ -56,7 +56,7 @@ std::vector<double> CheckParameters(const schema::CalibrationSpec& spec, const s
     const std::string what = spec.path + ": parameters[" + std::to_string(p) + "]";
     hand.push_back(config::NumberAt(resolved, parameter.key, what));
     if (hand.back() < parameter.min || hand.back() > parameter.max) {
-      throw schema::InputError(what + " (" + parameter.key + "): the experiment's value " + io::FormatNumber(hand.back()) +
+      throw InputError(what + " (" + parameter.key + "): the experiment's value " + io::FormatNumber(hand.back()) +
                        " lies outside [min, max]; widen the bounds");
     }
     for (double u : {0.0, 1.0}) {
@@ -64,8 +64,8 @@ std::vector<double> CheckParameters(const schema::CalibrationSpec& spec, const s
       try {
         const schema::ExperimentConfig at_bound = config::LoadConfig(spec.experiment_path, {assignment}, app.components);
         engine::CheckExperiment(at_bound, app.components);
-      } catch (const schema::InputError& e) {
-        throw schema::InputError(what + " (" + parameter.key + ") at its " + (u == 0.0 ? "min" : "max") + ": " + e.what());
+      } catch (const InputError& e) {
+        throw InputError(what + " (" + parameter.key + ") at its " + (u == 0.0 ? "min" : "max") + ": " + e.what());
       }
     }
   }
@@ -92,10 +92,10 @@ engine::EvaluationLog OpenLog(const CalibrateArgs& args, const schema::Calibrati
     int reused = 0;
     try {
       reused = log.Reuse(source);
-    } catch (const schema::InputError& e) {
+    } catch (const InputError& e) {
       const std::string what = e.what();
       if (source != running_log || what.find(":1: ") == std::string::npos) throw;  // a line of it: cut that line
-      throw schema::InputError(what + "; it is the log of a killed calibration of other parameters: remove it to start afresh");
+      throw InputError(what + "; it is the log of a killed calibration of other parameters: remove it to start afresh");
     }
     if (!args.quiet) std::cerr << "calibrate: " << reused << " evaluations known from " << source.string() << "\n";
   }
@@ -148,9 +148,9 @@ std::vector<fs::path> Inputs(const CalibrateArgs& args, const schema::Calibratio
 void CheckReuse(const std::string& reuse) {
   if (reuse.empty()) return;
   std::error_code error;
-  if (!fs::exists(reuse, error)) throw schema::InputError("--reuse " + reuse + ": no such file");
-  if (fs::is_directory(reuse, error)) throw schema::InputError("--reuse " + reuse + ": is a folder, not an evaluation log");
-  if (!fs::is_regular_file(reuse, error)) throw schema::InputError("--reuse " + reuse + ": is not a regular file");
+  if (!fs::exists(reuse, error)) throw InputError("--reuse " + reuse + ": no such file");
+  if (fs::is_directory(reuse, error)) throw InputError("--reuse " + reuse + ": is a folder, not an evaluation log");
+  if (!fs::is_regular_file(reuse, error)) throw InputError("--reuse " + reuse + ": is not a regular file");
 }
 
 }  // namespace
@@ -162,7 +162,7 @@ int CalibrateCommand(const CalibrateArgs& args, const AppContext& app) {
   const std::vector<schema::RowConfig> rows = schema::RowsOf(experiment);
   const std::vector<PaperCell> targets = report::PaperTargets(rows);
   if (targets.empty()) {
-    throw schema::InputError(spec.experiment_path + ": no row carries the paper's values (`paper:`) and runs both " +
+    throw InputError(spec.experiment_path + ": no row carries the paper's values (`paper:`) and runs both " +
                      schema::kFixedWindowTrigger + " and " + schema::kPaperTrigger + ": nothing to calibrate to");
   }
   const std::vector<double> hand = CheckParameters(spec, experiment, app);
@@ -183,7 +183,7 @@ int CalibrateCommand(const CalibrateArgs& args, const AppContext& app) {
   const fs::path running_log = setup.out.string() + ".evaluations.csv";  // beside the folder: resumable
   std::error_code error;
   if (fs::exists(running_log, error) && !fs::is_regular_file(running_log, error)) {
-    throw schema::InputError(running_log.string() + ": is a folder (or not a regular file), not the evaluation log of a " +
+    throw InputError(running_log.string() + ": is a folder (or not a regular file), not the evaluation log of a " +
                      "killed calibration; move it away");
   }
   engine::EvaluationLog log = OpenLog(args, spec, experiment, targets, row_names, running_log);

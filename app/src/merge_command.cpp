@@ -27,21 +27,21 @@ std::vector<engine::ShardInfo> CheckShards(const std::vector<std::string>& folde
                              std::to_string(info.shard.count);
     if (info.shard.count != first.shard.count || info.plan != first.plan || info.command != first.command ||
         info.name != first.name) {
-      throw schema::InputError(name + " is of another run than " + folders.front() + " (plan " + info.plan + " vs " +
+      throw InputError(name + " is of another run than " + folders.front() + " (plan " + info.plan + " vs " +
                        first.plan + ", " + std::to_string(info.shard.count) + " vs " +
                        std::to_string(first.shard.count) + " shards)");
     }
     if (info.revision != first.revision) {
-      throw schema::InputError(name + " was run by build " + info.revision + ", " + folders.front() + " by " + first.revision +
+      throw InputError(name + " was run by build " + info.revision + ", " + folders.front() + " by " + first.revision +
                        ": shards of one run need one build");
     }
     if (!seen.emplace(info.shard.index, folder).second) {
-      throw schema::InputError(name + " is given twice (also " + seen[info.shard.index] + ")");
+      throw InputError(name + " is given twice (also " + seen[info.shard.index] + ")");
     }
   }
   for (int i = 0; i < infos.front().shard.count; ++i) {
     if (!seen.count(i)) {
-      throw schema::InputError("shard " + std::to_string(i) + "/" + std::to_string(infos.front().shard.count) +
+      throw InputError("shard " + std::to_string(i) + "/" + std::to_string(infos.front().shard.count) +
                        " is missing: every shard of the run is needed");
     }
   }
@@ -56,13 +56,13 @@ engine::Plan CheckInputs(const std::vector<std::string>& folders, const engine::
   inputs = engine::ReadShardInputs(first);
   const engine::Plan plan = engine::RebuildPlan(inputs, components);
   if (plan.identity() != info.plan) {
-    throw schema::InputError((first / "config.yaml").string() + ": with axes.txt gives plan " + plan.identity() +
+    throw InputError((first / "config.yaml").string() + ": with axes.txt gives plan " + plan.identity() +
                      ", shard.csv says " + info.plan + " (edited after the run?)");
   }
   for (std::size_t s = 1; s < folders.size(); ++s) {
     const engine::ShardInputs other = engine::ReadShardInputs(folders[s]);
     if (other.config_yaml != inputs.config_yaml || schema::DescribeAxes(other.axes) != schema::DescribeAxes(inputs.axes)) {
-      throw schema::InputError((fs::path(folders[s]) / "config.yaml").string() + ": with axes.txt differs from " +
+      throw InputError((fs::path(folders[s]) / "config.yaml").string() + ": with axes.txt differs from " +
                        (first / "config.yaml").string() + "'s: shards of one run hold the same (edited after the run?)");
     }
   }

@@ -35,12 +35,12 @@ void CheckKeys(const YAML::Node& node, const std::string& source) {
   std::map<std::string, int> seen;
   for (const auto& entry : node) {
     if (!entry.first.IsScalar()) {
-      throw schema::InputError(source + ":" + Line(entry.first.Mark()) + ": a key must be a name, got " +
+      throw InputError(source + ":" + Line(entry.first.Mark()) + ": a key must be a name, got " +
                        (entry.first.IsSequence() ? "a list" : entry.first.IsMap() ? "a mapping" : "nothing"));
     }
     const auto [first, inserted] = seen.emplace(entry.first.Scalar(), entry.first.Mark().line + 1);
     if (!inserted) {
-      throw schema::InputError(source + ":" + Line(entry.first.Mark()) + ": key '" + entry.first.Scalar() +
+      throw InputError(source + ":" + Line(entry.first.Mark()) + ": key '" + entry.first.Scalar() +
                        "' appears twice (lines " + std::to_string(first->second) + " and " + Line(entry.first.Mark()) + ")");
     }
     CheckKeys(entry.second, source);
@@ -54,7 +54,7 @@ constexpr long kMaxConfigNodes = 200000;
 
 void CountNodes(const YAML::Node& node, long& budget, const std::string& source) {
   if (--budget < 0) {
-    throw schema::InputError(source + ": expands to more than " + std::to_string(kMaxConfigNodes) +
+    throw InputError(source + ": expands to more than " + std::to_string(kMaxConfigNodes) +
                      " values (aliases repeated inside aliases?): not a config");
   }
   if (node.IsMap()) {
@@ -81,16 +81,16 @@ YAML::Node ParseText(const std::string& text, const std::string& source) {
   try {
     root = CheckedDocument(text, source);
   } catch (const YAML::DeepRecursion& e) {
-    throw schema::InputError(source + ":" + Line(e.mark) + ": nested deeper than the YAML reader allows (" +
+    throw InputError(source + ":" + Line(e.mark) + ": nested deeper than the YAML reader allows (" +
                      std::to_string(e.depth()) + " levels)");
   } catch (const YAML::ParserException& e) {
-    throw schema::InputError(source + ":" + Line(e.mark) + ": YAML syntax error: " + e.msg);
+    throw InputError(source + ":" + Line(e.mark) + ": YAML syntax error: " + e.msg);
   } catch (const YAML::Exception& e) {
-    throw schema::InputError(source + ": YAML error: " + e.msg);
+    throw InputError(source + ": YAML error: " + e.msg);
   }
   if (root.IsNull()) return YAML::Node(YAML::NodeType::Map);
   if (!root.IsMap()) {
-    throw schema::InputError(source + ": expected a mapping of config keys (key: value lines), got " +
+    throw InputError(source + ": expected a mapping of config keys (key: value lines), got " +
                      (root.IsSequence() ? "a list" : "'" + root.Scalar().substr(0, 40) + "'"));
   }
   CheckKeys(root, source);
@@ -99,13 +99,13 @@ YAML::Node ParseText(const std::string& text, const std::string& source) {
 
 std::string ReadConfigFile(const std::string& path) {
   std::error_code error;
-  if (!std::filesystem::exists(path, error)) throw schema::InputError(path + ": cannot open the config file");
-  if (!std::filesystem::is_regular_file(path, error)) throw schema::InputError(path + ": is not a config file (a folder?)");
-  if (std::filesystem::file_size(path, error) > kMaxConfigBytes) throw schema::InputError(path + ": more than 1 MiB: not a config");
+  if (!std::filesystem::exists(path, error)) throw InputError(path + ": cannot open the config file");
+  if (!std::filesystem::is_regular_file(path, error)) throw InputError(path + ": is not a config file (a folder?)");
+  if (std::filesystem::file_size(path, error) > kMaxConfigBytes) throw InputError(path + ": more than 1 MiB: not a config");
   std::ifstream in(path, std::ios::binary);
   std::ostringstream text;
   text << in.rdbuf();
-  if (!in) throw schema::InputError(path + ": cannot read the config file");
+  if (!in) throw InputError(path + ": cannot read the config file");
   return text.str();
 }
 
@@ -123,9 +123,9 @@ YAML::Node Merge(const YAML::Node& base, const YAML::Node& over) {
 // The file `source` names as its base (relative to `source`'s folder), if any; the key is removed.
 std::optional<std::string> TakeBase(YAML::Node& root, const std::string& source, int depth) {
   if (!root["base"]) return std::nullopt;
-  if (depth >= kMaxBaseDepth) throw schema::InputError(source + ": key 'base': chain of base files too long (a cycle?)");
+  if (depth >= kMaxBaseDepth) throw InputError(source + ": key 'base': chain of base files too long (a cycle?)");
   const YAML::Node base_key = root["base"];
-  if (!base_key.IsScalar() || base_key.Scalar().empty()) throw schema::InputError(source + ": key 'base': expected a file name");
+  if (!base_key.IsScalar() || base_key.Scalar().empty()) throw InputError(source + ": key 'base': expected a file name");
   const std::string base_path = (std::filesystem::path(source).parent_path() / base_key.Scalar()).string();
   root.remove("base");
   return base_path;
@@ -159,7 +159,7 @@ void Set(YAML::Node node, const std::vector<std::string>& parts, const YAML::Nod
       std::size_t index = 0;
       const auto [end, ec] = std::from_chars(part.data(), part.data() + part.size(), index);
       if (ec != std::errc() || end != part.data() + part.size() || index >= node.size()) {
-        throw schema::InputError("--set '" + what + "': '" + part + "' is not an index of the list (0 to " +
+        throw InputError("--set '" + what + "': '" + part + "' is not an index of the list (0 to " +
                          std::to_string(node.size() - 1) + ")");
       }
       if (last) {
@@ -170,7 +170,7 @@ void Set(YAML::Node node, const std::vector<std::string>& parts, const YAML::Nod
       continue;
     }
     if (node.IsDefined() && !node.IsNull() && !node.IsMap()) {
-      throw schema::InputError("--set '" + what + "': '" + parts[i - 1] + "' is not a section");
+      throw InputError("--set '" + what + "': '" + parts[i - 1] + "' is not a section");
     }
     if (last) {
       node[part] = value;
@@ -192,7 +192,7 @@ bool Has(YAML::Node node, const std::vector<std::string>& parts) {
 void ApplyOverride(YAML::Node& root, const std::string& assignment) {
   const std::size_t equals = assignment.find('=');
   if (equals == std::string::npos || equals == 0) {
-    throw schema::InputError("--set '" + assignment + "': expected KEY=VALUE, e.g. scenario.tunnel.width_m=12");
+    throw InputError("--set '" + assignment + "': expected KEY=VALUE, e.g. scenario.tunnel.width_m=12");
   }
   const std::vector<std::string> parts = SplitKey(assignment.substr(0, equals));
   const std::string what = "--set '" + assignment + "'";
@@ -200,9 +200,9 @@ void ApplyOverride(YAML::Node& root, const std::string& assignment) {
   try {
     value = OnlyDocument(assignment.substr(equals + 1), what);
   } catch (const YAML::Exception& e) {
-    throw schema::InputError(what + ": " + e.msg);
+    throw InputError(what + ": " + e.msg);
   }
-  if (!value.IsDefined() || value.IsNull()) throw schema::InputError(what + ": no value (KEY=VALUE, e.g. " + parts.back() + "=1)");
+  if (!value.IsDefined() || value.IsNull()) throw InputError(what + ": no value (KEY=VALUE, e.g. " + parts.back() + "=1)");
   CheckKeys(value, what);
   Set(root, parts, value, assignment);
   if (parts.front() == "rows" || !root["rows"].IsSequence()) return;

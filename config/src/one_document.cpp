@@ -44,7 +44,7 @@ void RefuseNul(const std::string& text, const std::string& source) {
   const std::size_t nul = text.find('\0');
   if (nul == std::string::npos) return;
   const auto lines = std::count(text.begin(), text.begin() + static_cast<std::ptrdiff_t>(nul), '\n');
-  throw schema::InputError(source + ":" + std::to_string(1 + lines) + ": a NUL byte: not a text file");
+  throw InputError(source + ":" + std::to_string(1 + lines) + ": a NUL byte: not a text file");
 }
 
 // Steps through at most two documents. yaml-cpp's LoadAll loops without end where its parser does
@@ -58,10 +58,10 @@ void RefuseASecondDocument(const std::string& text, const std::string& source) {
   DocumentMarks second;
   if (!parser.HandleNextDocument(second) || !second.start) return;
   if (first.start && second.start->pos == first.start->pos) {
-    throw schema::InputError(source + ":" + LineOf(*second.start) +
+    throw InputError(source + ":" + LineOf(*second.start) +
                      ": YAML syntax error: the reader cannot go past this point (a ',' outside [] or {}?)");
   }
-  throw schema::InputError(source + ":" + LineOf(second.content.value_or(*second.start)) +
+  throw InputError(source + ":" + LineOf(second.content.value_or(*second.start)) +
                    ": a second YAML document (after '---'): a config is one document");
 }
 

@@ -20,7 +20,7 @@ std::string YamlSection::Describe(const YAML::Node& node) {
 YamlSection::YamlSection(const YAML::Node& node, std::string path, std::string file)
     : node_(node), path_(std::move(path)), file_(std::move(file)) {
   if (node_ && !node_.IsNull() && !node_.IsMap()) {
-    throw schema::InputError(file_ + ": key '" + path_ + "': expected a mapping, got " + Describe(node_));
+    throw InputError(file_ + ": key '" + path_ + "': expected a mapping, got " + Describe(node_));
   }
 }
 
@@ -29,11 +29,11 @@ std::string YamlSection::KeyPath(std::string_view key) const {
 }
 
 void YamlSection::Fail(std::string_view key, const std::string& message) const {
-  throw schema::InputError(file_ + ": key '" + KeyPath(key) + "': " + message);
+  throw InputError(file_ + ": key '" + KeyPath(key) + "': " + message);
 }
 
 void YamlSection::FailSection(const std::string& message) const {
-  throw schema::InputError(file_ + ": " + (path_.empty() ? std::string("top level") : "key '" + path_ + "'") + ": " + message);
+  throw InputError(file_ + ": " + (path_.empty() ? std::string("top level") : "key '" + path_ + "'") + ": " + message);
 }
 
 void YamlSection::FailValidation(const std::string& why) const {

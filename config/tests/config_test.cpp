@@ -21,7 +21,7 @@ using schema::RowsOf;
 
 using anchorbench::testing::AllComponents;
 
-schema::ExperimentConfig LoadConfig(const std::string& path, const std::vector<std::string>& overrides = {}) {
+ExperimentConfig LoadConfig(const std::string& path, const std::vector<std::string>& overrides = {}) {
   return config::LoadConfig(path, overrides, AllComponents());
 }
 
@@ -31,14 +31,14 @@ std::string ErrorFor(const std::string& yaml) {
   const std::string path = dir.Write("c.yaml", yaml);
   try {
     LoadConfig(path);
-  } catch (const schema::InputError& e) {
+  } catch (const InputError& e) {
     return e.what();
   }
   return "";
 }
 
 TEST(Config, ShippedConfigsLoad) {
-  const schema::ExperimentConfig config = LoadConfig(std::string(ANCHORBENCH_CONFIG_DIR) + "/tunnel.yaml");
+  const ExperimentConfig config = LoadConfig(std::string(ANCHORBENCH_CONFIG_DIR) + "/tunnel.yaml");
   EXPECT_EQ(config.name, "tunnel");
   EXPECT_EQ(config.scenario.tunnel.num_anchors, 30);
   EXPECT_DOUBLE_EQ(config.estimator.trigger.pdop_threshold, 1.0);
@@ -132,7 +132,7 @@ TEST(Config, RowsOverlayTheBaseAndNameTheirPath) {
   const std::string path = dir.Write("t.yaml",
                                      "scenario:\n  ranging: {sigma_range_m: 0.2, outlier_probability: 0.1}\n"
                                      "rows:\n  - name: a\n  - name: b\n    scenario: {ranging: {sigma_range_m: 0.5}}\n");
-  const schema::ExperimentConfig config = LoadConfig(path);
+  const ExperimentConfig config = LoadConfig(path);
   ASSERT_EQ(config.rows.size(), 2u);
   EXPECT_EQ(config.rows[0].scenario.ranging.sigma_range_m, 0.2);
   EXPECT_EQ(config.rows[1].scenario.ranging.sigma_range_m, 0.5);
@@ -146,13 +146,13 @@ TEST(Config, RowsOverlayTheBaseAndNameTheirPath) {
 TEST(Config, OverridesAreValidatedLikeTheFile) {
   testing::TempDir dir("set");
   const std::string path = dir.Write("t.yaml", "scenario:\n  tunnel: {width_m: 8}\n");
-  const schema::ExperimentConfig config = LoadConfig(path, {"scenario.tunnel.width_m=12", "estimator.trigger.pdop_threshold=0.5"});
+  const ExperimentConfig config = LoadConfig(path, {"scenario.tunnel.width_m=12", "estimator.trigger.pdop_threshold=0.5"});
   EXPECT_EQ(config.scenario.tunnel.width_m, 12.0);
   EXPECT_EQ(config.estimator.trigger.pdop_threshold, 0.5);
   auto error_for = [&](const std::string& assignment) {
     try {
       LoadConfig(path, {assignment});
-    } catch (const schema::InputError& e) {
+    } catch (const InputError& e) {
       return std::string(e.what());
     }
     return std::string();
@@ -167,10 +167,10 @@ TEST(Config, OverridesAreValidatedLikeTheFile) {
   EXPECT_NE(error_for("seed=1\n---\n2").find("a second YAML document"), std::string::npos);
 
   const std::string table = dir.Write("rows.yaml", "rows:\n  - name: a\n  - name: b\n");
-  const schema::ExperimentConfig rows = LoadConfig(table, {"rows.1.scenario.ranging.sigma_range_m=0.3"});
+  const ExperimentConfig rows = LoadConfig(table, {"rows.1.scenario.ranging.sigma_range_m=0.3"});
   EXPECT_EQ(rows.rows[0].scenario.ranging.sigma_range_m, 0.1);
   EXPECT_EQ(rows.rows[1].scenario.ranging.sigma_range_m, 0.3);
-  EXPECT_THROW(LoadConfig(table, {"rows.2.scenario.ranging.sigma_range_m=0.3"}), schema::InputError);
+  EXPECT_THROW(LoadConfig(table, {"rows.2.scenario.ranging.sigma_range_m=0.3"}), InputError);
 }
 
 TEST(Config, SolverByRegistryName) {
@@ -187,7 +187,7 @@ TEST(Config, SolverByRegistryName) {
 TEST(Config, NamesAreValidatedAgainstTheCallersRegistry) {
   testing::TempDir dir("own_solver");
   const std::string path = dir.Write("own.yaml", "estimator: {solver: my_solver}\n");
-  EXPECT_THROW(LoadConfig(path), schema::InputError);
+  EXPECT_THROW(LoadConfig(path), InputError);
   registry::Components mine = eval::MakeComponentsWithOracles();
   mine.solvers.Register("my_solver", "mine", [](const std::string&, const registry::SolverContext& context) {
     return std::make_unique<estimator::AnchorSolver>(context.options);
@@ -196,14 +196,14 @@ TEST(Config, NamesAreValidatedAgainstTheCallersRegistry) {
 }
 
 TEST(Config, MissingFileIsAnInputError) {
-  EXPECT_THROW(LoadConfig("/nonexistent/config.yaml"), schema::InputError);
+  EXPECT_THROW(LoadConfig("/nonexistent/config.yaml"), InputError);
 }
 
 TEST(Config, ResolvedYamlReadsBackToTheSameConfig) {
-  schema::ExperimentConfig config = LoadConfig(std::string(ANCHORBENCH_CONFIG_DIR) + "/tunnel.yaml");
+  ExperimentConfig config = LoadConfig(std::string(ANCHORBENCH_CONFIG_DIR) + "/tunnel.yaml");
   testing::TempDir dir("roundtrip");
   const std::string path = dir.Write("tunnel.yaml", ToYaml(config));
-  const schema::ExperimentConfig again = LoadConfig(path);
+  const ExperimentConfig again = LoadConfig(path);
   EXPECT_EQ(ToYaml(again), ToYaml(config));
   EXPECT_EQ(again.scenario.ranging.outlier_probability, config.scenario.ranging.outlier_probability);
   EXPECT_EQ(again.estimator.solver_options.nls.kernel, config.estimator.solver_options.nls.kernel);
@@ -217,25 +217,25 @@ TEST(ConfigFiles, BaseInheritanceOnlyRowsAndOverridesThatReachRows) {
   const std::string derived = dir.Write("derived.yaml",
                                         "base: table.yaml\nrealizations: 7\nonly_rows: [b]\n"
                                         "scenario:\n  tunnel: {height_m: 7}\nsweep:\n  estimator.filter.tau_m: 0.1:0.3:0.1\n");
-  const schema::ExperimentConfig config = LoadConfig(derived);
+  const ExperimentConfig config = LoadConfig(derived);
   EXPECT_EQ(config.realizations, 7);
   EXPECT_EQ(config.scenario.tunnel.width_m, 10.0);  // from the base file
   EXPECT_EQ(config.scenario.tunnel.height_m, 7.0);  // merged over it
-  ASSERT_EQ(schema::RowsOf(config).size(), 1u);
-  EXPECT_EQ(schema::RowsOf(config)[0].name, "b");
+  ASSERT_EQ(RowsOf(config).size(), 1u);
+  EXPECT_EQ(RowsOf(config)[0].name, "b");
   ASSERT_EQ(config.sweep.size(), 1u);
   EXPECT_EQ(config.sweep[0].second, "0.1:0.3:0.1");
 
   // An override of a base key also replaces the rows' own values of it.
-  const schema::ExperimentConfig swept = LoadConfig(derived, {"estimator.filter.tau_m=0.9"});
+  const ExperimentConfig swept = LoadConfig(derived, {"estimator.filter.tau_m=0.9"});
   EXPECT_EQ(swept.estimator.filter.consistency.tau_m, 0.9);
   EXPECT_EQ(swept.rows[0].estimator.filter.consistency.tau_m, 0.9);  // row a had its own 0.3
   EXPECT_EQ(swept.rows[1].estimator.filter.consistency.tau_m, 0.9);
 
   const std::string unknown_row = dir.Write("bad.yaml", "base: table.yaml\nonly_rows: [c]\n");
-  EXPECT_THROW(LoadConfig(unknown_row), schema::InputError);
+  EXPECT_THROW(LoadConfig(unknown_row), InputError);
   const std::string cycle = dir.Write("cycle.yaml", "base: cycle.yaml\n");
-  EXPECT_THROW(LoadConfig(cycle), schema::InputError);
+  EXPECT_THROW(LoadConfig(cycle), InputError);
 }
 
 // The shipped Table I calibration: scenario keys only, each with bounds around the configured
@@ -261,7 +261,7 @@ TEST(Calibration, ErrorsNameTheKey) {
   auto error_for = [&](const std::string& yaml) -> std::string {
     try {
       LoadCalibrationSpec(dir.Write("c.yaml", yaml));
-    } catch (const schema::InputError& e) {
+    } catch (const InputError& e) {
       return e.what();
     }
     return "";
@@ -291,21 +291,21 @@ namespace {
 // config of a manifest, a shard folder and a worker rank's plan are made from this text.
 TEST(Config, SeedsRoundTripExactly) {
   for (const std::uint64_t seed : {0ull, 2147483648ull, 4294967301ull, 9223372036854775807ull}) {
-    schema::ExperimentConfig config;
+    ExperimentConfig config;
     config.seed = seed;
     const std::string yaml = ToYaml(config);
     EXPECT_NE(yaml.find("seed: " + std::to_string(seed) + "\n"), std::string::npos) << yaml.substr(0, 40);
     EXPECT_EQ(LoadConfigText(yaml, "t.yaml", {}, testing::AllComponents()).seed, seed);
     EXPECT_NE(ToJson(config).find("\"seed\": " + std::to_string(seed) + ","), std::string::npos);
   }
-  EXPECT_THROW(LoadConfigText("seed: 9223372036854775808\n", "t.yaml", {}, testing::AllComponents()), schema::InputError);
-  EXPECT_THROW(LoadConfigText("seed: -1\n", "t.yaml", {}, testing::AllComponents()), schema::InputError);
+  EXPECT_THROW(LoadConfigText("seed: 9223372036854775808\n", "t.yaml", {}, testing::AllComponents()), InputError);
+  EXPECT_THROW(LoadConfigText("seed: -1\n", "t.yaml", {}, testing::AllComponents()), InputError);
 }
 
 std::string Refusal(const std::string& text) {
   try {
     LoadConfigText(text, "t.yaml", {}, testing::AllComponents());
-  } catch (const schema::InputError& e) {
+  } catch (const InputError& e) {
     return e.what();
   }
   return "accepted";

@@ -57,7 +57,7 @@ ChunkStore::ChunkStore(const fs::path& out, const Plan& plan, Mode mode, std::ui
     : folder_(ChunkStorePath(out)) {
   for (const fs::path& input : inputs) {
     if (io::IsInside(input, folder_)) {
-      throw schema::InputError(folder_.string() + ": holds " + input.string() + ", an input of this run; choose another "
+      throw InputError(folder_.string() + ": holds " + input.string() + ", an input of this run; choose another "
                                           "output folder");
     }
   }
@@ -69,7 +69,7 @@ ChunkStore::ChunkStore(const fs::path& out, const Plan& plan, Mode mode, std::ui
   const bool fresh = !fs::exists(folder_, error);
   if (fresh) {
     fs::create_directories(folder_, error);
-    if (error) throw schema::InputError(folder_.string() + ": cannot create: " + error.message());
+    if (error) throw InputError(folder_.string() + ": cannot create: " + error.message());
   } else {
     TakeOver(plan, mode);
   }
@@ -79,7 +79,7 @@ ChunkStore::ChunkStore(const fs::path& out, const Plan& plan, Mode mode, std::ui
     reservation_ = io::Reservation(folder_ / kReservation, expected_bytes > held ? expected_bytes - held : 0,
                                    folder_.string(), "the chunks of this run");
     if (fresh) WritePlanFile(folder_, plan);
-  } catch (const schema::InputError&) {
+  } catch (const InputError&) {
     if (fresh) fs::remove_all(folder_, error);
     throw;
   }
@@ -87,12 +87,12 @@ ChunkStore::ChunkStore(const fs::path& out, const Plan& plan, Mode mode, std::ui
 
 void ChunkStore::TakeOver(const Plan& plan, Mode mode) {
   if (mode == Mode::kFresh) {
-    throw schema::InputError(folder_.string() + ": holds " + std::to_string(CountChunkFiles(folder_)) +
+    throw InputError(folder_.string() + ": holds " + std::to_string(CountChunkFiles(folder_)) +
                      " finished chunks of an interrupted run: --resume continues it, --overwrite discards it");
   }
   const std::string identity = IdentityIn(folder_);
   if (identity != plan.identity()) {
-    throw schema::InputError(folder_.string() + ": holds chunks of another run (plan " + identity + ", this run's " +
+    throw InputError(folder_.string() + ": holds chunks of another run (plan " + identity + ", this run's " +
                      plan.identity() + "): --overwrite discards them");
   }
   std::error_code error;
@@ -100,11 +100,11 @@ void ChunkStore::TakeOver(const Plan& plan, Mode mode) {
     const fs::path path = ChunkPath(chunk);
     if (!fs::exists(path, error)) continue;
     if (fs::is_directory(path, error)) {
-      throw schema::InputError(path.string() + ": is a folder where the store keeps a chunk file; remove it, or --overwrite");
+      throw InputError(path.string() + ": is a folder where the store keeps a chunk file; remove it, or --overwrite");
     }
     try {
       finished_.emplace(chunk, ReadChunkFile(plan, chunk, path.string()));
-    } catch (const schema::InputError& e) {
+    } catch (const InputError& e) {
       // Torn by a crash of the machine (chunks are not flushed), edited, another run's: computed again.
       if (unreadable_++ == 0) first_unreadable_ = e.what();
     }
@@ -129,7 +129,7 @@ void ChunkStore::Save(int chunk, const std::string& text) {
   if (write_error || error) {
     std::error_code ignored;
     fs::remove(temporary, ignored);
-    throw schema::InputError(path.string() + ": cannot write the chunk: " +
+    throw InputError(path.string() + ": cannot write the chunk: " +
                      (error ? error.message() : std::string(std::strerror(write_error ? write_error : EIO))));
   }
 }

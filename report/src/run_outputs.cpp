@@ -32,7 +32,7 @@ std::string Interval(const std::optional<double>& lo, const std::optional<double
   return lo ? " [" + FormatFixed(*lo, decimals) + ", " + FormatFixed(*hi, decimals) + "]" : std::string();
 }
 
-void WriteOurTable(std::ostream& out, const std::vector<MethodSummary>& summaries, const std::vector<schema::RowConfig>& rows,
+void WriteOurTable(std::ostream& out, const std::vector<MethodSummary>& summaries, const std::vector<RowConfig>& rows,
                    const schema::ExperimentConfig& config) {
   std::string compared;
   for (const std::string& trigger : rows.front().estimator.triggers) compared += (compared.empty() ? "" : " vs ") + trigger;
@@ -62,7 +62,7 @@ std::string Compare(const PaperCell& cell) {
   return s.str();
 }
 
-std::string Conclusions(const schema::RowConfig& row, const MethodSummary& fixed, const MethodSummary& gated) {
+std::string Conclusions(const RowConfig& row, const MethodSummary& fixed, const MethodSummary& gated) {
   const bool avg_holds = gated.avg_m && fixed.avg_m && *gated.avg_m < *fixed.avg_m;
   const bool ratio_holds = gated.ratio_pct && fixed.ratio_pct && *gated.ratio_pct < *fixed.ratio_pct;
   return "- row " + row.name + ": gated Avg < fixed Avg: " + (avg_holds ? "yes" : "NO") +
@@ -78,7 +78,7 @@ const MethodSummary* Find(const std::vector<MethodSummary>& summaries, int row, 
 
 // One table line per method of the paper (paper / ours), scored by ScoreCells.
 void WriteAgainstThePaper(std::ostream& out, const std::vector<MethodSummary>& summaries,
-                          const std::vector<schema::RowConfig>& rows) {
+                          const std::vector<RowConfig>& rows) {
   out << "\n## Against the paper (paper / ours, relative difference; ! = outside +-25%)\n\n"
       << "| # | Method | Avg. (m) | Med. (m) | Init. | >1m | Ratio (%) |\n|---|---|---|---|---|---|---|\n";
   const std::vector<PaperCell> cells = CompareWithPaper(summaries, rows);
@@ -102,7 +102,7 @@ void WriteAgainstThePaper(std::ostream& out, const std::vector<MethodSummary>& s
       << "The paper's conclusions, row by row:\n" << conclusions;
 }
 
-void WriteAttemptLine(std::ostream& out, const schema::Attempt& a, const std::vector<schema::RowConfig>& rows) {
+void WriteAttemptLine(std::ostream& out, const Attempt& a, const std::vector<RowConfig>& rows) {
   const schema::AttemptEvaluation none;
   const schema::AttemptEvaluation& e = a.evaluation ? *a.evaluation : none;
   out << rows[static_cast<std::size_t>(a.row)].name << ',' << a.realization << ',' << a.anchor_id << ','
@@ -119,15 +119,15 @@ void WriteAttemptLine(std::ostream& out, const schema::Attempt& a, const std::ve
 
 }  // namespace
 
-std::string AttemptLine(const schema::Attempt& attempt, const std::vector<schema::RowConfig>& rows) {
+std::string AttemptLine(const Attempt& attempt, const std::vector<RowConfig>& rows) {
   std::ostringstream line;
   WriteAttemptLine(line, attempt, rows);
   return line.str();
 }
 
-void WriteAttempts(std::ostream& out, const std::vector<schema::Attempt>& attempts, const std::vector<schema::RowConfig>& rows) {
+void WriteAttempts(std::ostream& out, const std::vector<Attempt>& attempts, const std::vector<RowConfig>& rows) {
   out << kAttemptsColumns << '\n';
-  for (const schema::Attempt& a : attempts) {
+  for (const Attempt& a : attempts) {
     WriteAttemptLine(out, a, rows);
     out << '\n';
   }
@@ -138,7 +138,7 @@ void WriteAttemptLines(std::ostream& out, const std::vector<std::string>& lines)
   for (const std::string& line : lines) out << line << '\n';
 }
 
-std::string SummaryCsvFields(const MethodSummary& s, const std::vector<schema::RowConfig>& rows) {
+std::string SummaryCsvFields(const MethodSummary& s, const std::vector<RowConfig>& rows) {
   std::ostringstream out;
   out << rows[static_cast<std::size_t>(s.row)].name << ',' << s.method << ',' << FormatOptional(s.avg_m) << ','
       << FormatOptional(s.med_m) << ',' << s.init << ',' << s.gt1m << ',' << FormatOptional(s.ratio_pct) << ','
@@ -150,8 +150,8 @@ std::string SummaryCsvFields(const MethodSummary& s, const std::vector<schema::R
   return out.str();
 }
 
-void WriteSummaryCsv(std::ostream& out, const std::vector<MethodSummary>& summaries, const std::vector<schema::RowConfig>& rows) {
-  const bool with_paper = std::any_of(rows.begin(), rows.end(), [](const schema::RowConfig& r) { return r.paper.has_value(); });
+void WriteSummaryCsv(std::ostream& out, const std::vector<MethodSummary>& summaries, const std::vector<RowConfig>& rows) {
+  const bool with_paper = std::any_of(rows.begin(), rows.end(), [](const RowConfig& r) { return r.paper.has_value(); });
   out << kSummaryColumns << ",t_init_mean_s,t_init_med_s"
       << (with_paper ? ",paper_avg_m,paper_med_m,paper_init,paper_gt1m,paper_ratio_pct" : "") << '\n';
   for (const MethodSummary& s : summaries) {
@@ -170,14 +170,14 @@ void WriteSummaryCsv(std::ostream& out, const std::vector<MethodSummary>& summar
 }
 
 void WriteSummaryMarkdown(std::ostream& out, const std::vector<MethodSummary>& summaries,
-                          const std::vector<schema::RowConfig>& rows, const schema::ExperimentConfig& config) {
+                          const std::vector<RowConfig>& rows, const schema::ExperimentConfig& config) {
   WriteOurTable(out, summaries, rows, config);
-  if (std::any_of(rows.begin(), rows.end(), [](const schema::RowConfig& r) { return r.paper.has_value(); })) {
+  if (std::any_of(rows.begin(), rows.end(), [](const RowConfig& r) { return r.paper.has_value(); })) {
     WriteAgainstThePaper(out, summaries, rows);
   }
 }
 
-std::string TimingCsvFields(const MethodSummary& s, const std::vector<schema::RowConfig>& rows) {
+std::string TimingCsvFields(const MethodSummary& s, const std::vector<RowConfig>& rows) {
   std::ostringstream out;
   out << rows[static_cast<std::size_t>(s.row)].name << ',' << s.method << ',' << s.attempts << ',' << s.init << ','
       << FormatFixed(s.compute_s, 6) << ',' << (s.attempts ? FormatFixed(1e6 * s.compute_s / s.attempts, 1) : "") << ','
@@ -185,7 +185,7 @@ std::string TimingCsvFields(const MethodSummary& s, const std::vector<schema::Ro
   return out.str();
 }
 
-void WriteTimingCsv(std::ostream& out, const std::vector<MethodSummary>& summaries, const std::vector<schema::RowConfig>& rows) {
+void WriteTimingCsv(std::ostream& out, const std::vector<MethodSummary>& summaries, const std::vector<RowConfig>& rows) {
   out << kTimingColumns << '\n';
   for (const MethodSummary& s : summaries) out << TimingCsvFields(s, rows) << '\n';
 }

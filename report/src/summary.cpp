@@ -28,11 +28,11 @@ double MedianInPlace(std::vector<double>& values) {
   return lower + 0.5 * (upper - lower);
 }
 
-MethodSummary SummarizeOne(const std::vector<const schema::Attempt*>& attempts, const std::vector<RealizationSums>& sums,
+MethodSummary SummarizeOne(const std::vector<const Attempt*>& attempts, const std::vector<RealizationSums>& sums,
                            int bootstrap_resamples, sim::RandomStream rng) {
   MethodSummary s;
   std::vector<double> errors, times, nees;
-  for (const schema::Attempt* a : attempts) {
+  for (const Attempt* a : attempts) {
     ++s.attempts;
     s.compute_s += a->compute_s;
     if (!a->initialized) continue;
@@ -113,14 +113,14 @@ std::uint32_t MethodSubstream(const std::string& method) {
 
 }  // namespace
 
-std::vector<MethodSummary> Summarize(const std::vector<schema::Attempt>& attempts, const std::vector<schema::RowConfig>& rows,
+std::vector<MethodSummary> Summarize(const std::vector<Attempt>& attempts, const std::vector<schema::RowConfig>& rows,
                                      int realizations, int bootstrap_resamples, std::uint64_t seed) {
   std::vector<MethodSummary> summaries;
   for (int row = 0; row < static_cast<int>(rows.size()); ++row) {
     for (const std::string& method : rows[static_cast<std::size_t>(row)].estimator.triggers) {
-      std::vector<const schema::Attempt*> selected;
+      std::vector<const Attempt*> selected;
       std::vector<RealizationSums> sums(static_cast<std::size_t>(realizations));
-      for (const schema::Attempt& a : attempts) {
+      for (const Attempt& a : attempts) {
         if (a.row != row || a.method != method) continue;
         selected.push_back(&a);
         if (!a.initialized) continue;

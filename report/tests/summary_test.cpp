@@ -13,10 +13,10 @@ using schema::Attempt;
 using schema::kFixedWindowTrigger;
 using schema::RowConfig;
 
-schema::Attempt Initialized(int realization, double error_m) {
-  schema::Attempt a;
+Attempt Initialized(int realization, double error_m) {
+  Attempt a;
   a.realization = realization;
-  a.method = schema::kFixedWindowTrigger;
+  a.method = kFixedWindowTrigger;
   a.initialized = true;
   a.evaluation = schema::AttemptEvaluation{};
   a.evaluation->error_m = error_m;
@@ -27,13 +27,13 @@ schema::Attempt Initialized(int realization, double error_m) {
 TEST(Summary, TableColumnsWorkedByHand) {
   // Errors 0.1, 0.2, 0.3, 2.0 (initialized) and one attempt not initialized:
   // Avg = 2.6 / 4 = 0.65, Med = (0.2 + 0.3) / 2 = 0.25, Init = 4, >1m = 1, Ratio = 25%.
-  std::vector<schema::Attempt> attempts = {Initialized(0, 0.1), Initialized(0, 0.2), Initialized(1, 0.3), Initialized(1, 2.0)};
-  schema::Attempt missed;
+  std::vector<Attempt> attempts = {Initialized(0, 0.1), Initialized(0, 0.2), Initialized(1, 0.3), Initialized(1, 2.0)};
+  Attempt missed;
   missed.realization = 1;
-  missed.method = schema::kFixedWindowTrigger;
+  missed.method = kFixedWindowTrigger;
   missed.status = "too_few_samples";
   attempts.push_back(missed);
-  schema::RowConfig row;
+  RowConfig row;
   row.estimator = anchorbench::testing::PaperEstimator();  // its two triggers
   const auto summaries = Summarize(attempts, {row}, 2, 500, 1);
   ASSERT_EQ(summaries.size(), 2u);  // fixed_window, then pdop_closest_point
@@ -59,11 +59,11 @@ TEST(Summary, TableColumnsWorkedByHand) {
 // A method's bootstrap interval depends on its own attempts only: another trigger in front of it
 // in the config does not move it.
 TEST(Summary, AddingATriggerLeavesTheOthersIntervalsAlone) {
-  std::vector<schema::Attempt> attempts;
+  std::vector<Attempt> attempts;
   for (int r = 0; r < 10; ++r) attempts.push_back(Initialized(r, 0.1 * (r + 1)));
-  schema::RowConfig alone, behind;
-  alone.estimator.triggers = {schema::kFixedWindowTrigger};
-  behind.estimator.triggers = {"pdop_closest_point", schema::kFixedWindowTrigger};
+  RowConfig alone, behind;
+  alone.estimator.triggers = {kFixedWindowTrigger};
+  behind.estimator.triggers = {"pdop_closest_point", kFixedWindowTrigger};
   const auto a = Summarize(attempts, {alone}, 10, 200, 3);
   const auto b = Summarize(attempts, {behind}, 10, 200, 3);
   ASSERT_EQ(a.size(), 1u);
@@ -86,10 +86,10 @@ TEST(Summary, WilsonIntervalIsMeaningfulAtZero) {
   EXPECT_NEAR(all.lo, 1.0 - 0.2775, 1e-4);
   EXPECT_DOUBLE_EQ(all.hi, 1.0);
   EXPECT_FALSE(WilsonInterval(0, 0));
-  std::vector<schema::Attempt> attempts;
+  std::vector<Attempt> attempts;
   for (int r = 0; r < 20; ++r) attempts.push_back(Initialized(r, 0.1));
-  schema::RowConfig row;
-  row.estimator.triggers = {schema::kFixedWindowTrigger};
+  RowConfig row;
+  row.estimator.triggers = {kFixedWindowTrigger};
   const MethodSummary s = Summarize(attempts, {row}, 20, 100, 1)[0];
   EXPECT_EQ(*s.ratio_lo, 0.0);
   EXPECT_NEAR(*s.ratio_hi, 100.0 * 0.1611, 0.01);  // 0 of 20: up to 16%, not [0, 0]
@@ -116,11 +116,11 @@ TEST(Summary, ManifestNamesWhatReproducesTheRun) {
 }
 
 TEST(Summary, AttemptsCsvLeavesCellsEmptyWhereThereIsNothing) {
-  schema::Attempt a;
-  a.method = schema::kFixedWindowTrigger;
+  Attempt a;
+  a.method = kFixedWindowTrigger;
   a.status = "no_data";
   std::ostringstream out;
-  WriteAttempts(out, {a}, {schema::RowConfig{"r", {}, {}, std::nullopt}});
+  WriteAttempts(out, {a}, {RowConfig{"r", {}, {}, std::nullopt}});
   EXPECT_EQ(out.str().substr(out.str().find('\n') + 1), "r,0,0,fixed_window,0,,0,0,,,,,,,,,no_data,,,,,\n");
 }
 
