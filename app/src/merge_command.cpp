@@ -6,6 +6,7 @@
 #include "anchorbench/config/load_config.hpp"
 #include "anchorbench/schema/input_error.hpp"
 #include "anchorbench/io/result_folder.hpp"
+#include "anchorbench/engine/commit.hpp"
 #include "anchorbench/engine/shard_folder.hpp"
 #include "monte_carlo_command.hpp"
 
@@ -108,9 +109,9 @@ int MergeCommand(const MergeArgs& args, const AppContext& app) {
   if (infos.front().command == "run") {
     schema::ExperimentConfig config = plan.experiments().front();
     config.name = infos.front().name;
-    markdown = CommitRun(*out, config, joined.front(), info);
+    markdown = engine::CommitRun(*out, config, joined.front(), info);
   } else {
-    markdown = CommitSweep(*out, infos.front().name, inputs.axes, plan, joined, info);
+    markdown = engine::CommitSweep(*out, infos.front().name, inputs.axes, plan, joined, info);
   }
   if (!args.quiet) std::cout << markdown;
   return 0;

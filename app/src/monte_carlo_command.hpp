@@ -11,9 +11,8 @@
 #include "anchorbench/io/result_folder.hpp"
 #include "anchorbench/report/run_outputs.hpp"
 #include "anchorbench/schema/experiment.hpp"
-#include "anchorbench/schema/sweep.hpp"
-#include "anchorbench/engine/run_plan.hpp"
-#include "anchorbench/engine/shard_folder.hpp"
+#include "anchorbench/engine/job.hpp"
+#include "anchorbench/engine/shard.hpp"
 #include "commands.hpp"
 #include "progress.hpp"
 
@@ -34,40 +33,17 @@ std::vector<std::filesystem::path> InputsOf(const MonteCarloArgs& args);
 std::unique_ptr<io::ResultFolder> OpenResultFolder(const MonteCarloArgs& args, const MonteCarloSetup& setup,
                                                   std::uintmax_t expected_bytes);
 
-// The bytes run and sweep claim for their results: a run's attempts.csv (lines of 250-310 bytes)
-// and tables; a shard's folder of chunk files.
-std::uintmax_t RunResultBytes(const engine::Plan& plan, const MonteCarloArgs& args);
+// Which share of the plan --shard asks for (none: all of it).
+std::optional<engine::Shard> ShardOf(const MonteCarloArgs& args);
 
-// What run and sweep share once their plan is made: which command on which experiment, and what
-// a shard folder records to rebuild the plan.
-struct PlanJob {
-  const engine::Plan& plan;
-  std::string command;  // "run" or "sweep"
-  std::string name;     // the experiment's
-  engine::ShardInputs inputs;
-};
+// The job computed (engine/job.hpp) with the command line's store mode, shard and threads, with
+// progress on stderr (and a damaged store's note, even with --quiet).
 struct PlanOutcome {
   std::optional<std::vector<engine::ExperimentAttempts>> experiments;  // none for a shard: its folder is written
   double wall_time_s = 0.0;
 };
-// Computes the job's chunks (all, or --shard's) into the chunk store beside `out` (--resume takes
-// its chunks, --overwrite discards them, an interrupted store is otherwise refused; the space of
-// the chunks still to come is claimed first), with progress. A shard's chunks become its shard folder, committed here; a whole plan's come back
-// joined for the command to commit, after which RemoveStore(out).
-PlanOutcome ComputePlan(const MonteCarloArgs& args, const MonteCarloSetup& setup, const PlanJob& job,
+PlanOutcome ComputePlan(const MonteCarloArgs& args, const MonteCarloSetup& setup, const engine::Job& job,
                         const AppContext& app, io::ResultFolder& out);
-void RemoveStore(const io::ResultFolder& out);
-
-// A run's results from its attempts (run and merge write the same): attempts.csv, summary.csv,
-// summary.md, timing.csv and manifest.json into `out`, committed; returns summary.md's text.
-std::string CommitRun(io::ResultFolder& out, const schema::ExperimentConfig& config,
-                      const engine::ExperimentAttempts& run, const report::RunInfo& info);
-
-// A sweep's results (sweep and merge): sweep.csv, timing.csv, sweep.md and manifest.json, committed;
-// returns sweep.md's text. `plan` holds one experiment per grid point of `axes`.
-std::string CommitSweep(io::ResultFolder& out, const std::string& name, const std::vector<schema::SweepAxis>& axes,
-                        const engine::Plan& plan, const std::vector<engine::ExperimentAttempts>& points,
-                        report::RunInfo info);
 
 // The manifest's record: the command line's changes (--realizations and any `more`), threads,
 // wall time, revision and the resolved config.

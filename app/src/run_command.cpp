@@ -2,6 +2,7 @@
 
 #include "anchorbench/config/load_config.hpp"
 #include "anchorbench/io/result_folder.hpp"
+#include "anchorbench/engine/commit.hpp"
 #include "anchorbench/engine/monte_carlo.hpp"
 #include "monte_carlo_command.hpp"
 
@@ -13,16 +14,16 @@ int RunCommand(const RunArgs& args, const AppContext& app) {
   engine::CheckExperiment(config, app.components);
   const MonteCarloSetup setup = SetUpMonteCarlo(args, config.name);
   const engine::Plan plan({config});
-  const std::unique_ptr<io::ResultFolder> out = OpenResultFolder(args, setup, RunResultBytes(plan, args));
+  const std::unique_ptr<io::ResultFolder> out = OpenResultFolder(args, setup, engine::RunResultBytes(plan, ShardOf(args)));
 
-  const PlanOutcome run = ComputePlan(args, setup, {plan, "run", config.name, {config::ToYaml(config), {}}}, app, *out);
+  const PlanOutcome run = ComputePlan(args, setup, {plan, "run", config.name, app.revision, {config::ToYaml(config), {}}}, app, *out);
   if (!run.experiments) return 0;  // a shard: its folder is written
   std::vector<std::string> command_line;
   if (args.seed) command_line.push_back("--seed " + std::to_string(*args.seed));
   for (const std::string& assignment : args.overrides) command_line.push_back("--set " + assignment);
   const std::string markdown =
-      CommitRun(*out, config, run.experiments->front(), RunInfoOf(args, setup, app, config, run.wall_time_s, command_line));
-  RemoveStore(*out);
+      engine::CommitRun(*out, config, run.experiments->front(), RunInfoOf(args, setup, app, config, run.wall_time_s, command_line));
+  engine::RemoveStore(*out);
   if (!args.quiet) std::cout << markdown;
   return 0;
 }

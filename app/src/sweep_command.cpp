@@ -3,6 +3,7 @@
 #include "anchorbench/config/load_config.hpp"
 #include "anchorbench/io/result_folder.hpp"
 #include "anchorbench/schema/input_error.hpp"
+#include "anchorbench/engine/commit.hpp"
 #include "anchorbench/engine/monte_carlo.hpp"
 #include "anchorbench/schema/sweep.hpp"
 #include "monte_carlo_command.hpp"
@@ -39,13 +40,8 @@ int SweepCommand(const SweepArgs& args, const AppContext& app) {
   const std::vector<schema::ExperimentConfig> configs = PointConfigs(args, grid, app);
   const MonteCarloSetup setup = SetUpMonteCarlo(args, base.name);
   const engine::Plan plan(configs);
-  // Per point, row and trigger a line of ~200 bytes in each of three files; a shard's chunk files.
-  std::uintmax_t lines = 0;
-  for (const schema::ExperimentConfig& config : configs) {
-    for (const schema::RowConfig& row : schema::RowsOf(config)) lines += row.estimator.triggers.size();
-  }
-  const std::uintmax_t bytes = args.shard.empty() ? 600 * lines + (1 << 16) : RunResultBytes(plan, args);
-  const std::unique_ptr<io::ResultFolder> out = OpenResultFolder(args, setup, bytes);
+  const std::unique_ptr<io::ResultFolder> out =
+      OpenResultFolder(args, setup, engine::SweepResultBytes(plan, ShardOf(args)));
   schema::ExperimentConfig resolved = base;
   if (args.realizations) resolved.realizations = *args.realizations;
   const engine::ShardInputs inputs{config::ToYaml(resolved), axes};
@@ -54,14 +50,14 @@ int SweepCommand(const SweepArgs& args, const AppContext& app) {
                          "'realizations' with --realizations?): it cannot be sharded");
   }
 
-  const PlanOutcome points = ComputePlan(args, setup, {plan, "sweep", base.name, inputs}, app, *out);
+  const PlanOutcome points = ComputePlan(args, setup, {plan, "sweep", base.name, app.revision, inputs}, app, *out);
   if (!points.experiments) return 0;  // a shard: its folder is written
   std::vector<std::string> command_line;
   for (const std::string& axis : args.axes) command_line.push_back("--set " + axis);
   const std::string markdown =
-      CommitSweep(*out, base.name, axes, plan, *points.experiments,
+      engine::CommitSweep(*out, base.name, axes, plan, *points.experiments,
                   RunInfoOf(args, setup, app, base, points.wall_time_s, command_line));
-  RemoveStore(*out);
+  engine::RemoveStore(*out);
   if (!args.quiet) std::cout << markdown;
   return 0;
 }

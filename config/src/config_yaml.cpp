@@ -224,6 +224,16 @@ YAML::Node LoadConfigYamlText(const std::string& text, const std::string& source
   return root;
 }
 
+ConfigDocument ReadConfigDocument(const std::string& path) {
+  return {path, WithBase(ReadConfigFile(path), path, 0, nullptr)};
+}
+
+YAML::Node WithOverrides(const ConfigDocument& document, const std::vector<std::string>& overrides) {
+  YAML::Node root = YAML::Clone(document.root);
+  for (const std::string& assignment : overrides) ApplyOverride(root, assignment);
+  return root;
+}
+
 std::vector<std::string> ConfigFiles(const std::string& path) {
   std::vector<std::string> files = {path};
   WithBase(ReadConfigFile(path), path, 0, &files);

@@ -88,6 +88,11 @@ schema::ExperimentConfig LoadConfig(const std::string& path, const std::vector<s
   return FromYaml(LoadConfigYaml(path, overrides), path, components);
 }
 
+schema::ExperimentConfig LoadConfig(const ConfigDocument& document, const std::vector<std::string>& overrides,
+                                    const registry::Components& components) {
+  return FromYaml(WithOverrides(document, overrides), document.source, components);
+}
+
 schema::ExperimentConfig LoadConfigText(const std::string& text, const std::string& source,
                                         const std::vector<std::string>& overrides,
                                         const registry::Components& components) {

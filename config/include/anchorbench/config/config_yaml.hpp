@@ -23,6 +23,16 @@ YAML::Node LoadConfigYaml(const std::string& path, const std::vector<std::string
 YAML::Node LoadConfigYamlText(const std::string& text, const std::string& source,
                               const std::vector<std::string>& overrides);
 
+// A config file read once with its bases laid under it, before any override: what the many
+// evaluations of one experiment (a calibration's) start from, so that none reads the disk again.
+struct ConfigDocument {
+  std::string source;  // the file, as messages name it
+  YAML::Node root;
+};
+ConfigDocument ReadConfigDocument(const std::string& path);
+// A copy of the document with `overrides` applied (the document is left as it was).
+YAML::Node WithOverrides(const ConfigDocument& document, const std::vector<std::string>& overrides);
+
 // Every file reading `path` reads: the file itself, then its base, its base's base, ... (what a
 // command must never overwrite or delete).
 std::vector<std::string> ConfigFiles(const std::string& path);

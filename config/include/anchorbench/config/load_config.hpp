@@ -3,6 +3,7 @@
 #include <string>
 #include <vector>
 
+#include "anchorbench/config/config_yaml.hpp"
 #include "anchorbench/registry/components.hpp"
 #include "anchorbench/schema/experiment.hpp"
 
@@ -20,6 +21,10 @@ schema::ExperimentConfig LoadConfig(const std::string& path, const std::vector<s
 schema::ExperimentConfig LoadConfigText(const std::string& text, const std::string& source,
                                         const std::vector<std::string>& overrides,
                                         const registry::Components& components);
+
+// The same from a document read once (ReadConfigDocument): no file is read again.
+schema::ExperimentConfig LoadConfig(const ConfigDocument& document, const std::vector<std::string>& overrides,
+                                    const registry::Components& components);
 
 // The `estimator` section of a file only (replay --config).
 schema::EstimatorConfig LoadEstimatorConfig(const std::string& path, const registry::Components& components);
