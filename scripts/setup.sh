@@ -8,6 +8,7 @@ packages=(
   libeigen3-dev                  # linear algebra
   libnlopt-cxx-dev               # NLopt, C++ API (alpha search of the adaptive kernel)
   libyaml-cpp-dev libcli11-dev   # configs, command line
+  nlohmann-json3-dev             # manifests and summaries (JSON)
   libgtest-dev libgmock-dev      # tests
   libbenchmark-dev               # benchmarks
   python3-matplotlib python3-numpy  # plot_scripts/ (run with /usr/bin/python3)

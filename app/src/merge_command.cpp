@@ -104,7 +104,7 @@ int MergeCommand(const MergeArgs& args, const AppContext& app) {
   info.config_path = (first / "config.yaml").string();
   info.revision = infos.front().revision;
   for (const std::string& shard : args.shards) info.command_line.push_back("merge " + shard);
-  info.resolved_config_json = config::ToJson(config::LoadConfigText(inputs.config_yaml, "config.yaml", {}, app.components));
+  info.resolved_config = config::ToJson(config::LoadConfigText(inputs.config_yaml, "config.yaml", {}, app.components));
   std::string markdown;
   if (infos.front().command == "run") {
     schema::ExperimentConfig config = plan.experiments().front();

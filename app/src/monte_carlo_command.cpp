@@ -73,7 +73,7 @@ report::RunInfo RunInfoOf(const MonteCarloArgs& args, const MonteCarloSetup& set
   info.wall_time_s = wall_time_s;
   if (args.realizations) info.command_line.push_back("--realizations " + std::to_string(*args.realizations));
   for (std::string& item : more_command_line) info.command_line.push_back(std::move(item));
-  info.resolved_config_json = config::ToJson(config);
+  info.resolved_config = config::ToJson(config);
   return info;
 }
 

@@ -7,6 +7,18 @@ trap 'rm -rf "$dir"' EXIT
 failures=0
 fail() { echo "FAIL: $*"; failures=$((failures + 1)); }
 
+# drop_tally FILE REASON: a replay_summary.json's count (read as JSON, never by its layout) of REASON over every anchor and tag, and
+# the first line it names: "COUNT FIRST".
+drop_tally() {
+  /usr/bin/python3 - "$1" "$2" <<'PY'
+import json, sys
+j = json.load(open(sys.argv[1]))
+tallies = [reasons[sys.argv[2]] for group in ("range_drops_by_anchor", "pose_drops_by_tag")
+           for reasons in j[group].values() if sys.argv[2] in reasons]
+print(sum(t["count"] for t in tallies), tallies[0]["first"] if tallies else "")
+PY
+}
+
 # small_table FILE: a small two-row table of a short tunnel (a few seconds per run), with made-up
 # paper cells on both rows.
 small_table() {

@@ -6,25 +6,11 @@
 
 #include "anchorbench/config/config_yaml.hpp"
 #include "anchorbench/config/yaml_section.hpp"
-#include "anchorbench/io/format.hpp"
 #include "anchorbench/schema/input_error.hpp"
 #include "visitors.hpp"
 
 namespace anchorbench::config {
 namespace {
-
-std::string JsonString(const std::string& text) {
-  std::string out = "\"";
-  for (char c : text) {
-    if (c == '"' || c == '\\') out += '\\';
-    if (c == '\n') {
-      out += "\\n";
-      continue;
-    }
-    out += c;
-  }
-  return out + "\"";
-}
 
 bool IsWholeNumber(const std::string& text) {
   const std::size_t digits = text.find_first_not_of("0123456789", text.rfind('-', 0) == 0 ? 1 : 0);
@@ -32,30 +18,38 @@ bool IsWholeNumber(const std::string& text) {
          (text.size() == 1 || text[text[0] == '-' ? 1 : 0] != '0');
 }
 
-// YAML (as yaml-cpp holds it) to JSON: mappings, lists, numbers and booleans as such, text quoted.
-std::string YamlToJson(const YAML::Node& node, int indent) {
-  const std::string pad(static_cast<std::size_t>(indent + 2), ' ');
+// YAML (as yaml-cpp holds it) to JSON: mappings in their order, lists, numbers and booleans as
+// such, text as strings.
+nlohmann::ordered_json YamlToJson(const YAML::Node& node) {
   if (node.IsMap()) {
-    std::string out = "{";
-    bool first = true;
-    for (const auto& entry : node) {
-      out += (first ? "\n" : ",\n") + pad + JsonString(entry.first.as<std::string>()) + ": " +
-             YamlToJson(entry.second, indent + 2);
-      first = false;
-    }
-    return out + "\n" + std::string(static_cast<std::size_t>(indent), ' ') + "}";
+    nlohmann::ordered_json object = nlohmann::ordered_json::object();
+    for (const auto& entry : node) object[entry.first.as<std::string>()] = YamlToJson(entry.second);
+    return object;
   }
   if (node.IsSequence()) {
-    std::string out = "[";
-    for (std::size_t i = 0; i < node.size(); ++i) out += (i ? ",\n" : "\n") + pad + YamlToJson(node[i], indent + 2);
-    return out + "\n" + std::string(static_cast<std::size_t>(indent), ' ') + "]";
+    nlohmann::ordered_json list = nlohmann::ordered_json::array();
+    for (const YAML::Node& item : node) list.push_back(YamlToJson(item));
+    return list;
   }
   const std::string scalar = node.Scalar();
+  if (scalar == "true" || scalar == "false") return scalar == "true";
+  // Whole numbers exactly (a seed above 2^53 would not survive a double).
+  if (IsWholeNumber(scalar)) {
+    return scalar[0] == '-' ? nlohmann::ordered_json(std::stoll(scalar)) : nlohmann::ordered_json(std::stoull(scalar));
+  }
   double number = 0.0;
-  if (scalar == "true" || scalar == "false") return scalar;
-  if (IsWholeNumber(scalar)) return scalar;  // exactly (a seed above 2^53 would not survive a double)
-  if (YAML::convert<double>::decode(node, number) && std::isfinite(number)) return io::FormatNumber(number);
-  return JsonString(scalar);
+  if (YAML::convert<double>::decode(node, number) && std::isfinite(number)) return number;
+  return scalar;
+}
+
+// The resolved configuration as a YAML tree in the file schema.
+YAML::Node ToYamlNode(const schema::ExperimentConfig& config) {
+  schema::ExperimentConfig copy = config;
+  YAML::Node root(YAML::NodeType::Map);
+  YamlWriter writer(root);
+  const registry::Components no_parts;  // the writer does not check names
+  visit::Experiment(writer, copy, no_parts);
+  return root;
 }
 
 }  // namespace
@@ -104,18 +98,11 @@ schema::EstimatorConfig LoadEstimatorConfig(const std::string& path, const regis
 }
 
 std::string ToYaml(const schema::ExperimentConfig& config) {
-  schema::ExperimentConfig copy = config;
-  YAML::Node root(YAML::NodeType::Map);
-  YamlWriter writer(root);
-  const registry::Components no_parts;  // the writer does not check names
-  visit::Experiment(writer, copy, no_parts);
   YAML::Emitter out;
-  out << root;
+  out << ToYamlNode(config);
   return out.c_str();
 }
 
-std::string ToJson(const schema::ExperimentConfig& config, int indent) {
-  return YamlToJson(YAML::Load(ToYaml(config)), indent);
-}
+nlohmann::ordered_json ToJson(const schema::ExperimentConfig& config) { return YamlToJson(ToYamlNode(config)); }
 
 }  // namespace anchorbench::config

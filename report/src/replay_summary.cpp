@@ -3,13 +3,14 @@
 #include <string>
 #include <vector>
 
+#include <nlohmann/json.hpp>
+
 #include "anchorbench/io/format.hpp"
 
 namespace anchorbench::report {
 namespace {
 
 using io::FormatNumber;
-using io::JsonString;
 
 using ById = std::map<int, std::map<io::Drop, io::DropTally>>;
 
@@ -32,47 +33,40 @@ std::map<io::Drop, io::DropTally> ByReason(const ById& by_id) {
   return out;
 }
 
-void JsonDrops(std::ostream& out, const ById& by_id, const char* indent) {
-  out << "{";
-  bool first_id = true;
+// {id: {reason: {count, first}}}, ids ascending (as JSON keys: text).
+nlohmann::ordered_json JsonDrops(const ById& by_id) {
+  nlohmann::ordered_json drops = nlohmann::ordered_json::object();
   for (const auto& [id, reasons] : by_id) {
-    out << (first_id ? "\n" : ",\n") << indent << "  \"" << id << "\": {";
-    first_id = false;
-    bool first_reason = true;
-    for (const auto& [reason, tally] : reasons) {
-      out << (first_reason ? "" : ", ") << '"' << io::NameOf(reason) << "\": {\"count\": " << tally.count
-          << ", \"first\": " << JsonString(tally.first) << '}';
-      first_reason = false;
-    }
-    out << '}';
+    nlohmann::ordered_json& of_id = drops[std::to_string(id)] = nlohmann::ordered_json::object();
+    for (const auto& [reason, tally] : reasons) of_id[io::NameOf(reason)] = {{"count", tally.count}, {"first", tally.first}};
   }
-  if (!first_id) out << '\n' << indent;
-  out << '}';
+  return drops;
 }
 
 }  // namespace
 
 void WriteReplaySummaryJson(std::ostream& out, const ReplaySummary& s) {
-  out << "{\n  \"poses\": " << JsonString(s.files.poses) << ",\n  \"ranges\": [";
-  for (std::size_t f = 0; f < s.files.ranges.size(); ++f) out << (f ? ", " : "") << JsonString(s.files.ranges[f]);
-  out << "],\n  \"policy\": {\"max_range_m\": " << FormatNumber(s.policy.max_range_m) << ", \"repeated_poses\": \""
-      << io::NameOf(s.policy.repeated_poses) << "\", \"out_of_order\": \"" << io::NameOf(s.policy.out_of_order)
-      << "\", \"sort_window_s\": " << FormatNumber(s.policy.sort_window_s) << ", \"repeated_pose_tolerance_m\": "
-      << FormatNumber(s.policy.repeated_pose_tolerance_m) << ", \"max_speed_mps\": " << FormatNumber(s.policy.max_speed_mps)
-      << ", \"strict\": " << (s.policy.strict ? "true" : "false") << "},\n  \"pose_rows\": " << s.pose_rows
-      << ",\n  \"range_rows\": " << s.range_rows << ",\n  \"reordered_rows\": " << s.reordered_rows
-      << ",\n  \"samples\": " << Samples(s)
-      << ",\n  \"dropped\": " << s.drops.total() << ",\n  \"samples_by_anchor\": {";
-  bool first = true;
-  for (const auto& [anchor, count] : s.samples_by_anchor) {
-    out << (first ? "" : ", ") << '"' << anchor << "\": " << count;
-    first = false;
-  }
-  out << "},\n  \"range_drops_by_anchor\": ";
-  JsonDrops(out, s.drops.ranges_by_anchor(), "  ");
-  out << ",\n  \"pose_drops_by_tag\": ";
-  JsonDrops(out, s.drops.poses_by_tag(), "  ");
-  out << "\n}\n";
+  nlohmann::ordered_json json;
+  json["poses"] = s.files.poses;
+  json["ranges"] = s.files.ranges;
+  json["policy"] = {{"max_range_m", s.policy.max_range_m},
+                    {"repeated_poses", io::NameOf(s.policy.repeated_poses)},
+                    {"out_of_order", io::NameOf(s.policy.out_of_order)},
+                    {"sort_window_s", s.policy.sort_window_s},
+                    {"repeated_pose_tolerance_m", s.policy.repeated_pose_tolerance_m},
+                    {"max_speed_mps", s.policy.max_speed_mps},
+                    {"strict", s.policy.strict}};
+  json["pose_rows"] = s.pose_rows;
+  json["range_rows"] = s.range_rows;
+  json["reordered_rows"] = s.reordered_rows;
+  json["samples"] = Samples(s);
+  json["dropped"] = s.drops.total();
+  nlohmann::ordered_json& by_anchor = json["samples_by_anchor"] = nlohmann::ordered_json::object();
+  for (const auto& [anchor, count] : s.samples_by_anchor) by_anchor[std::to_string(anchor)] = count;
+  json["range_drops_by_anchor"] = JsonDrops(s.drops.ranges_by_anchor());
+  json["pose_drops_by_tag"] = JsonDrops(s.drops.poses_by_tag());
+  // Bytes that are not UTF-8 (a path, a log's line) become U+FFFD rather than an exception.
+  out << json.dump(2, ' ', false, nlohmann::ordered_json::error_handler_t::replace) << '\n';
 }
 
 void WriteReplaySummaryMarkdown(std::ostream& out, const ReplaySummary& s) {

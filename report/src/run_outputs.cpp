@@ -13,19 +13,12 @@ namespace {
 using io::FormatFixed;
 using io::FormatNumber;
 using io::FormatOptional;
-using io::JsonString;
 using schema::Attempt;
 using schema::RowConfig;
 
 // The cells of a solve or an evaluation, empty where there is none.
 std::optional<double> Of(const std::optional<Eigen::Vector3d>& v, int axis) {
   return v ? std::optional<double>((*v)[axis]) : std::nullopt;
-}
-
-std::string JsonList(const std::vector<std::string>& items) {
-  std::string out = "[";
-  for (std::size_t i = 0; i < items.size(); ++i) out += (i ? ", " : "") + JsonString(items[i]);
-  return out + "]";
 }
 
 std::string Interval(const std::optional<double>& lo, const std::optional<double>& hi, int decimals) {
@@ -203,16 +196,20 @@ constexpr const char* kInstructionSet = "default";
 #endif
 
 std::string ManifestJson(const schema::ExperimentConfig& config, const RunInfo& info) {
-  std::ostringstream json;
-  json << "{\n  \"config_file\": " << JsonString(info.config_path) << ",\n  \"seed\": " << config.seed
-       << ",\n  \"realizations\": " << config.realizations << ",\n  \"threads\": " << info.threads
-       << ",\n  \"git_revision\": " << JsonString(info.revision) << ",\n  \"compiler\": "
-       << JsonString(kCompiler) << ",\n  \"instruction_set\": " << JsonString(kInstructionSet)
-       << ",\n  \"wall_time_s\": " << FormatFixed(info.wall_time_s, 3)
-       << ",\n  \"command_line\": " << JsonList(info.command_line);
-  if (!info.sweep_axes.empty()) json << ",\n  \"sweep_axes\": " << JsonList(info.sweep_axes);
-  json << ",\n  \"resolved_config\": " << info.resolved_config_json << "\n}\n";
-  return json.str();
+  nlohmann::ordered_json json;
+  json["config_file"] = info.config_path;
+  json["seed"] = config.seed;
+  json["realizations"] = config.realizations;
+  json["threads"] = info.threads;
+  json["git_revision"] = info.revision;
+  json["compiler"] = kCompiler;
+  json["instruction_set"] = kInstructionSet;
+  json["wall_time_s"] = std::round(info.wall_time_s * 1e3) / 1e3;  // ms: what a wall clock tells
+  json["command_line"] = info.command_line;
+  if (!info.sweep_axes.empty()) json["sweep_axes"] = info.sweep_axes;
+  json["resolved_config"] = info.resolved_config;
+  // Bytes that are not UTF-8 (a path, a log's line) become U+FFFD rather than an exception.
+  return json.dump(2, ' ', false, nlohmann::ordered_json::error_handler_t::replace) + "\n";
 }
 
 }  // namespace anchorbench::report

@@ -2,6 +2,8 @@
 
 #include <gtest/gtest.h>
 
+#include <nlohmann/json.hpp>
+
 #include "anchorbench/testing/paper_estimator.hpp"
 
 #include "anchorbench/report/run_outputs.hpp"
@@ -106,13 +108,34 @@ TEST(Summary, ManifestNamesWhatReproducesTheRun) {
   info.wall_time_s = 1.25;
   info.command_line = {"--realizations 6", "--set scenario.ranging.sigma_range_m=0.4"};
   info.sweep_axes = {"estimator.filter.tau_m=0.1,0.2"};
-  info.resolved_config_json = "{\"seed\": 7}";
-  const std::string json = ManifestJson(config, info);
-  for (const char* key : {"\"seed\": 7", "\"threads\": 2", "\"realizations\": 6", "\"git_revision\": \"abc123\"",
-                          "\"compiler\"", "\"wall_time_s\": 1.250", "\"resolved_config\": {\"seed\": 7}",
-                          "\"--set scenario.ranging.sigma_range_m=0.4\"", "\"sweep_axes\": [\"estimator.filter.tau_m=0.1,0.2\"]"}) {
-    EXPECT_NE(json.find(key), std::string::npos) << key;
-  }
+  info.wall_time_s = 1.2504;
+  info.resolved_config = {{"seed", 7}};
+  info.config_path = "configs/a \"quoted\"\tname\x01.yaml";  // escaped whatever it holds
+  const nlohmann::json json = nlohmann::json::parse(ManifestJson(config, info));
+  EXPECT_EQ(json["config_file"], info.config_path);
+  EXPECT_EQ(json["seed"], 7);
+  EXPECT_EQ(json["threads"], 2);
+  EXPECT_EQ(json["realizations"], 6);
+  EXPECT_EQ(json["git_revision"], "abc123");
+  EXPECT_TRUE(json.contains("compiler"));
+  EXPECT_EQ(json["wall_time_s"], 1.25);  // to the millisecond
+  EXPECT_EQ(json["resolved_config"]["seed"], 7);
+  EXPECT_EQ(json["command_line"][1], "--set scenario.ranging.sigma_range_m=0.4");
+  EXPECT_EQ(json["sweep_axes"], nlohmann::json::array({"estimator.filter.tau_m=0.1,0.2"}));
+}
+
+TEST(Summary, AManifestOfAPathThatIsNotUtf8IsStillJson) {
+  RunInfo info;
+  info.config_path = "configs/latin1_\xe9.yaml";
+  const nlohmann::json json = nlohmann::json::parse(ManifestJson({}, info));
+  EXPECT_EQ(json["config_file"], "configs/latin1_\xef\xbf\xbd.yaml");  // U+FFFD
+}
+
+TEST(Summary, AManifestOfASeedAbove2To53KeepsItExactly) {
+  schema::ExperimentConfig config;
+  config.seed = (std::uint64_t{1} << 63) - 1;
+  const nlohmann::json json = nlohmann::json::parse(ManifestJson(config, {}));
+  EXPECT_EQ(json["seed"].get<std::uint64_t>(), config.seed);
 }
 
 TEST(Summary, AttemptsCsvLeavesCellsEmptyWhereThereIsNothing) {

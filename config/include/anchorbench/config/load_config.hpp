@@ -3,6 +3,8 @@
 #include <string>
 #include <vector>
 
+#include <nlohmann/json.hpp>
+
 #include "anchorbench/config/config_yaml.hpp"
 #include "anchorbench/registry/components.hpp"
 #include "anchorbench/schema/experiment.hpp"
@@ -29,8 +31,9 @@ schema::ExperimentConfig LoadConfig(const ConfigDocument& document, const std::v
 // The `estimator` section of a file only (replay --config).
 schema::EstimatorConfig LoadEstimatorConfig(const std::string& path, const registry::Components& components);
 
-// The resolved configuration in the file schema: YAML text, and JSON (for manifests).
+// The resolved configuration in the file schema: YAML text, and JSON (for manifests; the same
+// tree, no text in between).
 std::string ToYaml(const schema::ExperimentConfig& config);
-std::string ToJson(const schema::ExperimentConfig& config, int indent = 2);
+nlohmann::ordered_json ToJson(const schema::ExperimentConfig& config);
 
 }  // namespace anchorbench::config

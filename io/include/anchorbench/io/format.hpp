@@ -15,7 +15,5 @@ std::string FormatOptional(const std::optional<double>& value);
 // The text with control bytes and non-ASCII bytes as \xNN, so a message quoting input stays one
 // printable line.
 std::string Printable(std::string_view text);
-// A JSON string literal of the text (quotes, backslashes and control bytes escaped).
-std::string JsonString(std::string_view text);
 
 }  // namespace anchorbench::io

@@ -4,6 +4,8 @@
 #include <string>
 #include <vector>
 
+#include <nlohmann/json.hpp>
+
 #include "anchorbench/report/summary.hpp"
 #include "anchorbench/schema/attempt.hpp"
 #include "anchorbench/schema/experiment.hpp"
@@ -52,7 +54,7 @@ struct RunInfo {
   double wall_time_s = 0.0;
   std::vector<std::string> command_line;  // what the command line changed: --seed 3, --set a.b=c, ...
   std::vector<std::string> sweep_axes;    // "KEY=VALUES" of a sweep, empty for run
-  std::string resolved_config_json;       // the config as it ran (config::ToJson)
+  nlohmann::ordered_json resolved_config;  // the config as it ran (config::ToJson)
 };
 // manifest.json: config file, seed, realizations, threads, revision, compiler, wall time, the
 // command line's changes, the sweep axes and the resolved config.
