@@ -703,11 +703,11 @@ def cluster_overhead():
 
 def cluster_costs():
     """The cost model's inputs (results/benchmarks/cluster.csv and micro.csv): c, core-seconds a unit
-    (Table I's plain run); r0, seconds a unit rank 0 spends reading a chunk back and storing it
-    (bench_ingest); rm, seconds a unit of the 8-shard merge; the bytes of attempts a unit."""
+    (Table I's plain run); r0, seconds a unit rank 0 spends taking a chunk's records and storing its
+    text (bench_ingest); rm, seconds a unit of the 8-shard merge; the bytes of attempts a unit."""
     r = next(r for r in read("benchmarks/cluster.csv") if r["way"] == "shards" and r["processes"] == "8")
     units = int(r["units"])
-    ingest = next(m for m in read("benchmarks/micro.csv") if m["benchmark"].startswith("BM_ParseAndStoreChunkPerUnit"))
+    ingest = next(m for m in read("benchmarks/micro.csv") if m["benchmark"].startswith("BM_RecordsAndStoreChunkPerUnit"))
     rate = float(re.search(r"items_per_second=([0-9.e+]+)", ingest["counters"])[1])
     return (float(r["plain_s"]) * int(r["threads"]) / units, 1.0 / rate, float(r["merge_s"]) / units,
             int(r["attempts_bytes"]) / units)
@@ -767,8 +767,8 @@ def cluster_bullets():
     return (f"- c = {compute:.4f} core-seconds a unit: Table I's paper columns, a plain run on 2 threads, times 2, over its "
             f"units (`cluster.csv`).\n"
             f"- r0 = {rank0 * 1e3:.3f} ms a unit: what rank 0 does with every chunk it receives, one at a time "
-            f"(reads it back and writes it to the store; `bench_ingest`'s BM_ParseAndStoreChunkPerUnit in "
-            f"`micro.csv`).\n"
+            f"(takes its records, splits its text into lines and writes it to the store, parsing no text; "
+            f"`bench_ingest`'s BM_RecordsAndStoreChunkPerUnit in `micro.csv`).\n"
             f"- rm = {merge * 1e3:.2f} ms a unit: the 8-shard merge over Table I's units (`cluster.csv`): it reads "
             f"every attempt back, bootstraps the summaries and writes the results, after the shards.\n"
             f"- {unit_bytes / 1e3:.1f} kB of attempts a unit (Table I's attempts.csv over its units), held in memory "

@@ -16,7 +16,8 @@ namespace {
 
 // Rank 0 -> worker: kPlan (the experiments' texts and their identity), kStart (a Compute begins:
 // the worker's threads, each on its own, ask for chunks), kStop. A worker thread -> rank 0: kReady
-// (its thread number) or kResult (thread, chunk index, chunk text: also a request for the next),
+// (its thread number) or kResult (thread, chunk index, chunk text, the chunk's records: also a
+// request for the next; rank 0 stores the text and reads the records, parsing no text),
 // kError (exit code and message). Rank 0 -> a worker thread: kChunkFor + thread (a chunk index,
 // or empty: no more for this Compute).
 enum Tag : int { kPlan = 1, kStart, kStop, kReady, kResult, kError, kChunkFor = 100 };
@@ -84,10 +85,11 @@ void MpiExecutor::Compute(const engine::Plan& plan, const std::vector<int>& chun
       if (text.rfind("2", 0) == 0) throw schema::InputError(rank + ": " + text.substr(1));
       throw std::runtime_error(rank + ": " + text.substr(1));
     }
-    const std::vector<std::string> fields = Unpack(text);  // thread [, chunk, chunk text]
+    const std::vector<std::string> fields = Unpack(text);  // thread [, chunk, chunk text, records]
     if (status.MPI_TAG == kResult) {
       const int chunk = std::stoi(fields[1]);
-      done(chunk, engine::ParseChunk(plan, chunk, fields[2], rank + "'s chunk " + std::to_string(chunk)), fields[2]);
+      done(chunk, engine::FromRecords(plan, chunk, fields[2], fields[3], rank + "'s chunk " + std::to_string(chunk)),
+           fields[2]);
       ++received;
     }
     const int reply_tag = kChunkFor + std::stoi(fields[0]);
@@ -134,7 +136,8 @@ void ServeThread(const engine::Plan* plan, const std::string& plan_error, int th
     try {
       if (!plan) throw schema::InputError(plan_error);
       const engine::ChunkResult result = engine::ComputeChunk(*plan, chunk, components, samples);
-      request = Pack({std::to_string(thread), chunk_text, engine::ChunkText(*plan, chunk, result)});
+      request = Pack({std::to_string(thread), chunk_text, engine::ChunkText(*plan, chunk, result),
+                      engine::ChunkRecords(*plan, chunk, result)});
       tag = kResult;
     } catch (const schema::InputError& e) {
       request = std::string("2") + e.what();

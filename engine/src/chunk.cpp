@@ -1,6 +1,9 @@
 #include "anchorbench/engine/chunk.hpp"
 
+#include <algorithm>
 #include <cstdio>
+#include <cstring>
+#include <functional>
 
 #include "anchorbench/io/csv_reader.hpp"
 #include "anchorbench/io/format.hpp"
@@ -93,33 +96,121 @@ std::string_view CheckedBody(const Plan& plan, int chunk, std::string_view text,
 
 }  // namespace
 
-ChunkResult ParseChunk(const Plan& plan, int chunk, const std::string& text, const std::string& source) {
-  const std::string_view body = CheckedBody(plan, chunk, text, source);
+namespace {
+
+// Every attempt of exactly the chunk's units, in order (one per anchor and trigger of its row);
+// `line_of(i)` names attempt i's place in `source`.
+void CheckUnits(const Plan& plan, int chunk, const std::vector<schema::Attempt>& attempts, const std::string& source,
+                const std::function<std::string(std::size_t)>& place_of) {
   const ChunkSpan& span = plan.chunks()[static_cast<std::size_t>(chunk)];
   const int realizations = plan.experiments()[static_cast<std::size_t>(span.experiment)].realizations;
   const std::vector<schema::RowConfig>& rows = plan.rows(span.experiment);
-  report::AttemptsFile file = report::ParseAttempts(std::string(body), source, rows);
-  // Unit by unit: each of the chunk's units in order, whole.
   std::size_t next = 0;
   for (int unit = span.first_unit; unit < span.end_unit; ++unit) {
     const std::size_t expected = AttemptsPerUnit(rows[static_cast<std::size_t>(unit / realizations)]);
     for (std::size_t k = 0; k < expected; ++k, ++next) {
-      if (next >= file.attempts.size()) {
+      if (next >= attempts.size()) {
         throw schema::InputError(source + ": ends within unit " + std::to_string(unit) + " (a chunk cut short?)");
       }
-      const schema::Attempt& a = file.attempts[next];
-      if (a.row * realizations + a.realization != unit) {
-        throw schema::InputError(source + ":" + std::to_string(next + 2) + ": an attempt of row " +
-                             rows[static_cast<std::size_t>(a.row)].name + ", realization " +
-                             std::to_string(a.realization) + " where unit " + std::to_string(unit) +
-                             "'s attempts belong");
+      const schema::Attempt& a = attempts[next];
+      if (a.row < 0 || a.row >= static_cast<int>(rows.size()) || a.row * realizations + a.realization != unit) {
+        const std::string row = a.row >= 0 && a.row < static_cast<int>(rows.size())
+                                    ? rows[static_cast<std::size_t>(a.row)].name
+                                    : std::to_string(a.row);
+        throw schema::InputError(place_of(next) + ": an attempt of row " + row + ", realization " +
+                                 std::to_string(a.realization) + " where unit " + std::to_string(unit) +
+                                 "'s attempts belong");
       }
     }
   }
-  if (next != file.attempts.size()) {
-    throw schema::InputError(source + ":" + std::to_string(next + 2) + ": attempts beyond the chunk's units");
-  }
+  if (next != attempts.size()) throw schema::InputError(place_of(next) + ": attempts beyond the chunk's units");
+}
+
+// The summaries' fields of an attempt, fixed size (what ParseAttempts reads from a line).
+struct Record {
+  std::int32_t row, realization, anchor_id, method;  // method: index into the row's triggers
+  std::uint8_t initialized, has_error, has_nees, padding[5];
+  double t_init_s, error_m, nees_position, compute_s;
+};
+
+}  // namespace
+
+ChunkResult ParseChunk(const Plan& plan, int chunk, const std::string& text, const std::string& source) {
+  const std::string_view body = CheckedBody(plan, chunk, text, source);
+  const ChunkSpan& span = plan.chunks()[static_cast<std::size_t>(chunk)];
+  report::AttemptsFile file = report::ParseAttempts(std::string(body), source, plan.rows(span.experiment));
+  CheckUnits(plan, chunk, file.attempts, source, [&](std::size_t i) { return source + ":" + std::to_string(i + 2); });
   return {std::move(file.attempts), std::move(file.lines)};
+}
+
+std::string ChunkRecords(const Plan& plan, int chunk, const ChunkResult& result) {
+  const std::vector<schema::RowConfig>& rows = plan.rows(plan.chunks()[static_cast<std::size_t>(chunk)].experiment);
+  std::string records(result.attempts.size() * sizeof(Record), '\0');
+  for (std::size_t i = 0; i < result.attempts.size(); ++i) {
+    const schema::Attempt& a = result.attempts[i];
+    const std::vector<std::string>& triggers = rows[static_cast<std::size_t>(a.row)].estimator.triggers;
+    Record r{};
+    r.row = a.row;
+    r.realization = a.realization;
+    r.anchor_id = a.anchor_id;
+    r.method = static_cast<std::int32_t>(std::find(triggers.begin(), triggers.end(), a.method) - triggers.begin());
+    r.initialized = a.initialized;
+    r.t_init_s = a.t_init_s.value_or(0.0);
+    if (a.evaluation) {
+      r.has_error = a.evaluation->error_m.has_value();
+      r.error_m = a.evaluation->error_m.value_or(0.0);
+      r.has_nees = a.evaluation->nees_position.has_value();
+      r.nees_position = a.evaluation->nees_position.value_or(0.0);
+    }
+    r.compute_s = a.compute_s;
+    std::memcpy(records.data() + i * sizeof(Record), &r, sizeof(Record));
+  }
+  return records;
+}
+
+ChunkResult FromRecords(const Plan& plan, int chunk, std::string_view text, std::string_view records,
+                        const std::string& source) {
+  if (records.size() % sizeof(Record) != 0) throw schema::InputError(source + ": records cut short");
+  const std::vector<schema::RowConfig>& rows = plan.rows(plan.chunks()[static_cast<std::size_t>(chunk)].experiment);
+  ChunkResult result;
+  result.attempts.resize(records.size() / sizeof(Record));
+  for (std::size_t i = 0; i < result.attempts.size(); ++i) {
+    Record r;
+    std::memcpy(&r, records.data() + i * sizeof(Record), sizeof(Record));
+    schema::Attempt& a = result.attempts[i];
+    a.row = r.row;
+    a.realization = r.realization;
+    a.anchor_id = r.anchor_id;
+    if (r.row < 0 || r.row >= static_cast<int>(rows.size()) || r.method < 0 ||
+        r.method >= static_cast<int>(rows[static_cast<std::size_t>(r.row)].estimator.triggers.size())) {
+      throw schema::InputError(source + ": record " + std::to_string(i) + " names no row and trigger of the plan");
+    }
+    a.method = rows[static_cast<std::size_t>(r.row)].estimator.triggers[static_cast<std::size_t>(r.method)];
+    a.initialized = r.initialized != 0;
+    if (a.initialized) {
+      a.t_init_s = r.t_init_s;
+      a.evaluation.emplace();
+      if (r.has_error) a.evaluation->error_m = r.error_m;
+      if (r.has_nees) a.evaluation->nees_position = r.nees_position;
+    }
+    a.compute_s = r.compute_s;
+  }
+  CheckUnits(plan, chunk, result.attempts, source, [&](std::size_t i) { return source + ": record " + std::to_string(i); });
+  // The lines: below the identity and header lines, each without its last field (compute_s).
+  result.lines.reserve(result.attempts.size());
+  std::size_t at = text.find('\n');
+  at = at == std::string_view::npos ? text.size() : text.find('\n', at + 1);
+  while (at != std::string_view::npos && at + 1 < text.size()) {
+    const std::size_t end = std::min(text.find('\n', at + 1), text.size());
+    const std::string_view line = text.substr(at + 1, end - at - 1);
+    result.lines.emplace_back(line.substr(0, line.rfind(',')));
+    at = end < text.size() ? end : std::string_view::npos;
+  }
+  if (result.lines.size() != result.attempts.size()) {
+    throw schema::InputError(source + ": " + std::to_string(result.lines.size()) + " lines for " +
+                             std::to_string(result.attempts.size()) + " records");
+  }
+  return result;
 }
 
 ChunkResult ReadChunkFile(const Plan& plan, int chunk, const std::string& path) {

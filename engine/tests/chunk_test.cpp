@@ -80,6 +80,43 @@ TEST(Chunk, ItsTextReadsBackToTheSameLines) {
   }
 }
 
+// An MPI worker's records with the chunk's text give rank 0 what parsing the text gives, on every
+// chunk of a plan with several rows (none initialized as well as initialized attempts).
+TEST(Chunk, ItsRecordsGiveWhatItsTextReadsBackTo) {
+  const Plan plan({SmallTable()});
+  std::vector<estimator::RangeSample> samples;
+  for (int chunk = 0; chunk < static_cast<int>(plan.chunks().size()); ++chunk) {
+    const ChunkResult computed = ComputeChunk(plan, chunk, AllComponents(), samples);
+    const std::string text = ChunkText(plan, chunk, computed);
+    const ChunkResult parsed = ParseChunk(plan, chunk, text, "text");
+    const ChunkResult recorded = FromRecords(plan, chunk, text, ChunkRecords(plan, chunk, computed), "records");
+    EXPECT_EQ(recorded.lines, parsed.lines) << chunk;
+    ASSERT_EQ(recorded.attempts.size(), parsed.attempts.size()) << chunk;
+    const std::vector<schema::RowConfig> rows = schema::RowsOf(SmallTable());
+    std::ostringstream from_text, from_records;  // every field the summaries read, as written
+    report::WriteAttempts(from_text, parsed.attempts, rows);
+    report::WriteAttempts(from_records, recorded.attempts, rows);
+    EXPECT_EQ(from_records.str(), from_text.str()) << chunk;
+    for (std::size_t i = 0; i < parsed.attempts.size(); ++i) {
+      EXPECT_EQ(recorded.attempts[i].compute_s, parsed.attempts[i].compute_s);
+    }
+  }
+}
+
+// Records of another chunk, cut short, or not matching the text's lines are refused.
+TEST(Chunk, RecordsOfAnotherChunkOrCutShortAreRefused) {
+  const Plan plan({SmallTable()});
+  std::vector<estimator::RangeSample> samples;
+  const ChunkResult three = ComputeChunk(plan, 3, AllComponents(), samples);
+  const ChunkResult four = ComputeChunk(plan, 4, AllComponents(), samples);
+  const std::string text = ChunkText(plan, 3, three), records = ChunkRecords(plan, 3, three);
+  EXPECT_NO_THROW(FromRecords(plan, 3, text, records, "whole"));
+  EXPECT_THROW(FromRecords(plan, 3, text, ChunkRecords(plan, 4, four), "another chunk's"), schema::InputError);
+  EXPECT_THROW(FromRecords(plan, 3, text, records.substr(0, records.size() - 1), "cut"), schema::InputError);
+  EXPECT_THROW(FromRecords(plan, 3, text.substr(0, text.rfind('\n', text.size() - 2) + 1), records, "a line short"),
+               schema::InputError);
+}
+
 // A chunk cut short, one given for another, or one with a line too many is refused.
 TEST(Chunk, ACutForeignOrLongChunkIsRefused) {
   const Plan plan({SmallTable()});

@@ -47,6 +47,16 @@ std::string ChunkFileName(int chunk);
 // identity line is not this chunk's of this plan or whose checksum does not match, and one that is
 // not every attempt of exactly the chunk's units, in order (one per anchor and trigger).
 ChunkResult ParseChunk(const Plan& plan, int chunk, const std::string& text, const std::string& source);
+// What an MPI worker hands rank 0 beside a chunk's text, so that rank 0 parses no text: each
+// attempt's fields the summaries use (those ParseChunk reads back) as a fixed-size binary record.
+// Ranks of one job run one build on one kind of machine, so the records are in its byte order.
+std::string ChunkRecords(const Plan& plan, int chunk, const ChunkResult& result);
+// The chunk from its text (split into attempts.csv's lines, not parsed) and its records; refuses
+// (schema::InputError naming `source`) records that are not every attempt of exactly the chunk's
+// units, in order, or that do not match the text's lines one for one.
+ChunkResult FromRecords(const Plan& plan, int chunk, std::string_view text, std::string_view records,
+                        const std::string& source);
+
 // The same from a chunk file (a store's, a shard folder's), named in errors.
 ChunkResult ReadChunkFile(const Plan& plan, int chunk, const std::string& path);
 
