@@ -50,8 +50,8 @@ expect_exit 2 "ransac_with_no_possible_clean_subset" "key 'estimator.filter.rans
   --set estimator.filter.ransac.outlier_fraction=0.99 --out "$dir/x"
 expect_exit 2 "outlier_probability_beyond_what_bursts_can_produce" "must be <= L/(L+1)" \
   "$bin" run "$dir/small.yaml" --set scenario.ranging.outlier_probability=0.99 --out "$dir/x"
-expect_exit 2 "retry_growth_that_would_overflow" "key 'estimator.trigger.retry_growth': must be in (1, 100]" \
-  "$bin" run "$dir/small.yaml" --set estimator.trigger.retry_growth=1e300 --out "$dir/x"
+expect_exit 2 "retry_growth_that_would_overflow" "key 'estimator.initializer.retry_growth': must be in (1, 100]" \
+  "$bin" run "$dir/small.yaml" --set estimator.initializer.retry_growth=1e300 --out "$dir/x"
 expect_exit 2 "pdop_study_bin_too_small_for_an_integer" "--bin-s: must be in [0.01, 120]" \
   "$bin" pdop-study "$dir/small.yaml" --bin-s 1e-300 --out "$dir/x"
 expect_exit 2 "threads_beyond_what_the_machine_can_run" "--threads 100000: at most" \

@@ -110,24 +110,33 @@ void Filter(V& v, schema::FilterConfig& o, const registry::Components& component
   });
 }
 
-// `trigger`: when and how often an initializer may solve, and how much it keeps.
+// The initializer's keys, once under `trigger`: refused with their new place.
+constexpr const char* kInitializerKeys[] = {"min_samples", "retry_growth", "max_buffered_samples", "at_cap"};
+
+// `trigger`: what the built-in triggers are built from (schema::TriggerConfig).
 template <typename V>
-void Trigger(V& v, schema::EstimatorConfig& o) {
-  v.Number("pdop_threshold", o.trigger.pdop_threshold);
-  v.Integer("min_samples", o.initializer.min_samples);
-  v.Number("retry_growth", o.initializer.retry_growth);
-  v.Integer("max_buffered_samples", o.initializer.max_buffered_samples);
-  v.Choice("at_cap", o.initializer.at_cap, estimator::kBufferPolicyNames);
-  v.Integer("sample_count", o.trigger.sample_count);
-  v.Number("timeout_s", o.trigger.timeout_s);
-  v.Integer("evaluate_every", o.trigger.evaluate_every);
-  v.Number("evaluate_growth", o.trigger.evaluate_growth);
-  v.Number("bias_aware_threshold", o.trigger.bias_aware_threshold);
-  v.Number("confidence_threshold", o.trigger.confidence_threshold);
-  v.Number("confidence_sigmas", o.trigger.confidence_sigmas);
-  v.Number("horizontal_threshold", o.trigger.horizontal_threshold);
-  v.Check(o.trigger);
-  v.Check(o.initializer);
+void Trigger(V& v, schema::TriggerConfig& o) {
+  v.Number("pdop_threshold", o.pdop_threshold);
+  v.Integer("sample_count", o.sample_count);
+  v.Number("timeout_s", o.timeout_s);
+  v.Integer("evaluate_every", o.evaluate_every);
+  v.Number("evaluate_growth", o.evaluate_growth);
+  v.Number("bias_aware_threshold", o.bias_aware_threshold);
+  v.Number("confidence_threshold", o.confidence_threshold);
+  v.Number("confidence_sigmas", o.confidence_sigmas);
+  v.Number("horizontal_threshold", o.horizontal_threshold);
+  for (const char* key : kInitializerKeys) v.Moved(key, "initializer");
+  v.Check(o);
+}
+
+// `initializer`: when an anchor's initializer may solve at all, and how much it keeps.
+template <typename V>
+void Initializer(V& v, estimator::InitializerOptions& o) {
+  v.Integer("min_samples", o.min_samples);
+  v.Number("retry_growth", o.retry_growth);
+  v.Integer("max_buffered_samples", o.max_buffered_samples);
+  v.Choice("at_cap", o.at_cap, estimator::kBufferPolicyNames);
+  v.Check(o);
 }
 
 template <typename V>
@@ -171,7 +180,8 @@ void Estimator(V& v, schema::EstimatorConfig& o, const registry::Components& com
   v.NameList("triggers", o.triggers,
              [&](const std::string& name, std::string* why) { return components.triggers.Knows(name, why); });
   v.Section("filter", [&](auto& s) { Filter(s, o.filter, components); });
-  v.Section("trigger", [&](auto& s) { Trigger(s, o); });
+  v.Section("initializer", [&](auto& s) { Initializer(s, o.initializer); });
+  v.Section("trigger", [&](auto& s) { Trigger(s, o.trigger); });
   v.Section("ls", [&](auto& s) { Ls(s, o.solver_options.ls); });
   v.Section("nls", [&](auto& s) { Nls(s, o.solver_options.nls); });
   v.Section("height_check", [&](auto& s) {

@@ -42,6 +42,13 @@ void YamlSection::FailValidation(const std::string& why) const {
   FailSection(why);
 }
 
+void YamlSection::Moved(std::string_view key, std::string_view section) {
+  if (!node_[std::string(key)]) return;
+  const std::size_t dot = path_.rfind('.');
+  const std::string parent = dot == std::string::npos ? std::string() : path_.substr(0, dot + 1);
+  Fail(key, "has moved: write it as " + parent + std::string(section) + "." + std::string(key));
+}
+
 bool YamlSection::Has(std::string_view key) const {
   asked_.emplace(key);
   return node_.IsMap() && node_[std::string(key)].IsDefined() && !node_[std::string(key)].IsNull();

@@ -338,6 +338,31 @@ TEST(Config, RefusesWhatWouldBeIgnoredOrMisread) {
 }
 
 // Every file a config reads: a command never overwrites or deletes one of them.
+// The initializer's keys left `trigger` for `initializer`: an old file, row or override is refused
+// with the key's new place, never read into the wrong struct or ignored.
+TEST(Config, AKeyThatMovedNamesItsNewPlace) {
+  for (const char* key : {"min_samples", "retry_growth", "max_buffered_samples", "at_cap"}) {
+    try {
+      LoadConfigText(std::string("estimator:\n  trigger:\n    ") + key + ": 30\n", "old.yaml", {}, AllComponents());
+      ADD_FAILURE() << key << " under trigger was accepted";
+    } catch (const InputError& e) {
+      EXPECT_EQ(std::string(e.what()), std::string("old.yaml: key 'estimator.trigger.") + key +
+                                           "': has moved: write it as estimator.initializer." + key);
+    }
+  }
+  try {
+    LoadConfigText("rows:\n  - name: a\n    estimator: {trigger: {min_samples: 5}}\n", "row.yaml", {}, AllComponents());
+    ADD_FAILURE() << "a row's old key was accepted";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("write it as rows[0].estimator.initializer.min_samples"), std::string::npos)
+        << e.what();
+  }
+  EXPECT_THROW(LoadConfigText("seed: 1\n", "o.yaml", {"estimator.trigger.min_samples=5"}, AllComponents()), InputError);
+  EXPECT_EQ(LoadConfigText("seed: 1\n", "n.yaml", {"estimator.initializer.min_samples=25"}, AllComponents())
+                .estimator.initializer.min_samples,
+            25);
+}
+
 TEST(Config, ConfigFilesListsTheBaseChain) {
   anchorbench::testing::TempDir dir("files");
   dir.Write("a.yaml", "seed: 1\n");

@@ -48,7 +48,7 @@ SolverRegistry::Factory LmWith(KernelMode kernel, double fixed_alpha = 1.0) {
 
 constexpr const char* kNloptPrefix = "nlopt:";
 
-estimator::SolveCadence Cadence(const estimator::TriggerOptions& options) {
+estimator::SolveCadence Cadence(const schema::TriggerConfig& options) {
   return {options.evaluate_every, options.evaluate_growth};
 }
 

@@ -203,7 +203,7 @@ void WritePdopStudyMarkdown(std::ostream& md, const schema::ExperimentConfig& co
 
   WriteBins(md, study.checkpoints, bin_s);
   WriteTriggers(md, study.checkpoints, config.estimator.trigger.pdop_threshold, study.anchors);
-  const estimator::TriggerOptions& trigger = config.estimator.trigger;
+  const schema::TriggerConfig& trigger = config.estimator.trigger;
   WriteBiasAware(md, study.checkpoints,
                  {{"dop4_closest_point", &PdopCheckpoint::dop4_closest_point, trigger.bias_aware_threshold},
                   {"dop4_confidence", &PdopCheckpoint::dop4_confidence, trigger.confidence_threshold},

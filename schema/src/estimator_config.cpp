@@ -5,6 +5,23 @@
 
 namespace anchorbench::schema {
 
+bool TriggerConfig::IsValid(std::string* why) const {
+  auto fail = [why](const char* message) {
+    if (why) *why = message;
+    return false;
+  };
+  if (!(pdop_threshold > 0.0)) return fail("pdop_threshold must be > 0");
+  if (sample_count < 1) return fail("sample_count must be >= 1");
+  if (!(timeout_s >= 0.0) || !std::isfinite(timeout_s)) return fail("timeout_s must be >= 0");
+  if (evaluate_every < 1) return fail("evaluate_every must be >= 1");
+  if (!(evaluate_growth >= 1.0 && evaluate_growth <= 10.0)) return fail("evaluate_growth must be in [1, 10]");
+  if (!(bias_aware_threshold > 0.0)) return fail("bias_aware_threshold must be > 0");
+  if (!(confidence_threshold > 0.0)) return fail("confidence_threshold must be > 0");
+  if (!(confidence_sigmas >= 0.0) || !(confidence_sigmas <= 10.0)) return fail("confidence_sigmas must be in [0, 10]");
+  if (!(horizontal_threshold > 0.0)) return fail("horizontal_threshold must be > 0");
+  return true;
+}
+
 bool HeightPriorConfig::IsValid(std::string* why) const {
   if (!enabled) return true;
   const estimator::HeightPrior prior{z_m + offset_m, sigma_m};

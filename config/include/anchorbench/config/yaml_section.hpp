@@ -109,6 +109,10 @@ class YamlSection {
     if (!options.IsValid(&why)) FailValidation(why);
   }
 
+  // A key that moved to the sibling section `section` (it keeps its name): present, it is refused
+  // with the key's new path, so an old file fails in one line that says what to write instead.
+  void Moved(std::string_view key, std::string_view section);
+
   bool Has(std::string_view key) const;  // present with a value (a key asked for is a known key)
   void Finish() const;  // throws on keys that were never read, and on known keys without a value
   [[noreturn]] void Fail(std::string_view key, const std::string& message) const;
@@ -186,6 +190,7 @@ class YamlWriter {
   }
   template <typename Options>
   void Check(const Options&) const {}
+  void Moved(std::string_view, std::string_view) {}
 
  private:
   YAML::Node node_;

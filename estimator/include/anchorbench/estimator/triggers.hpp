@@ -10,32 +10,6 @@
 
 namespace anchorbench::estimator {
 
-// The settings of the built-in triggers (the config's estimator.trigger section).
-struct TriggerOptions {
-  double pdop_threshold = 1.0;  // PDOP triggers: fire once the PDOP is below this (Sec. IV-A uses 1)
-  int sample_count = 300;       // SampleCountTrigger: fire at this many accepted samples
-  double timeout_s = 30.0;      // TimeoutTrigger: fire this long after the anchor's first accepted sample
-  // The triggers that solve (pdop_ls, pdop_nls, dop4_confidence): solve for the estimate every this
-  // many accepted samples, and (ours) once the data has grown by this factor since the last
-  // solve. Each solve is O(N): a fixed cadence makes a long run O(N^2 / every); a growth factor
-  // g > 1 bounds the solves' total to O(N g / (g - 1)). 1: the fixed cadence alone.
-  // 1.1 by default (ours, for real logs: a 135 s log of 3.2e5 ranges took 69 s with pdop_nls on
-  // the fixed cadence alone); the paper's experiments use 1 (configs/paper.yaml).
-  int evaluate_every = 10;
-  double evaluate_growth = 1.1;
-  // The bias-aware triggers (ours, docs/method.md): dop4_closest_point and the oracle dop4_true
-  // fire once their 4-column DOP is below bias_aware_threshold; dop4_confidence once the worst
-  // 4-column DOP over the confidence_sigmas ellipsoid of the running estimate is below
-  // confidence_threshold (evaluated on the cadence above).
-  double bias_aware_threshold = 1.0;
-  double confidence_threshold = 1.5;
-  double confidence_sigmas = 3.0;
-  // hdop_closest_point (ours): fire once the closest-point DOP of x-y alone is below this.
-  double horizontal_threshold = 1.0;
-
-  bool IsValid(std::string* why) const;
-};
-
 // The paper's trigger (Sec. III-C): the closest-point PDOP of Eq. (4) below a threshold, O(1).
 class ClosestPointPdopTrigger : public InitTrigger {
  public:
@@ -48,7 +22,7 @@ class ClosestPointPdopTrigger : public InitTrigger {
 
 // When a trigger that solves for an estimate evaluates: at the first eligible sample, then once
 // at least `every` more samples were accepted and the count has grown by the factor `growth`
-// (TriggerOptions::evaluate_every, evaluate_growth).
+// (the config's trigger.evaluate_every, evaluate_growth).
 class SolveCadence {
  public:
   SolveCadence(int every, double growth) : every_(static_cast<std::size_t>(every)), growth_(growth) {}

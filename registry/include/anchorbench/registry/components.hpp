@@ -40,7 +40,7 @@ struct FilterContext {
 // evaluation triggers only (eval's oracles): the anchor's true or surveyed position where the
 // caller knows it. No built-in trigger of the estimator reads it.
 struct TriggerContext {
-  estimator::TriggerOptions options;
+  schema::TriggerConfig options;
   estimator::AnchorSolverOptions solver_options;  // the anchor's, its height prior included
   std::shared_ptr<const estimator::Solver> solver;
   std::optional<Eigen::Vector3d> p_world_anchor_reference;
