@@ -1,51 +1,46 @@
 #include "anchorbench/engine/executor.hpp"
 
+#include <omp.h>
+
 #include <atomic>
 #include <exception>
+#include <mutex>
 
 namespace anchorbench::engine {
 
-void LocalExecutor::Compute(const Plan& plan, const std::vector<int>& chunks, int threads, const ChunkDone& done) {
-  const int count = static_cast<int>(chunks.size());
+void ParallelFor(int count, int threads, const std::function<void(int, int)>& work) {
   std::exception_ptr first_error;
   int first_error_at = count;
+  std::mutex error_mutex;
   std::atomic<bool> failed{false};
-#pragma omp parallel num_threads(threads)
-  {
-    // One sample buffer per thread, reused from unit to unit (megabytes per realization).
-    std::vector<estimator::RangeSample> samples;
-#pragma omp for schedule(dynamic, 1)
-    for (int i = 0; i < count; ++i) {
-      const int chunk = chunks[static_cast<std::size_t>(i)];
-      if (failed.load(std::memory_order_relaxed)) continue;  // an error ends the call: no new chunk starts
-      // An exception must leave neither a critical section nor the parallel region (both end in
-      // std::terminate): each is caught where it is thrown and kept.
-      std::exception_ptr error;
-      try {
-        ChunkResult result = ComputeChunk(plan, chunk, components_, samples);
-        const std::string text = ChunkText(plan, chunk, result);
-#pragma omp critical(anchorbench_chunk_done)
-        {
-          try {
-            done(chunk, std::move(result), text);
-          } catch (...) {
-            error = std::current_exception();
-          }
-        }
-      } catch (...) {
-        error = std::current_exception();
-      }
-      if (error) {
-        failed.store(true, std::memory_order_relaxed);
-#pragma omp critical(anchorbench_chunk_error)
-        if (i < first_error_at) {  // the first in list order, whatever the timing
-          first_error_at = i;
-          first_error = error;
-        }
+#pragma omp parallel for schedule(dynamic, 1) num_threads(threads)
+  for (int i = 0; i < count; ++i) {
+    if (failed.load(std::memory_order_relaxed)) continue;  // an error ends the loop: no new item starts
+    try {  // an exception must not leave the parallel region (std::terminate)
+      work(i, omp_get_thread_num());
+    } catch (...) {
+      failed.store(true, std::memory_order_relaxed);
+      const std::lock_guard<std::mutex> lock(error_mutex);
+      if (i < first_error_at) {
+        first_error_at = i;
+        first_error = std::current_exception();
       }
     }
   }
   if (first_error) std::rethrow_exception(first_error);
+}
+
+void LocalExecutor::Compute(const Plan& plan, const std::vector<int>& chunks, int threads, const ChunkDone& done) {
+  // One sample buffer per thread, reused from unit to unit (megabytes per realization).
+  std::vector<std::vector<estimator::RangeSample>> samples(static_cast<std::size_t>(std::max(threads, 1)));
+  std::mutex done_mutex;  // `done` sees one chunk at a time
+  ParallelFor(static_cast<int>(chunks.size()), threads, [&](int i, int thread) {
+    const int chunk = chunks[static_cast<std::size_t>(i)];
+    ChunkResult result = ComputeChunk(plan, chunk, components_, samples[static_cast<std::size_t>(thread)]);
+    const std::string text = ChunkText(plan, chunk, result);
+    const std::lock_guard<std::mutex> lock(done_mutex);
+    done(chunk, std::move(result), text);
+  });
 }
 
 }  // namespace anchorbench::engine

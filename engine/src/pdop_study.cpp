@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <exception>
 #include <limits>
 #include <map>
 #include <stdexcept>
@@ -15,6 +14,7 @@
 #include "anchorbench/eval/true_geometry.hpp"
 #include "anchorbench/schema/input_error.hpp"
 #include "anchorbench/engine/attempt.hpp"
+#include "anchorbench/engine/executor.hpp"
 #include "anchorbench/sim/scenario.hpp"
 
 namespace anchorbench::engine {
@@ -156,17 +156,16 @@ schema::PdopStudy StudyRealization(const schema::ExperimentConfig& config, const
   std::map<int, AnchorStudy> by_anchor;
   estimator::FrontEnd front_end([&](int anchor_id) {
     const sim::SimAnchor& anchor = scenario.anchors[static_cast<std::size_t>(anchor_id)];
-    std::string why;
-    // The online stage of the configured filter (a batch filter such as RANSAC accepts everything here).
-    std::unique_ptr<estimator::OutlierFilter> filter = components.filters.Create(estimator.filter.kind, {estimator.filter, 0}, &why);
-    if (!filter) throw schema::InputError(why);
-    auto probe = std::make_unique<StudyProbe>(anchor, realization, every, estimator.solver_options.ls,
-                                              estimator.trigger.confidence_sigmas, solver, &by_anchor[anchor_id]);
+    const std::uint64_t seed = SolverSeed(config.seed, static_cast<std::uint64_t>(realization), anchor_id);
+    // The configured chain with the probe in the trigger's place (its filter's online stage: a
+    // batch filter such as RANSAC accepts everything here), and the certified chain beside it.
+    const registry::TriggerMaker probe = [&](const registry::TriggerContext&, std::string*) {
+      return std::make_unique<StudyProbe>(anchor, realization, every, estimator.solver_options.ls,
+                                          estimator.trigger.confidence_sigmas, solver, &by_anchor[anchor_id]);
+    };
     std::vector<estimator::AnchorInitializer> chain;
-    chain.emplace_back(anchor_id, estimator.initializer, std::move(filter), std::move(probe), solver);
-    chain.push_back(registry::MakeInitializer(components, anchor_id, estimator, "certified",
-                                              SolverSeed(config.seed, static_cast<std::uint64_t>(realization), anchor_id),
-                                              anchor.p_world_anchor));
+    chain.push_back(registry::MakeInitializer(components, anchor_id, estimator, probe, seed, anchor.p_world_anchor));
+    chain.push_back(registry::MakeInitializer(components, anchor_id, estimator, "certified", seed, anchor.p_world_anchor));
     return chain;
   });
   for (const sim::SimAnchor& anchor : scenario.anchors) front_end.AddAnchor(anchor.id);
@@ -190,18 +189,9 @@ schema::PdopStudy RunPdopStudy(const schema::ExperimentConfig& config, const reg
   std::string why;
   if (!components.filters.Knows(config.estimator.filter.kind, &why)) throw schema::InputError(why);
   std::vector<schema::PdopStudy> per_realization(static_cast<std::size_t>(config.realizations));
-  std::vector<std::exception_ptr> errors(per_realization.size());
-#pragma omp parallel for schedule(dynamic, 1) num_threads(threads)
-  for (int r = 0; r < config.realizations; ++r) {
-    try {  // an exception must not leave the parallel region
-      per_realization[static_cast<std::size_t>(r)] = StudyRealization(config, components, r, every);
-    } catch (...) {
-      errors[static_cast<std::size_t>(r)] = std::current_exception();
-    }
-  }
-  for (const std::exception_ptr& error : errors) {
-    if (error) std::rethrow_exception(error);
-  }
+  ParallelFor(config.realizations, threads, [&](int r, int) {
+    per_realization[static_cast<std::size_t>(r)] = StudyRealization(config, components, r, every);
+  });
   schema::PdopStudy study;
   for (schema::PdopStudy& r : per_realization) {
     study.checkpoints.insert(study.checkpoints.end(), r.checkpoints.begin(), r.checkpoints.end());

@@ -21,6 +21,15 @@ void RegisterBuiltins(Components& components) {
 estimator::AnchorInitializer MakeInitializer(const Components& components, int anchor_id, const schema::EstimatorConfig& config,
                                              const std::string& trigger, std::uint64_t seed,
                                              const std::optional<Eigen::Vector3d>& p_world_anchor_reference) {
+  return MakeInitializer(
+      components, anchor_id, config,
+      [&](const TriggerContext& context, std::string* why) { return components.triggers.Create(trigger, context, why); },
+      seed, p_world_anchor_reference);
+}
+
+estimator::AnchorInitializer MakeInitializer(const Components& components, int anchor_id, const schema::EstimatorConfig& config,
+                                             const TriggerMaker& make_trigger, std::uint64_t seed,
+                                             const std::optional<Eigen::Vector3d>& p_world_anchor_reference) {
   std::string why;
   // The anchor's own height prior, for its solver and its height check alike.
   estimator::AnchorSolverOptions solver_options = config.solver_options;
@@ -34,8 +43,7 @@ estimator::AnchorInitializer MakeInitializer(const Components& components, int a
   std::unique_ptr<estimator::OutlierFilter> filter = components.filters.Create(config.filter.kind, {config.filter, seed}, &why);
   if (!filter) throw std::invalid_argument(why);
   const estimator::OutlierFilter* online_filter = filter.get();
-  std::unique_ptr<estimator::InitTrigger> made = components.triggers.Create(
-      trigger,
+  std::unique_ptr<estimator::InitTrigger> made = make_trigger(
       {config.trigger, solver_options, solver, p_world_anchor_reference, initializer_options, config.certificate,
        [online_filter](double scale_m) { return online_filter->TravelBias(scale_m); }},
       &why);

@@ -27,6 +27,12 @@ class Executor {
   virtual void Compute(const Plan& plan, const std::vector<int>& chunks, int threads, const ChunkDone& done) = 0;
 };
 
+// work(item, thread) for every item in [0, count) on `threads` OpenMP threads, one item per
+// thread at a time, dynamically scheduled; `thread` in [0, threads) indexes per-thread scratch.
+// An exception stops new items from starting, and the first one in item order (whatever the
+// timing) is rethrown once the threads are done. The one parallel loop of the engine.
+void ParallelFor(int count, int threads, const std::function<void(int item, int thread)>& work);
+
 // This process's threads (OpenMP), one chunk per thread at a time, dynamically scheduled.
 class LocalExecutor final : public Executor {
  public:

@@ -14,8 +14,9 @@ namespace anchorbench::engine {
 // Runs the config's base scenario for every realization through the online front end: each
 // anchor's chain is the configured filter and a probe in the trigger's place, which sees every
 // accepted sample and takes one checkpoint every `every` of them; a second chain, the configured
-// estimator with the certified trigger, runs beside it. Parallel over realizations,
-// identical for any thread count. The filter comes from `components` by name.
+// estimator with the certified trigger, runs beside it. Both chains are built by
+// registry::MakeInitializer (the probe through a TriggerMaker), parallel over realizations by
+// ParallelFor, identical for any thread count.
 schema::PdopStudy RunPdopStudy(const schema::ExperimentConfig& config, const registry::Components& components, int every, int threads);
 
 }  // namespace anchorbench::engine

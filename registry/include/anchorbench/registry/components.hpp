@@ -86,6 +86,13 @@ estimator::AnchorInitializer MakeInitializer(const Components& components, int a
                                              const std::string& trigger, std::uint64_t seed,
                                              const std::optional<Eigen::Vector3d>& p_world_anchor_reference = std::nullopt);
 
+// The same with the trigger made by `make_trigger` from the context a named one gets (a study's
+// probe, which no config names); it returns null with `why` set to refuse.
+using TriggerMaker = std::function<std::unique_ptr<estimator::InitTrigger>(const TriggerContext&, std::string* why)>;
+estimator::AnchorInitializer MakeInitializer(const Components& components, int anchor_id, const schema::EstimatorConfig& config,
+                                             const TriggerMaker& make_trigger, std::uint64_t seed,
+                                             const std::optional<Eigen::Vector3d>& p_world_anchor_reference = std::nullopt);
+
 // One initializer per trigger of config.triggers, in that order (a FrontEnd's chains).
 std::vector<estimator::AnchorInitializer> MakeChains(
     const Components& components, int anchor_id, const schema::EstimatorConfig& config, std::uint64_t seed,
