@@ -15,11 +15,8 @@
 
 namespace anchorbench::engine {
 
-// One experiment's attempts in unit order, each with its attempts.csv line.
-struct ExperimentAttempts {
-  std::vector<schema::Attempt> attempts;
-  std::vector<std::string> lines;
-};
+// One experiment's attempts in unit order, each with its attempts.csv line: its chunks joined.
+using ExperimentAttempts = ChunkResult;
 
 struct RunPlanOptions {
   int threads = 1;                  // per process
