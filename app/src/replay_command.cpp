@@ -5,12 +5,10 @@
 #include "anchorbench/config/load_config.hpp"
 #include "anchorbench/io/atomic_file.hpp"
 #include "anchorbench/schema/input_error.hpp"
-#include "anchorbench/io/log_reader.hpp"
 #include "anchorbench/io/recorded_data.hpp"
 #include "anchorbench/io/result_folder.hpp"
 #include "anchorbench/report/replay_report.hpp"
-#include "anchorbench/report/replay_summary.hpp"
-#include "anchorbench/engine/replay.hpp"
+#include "anchorbench/engine/replay_log.hpp"
 #include "commands.hpp"
 #include "progress.hpp"
 
@@ -35,28 +33,19 @@ io::LogPolicy PolicyOf(const ReplayArgs& args) {
   return policy;
 }
 
-// The first pass: every file read to the end under the policy, so that a malformed file or a
-// refused row ends the command before any output exists.
-io::LogSurvey Survey(const io::LogFiles& files, const io::LogPolicy& policy, bool quiet) {
-  Progress progress("replay: checking", quiet, "MB", kBytesPerMb);
-  io::LogSurvey survey =
-      io::SurveyLog(files, policy, [&](std::uint64_t done, std::uint64_t total) { progress.Update(done, total); });
-  if (!quiet && progress.elapsed_s() > 1.0) progress.Finish(static_cast<long long>(survey.bytes));
-  return survey;
-}
-
 }  // namespace
 
 int ReplayCommand(const ReplayArgs& args, const AppContext& app) {
   schema::ExperimentConfig config;  // the defaults, unless --config names a file
   if (!args.config.empty()) config = config::LoadConfig(args.config, {}, app.components);
-  const io::LogPolicy policy = PolicyOf(args);
-  const io::LogFiles files{args.poses, args.ranges};
-  const io::LogSurvey survey = Survey(files, policy, args.quiet);
-  std::map<int, schema::AnchorTruth> truth;
+  std::optional<std::map<int, schema::AnchorTruth>> truth;
   if (!args.anchors.empty()) truth = io::LoadAnchors(args.anchors);
-  const std::map<int, schema::AnchorTruth>* known = args.anchors.empty() ? nullptr : &truth;
-  engine::CheckReplayable(survey.anchor_ids, known, config.estimator, app.components);
+  // The first pass: every file read to the end under the policy, so that a malformed file or a
+  // refused row ends the command before any output exists.
+  Progress checking("replay: checking", args.quiet, "MB", kBytesPerMb);
+  const engine::ReplayLog replay({args.poses, args.ranges}, PolicyOf(args), std::move(truth), config, app.components,
+                                 [&](std::uint64_t done, std::uint64_t total) { checking.Update(done, total); });
+  if (!args.quiet && checking.elapsed_s() > 1.0) checking.Finish(static_cast<long long>(replay.survey().bytes));
 
   // The outputs, before any work: never an input, never earlier results without --overwrite.
   std::unique_ptr<io::ResultFolder> out;
@@ -76,7 +65,7 @@ int ReplayCommand(const ReplayArgs& args, const AppContext& app) {
     }
     constexpr std::uintmax_t kBytesPerTraceRow = 64;
     trace_file = std::make_unique<io::AtomicFile>(args.trace, args.overwrite, Inputs(args),
-                                                  kBytesPerTraceRow * static_cast<std::uintmax_t>(survey.range_rows));
+                                                  kBytesPerTraceRow * static_cast<std::uintmax_t>(replay.survey().range_rows));
     trace_file->stream() << report::kTraceHeader << '\n';
     trace = [&](const io::RangeRecord& r, const estimator::FeedResult& fed) {
       report::WriteTraceRow(trace_file->stream(), r, fed);
@@ -84,27 +73,19 @@ int ReplayCommand(const ReplayArgs& args, const AppContext& app) {
   }
 
   // The second pass, streamed: one row at a time from the files into the front end.
-  report::ReplaySummary summary{files, policy, survey.pose_rows, survey.range_rows, {}, {}, survey.reordered_rows};
-  io::RecordedLog log(files, policy, survey.default_tag_id, summary.drops);
   Progress progress("replay", args.quiet, "MB", kBytesPerMb);
-  std::int64_t rows = 0;
-  const engine::LogSource source = [&](io::RecordedLog::Kind& kind, io::PoseRecord& pose, io::RangeRecord& range) {
-    if ((++rows & 0xffff) == 0) progress.Update(static_cast<long long>(log.bytes_read()), static_cast<long long>(survey.bytes));
-    return log.Next(kind, pose, range);
-  };
-  const engine::ReplayResult result =
-      engine::Replay(source, files.ranges, known, config.estimator, app.components, config.seed, trace);
-  if (progress.elapsed_s() > 1.0) progress.Finish(static_cast<long long>(survey.bytes));
-  summary.drops.Add(result.drops);
-  summary.samples_by_anchor = result.samples_by_anchor;
+  const engine::ReplayOutcome outcome = replay.Run(trace, [&](std::uint64_t done, std::uint64_t total) {
+    progress.Update(static_cast<long long>(done), static_cast<long long>(total));
+  });
+  if (progress.elapsed_s() > 1.0) progress.Finish(static_cast<long long>(replay.survey().bytes));
 
-  if (!args.quiet) report::PrintReplaySummary(std::cerr, summary);
-  report::PrintEstimates(std::cout, result.attempts);
+  if (!args.quiet) report::PrintReplaySummary(std::cerr, outcome.summary);
+  report::PrintEstimates(std::cout, outcome.result.attempts);
   if (trace_file) trace_file->Commit();
   if (out) {
-    out->Write("estimates.csv", [&](std::ostream& file) { report::WriteEstimates(file, result.attempts); });
-    out->Write("replay_summary.json", [&](std::ostream& file) { report::WriteReplaySummaryJson(file, summary); });
-    out->Write("replay_summary.md", [&](std::ostream& file) { report::WriteReplaySummaryMarkdown(file, summary); });
+    engine::WriteReplayFiles([&](const std::string& name, const std::function<void(std::ostream&)>& write) {
+      out->Write(name, write);
+    }, outcome);
     out->Commit();
   }
   return 0;

@@ -228,6 +228,10 @@ ConfigDocument ReadConfigDocument(const std::string& path) {
   return {path, WithBase(ReadConfigFile(path), path, 0, nullptr)};
 }
 
+ConfigDocument ParseConfigDocument(const std::string& text, const std::string& source) {
+  return {source, WithBase(text, source, 0, nullptr)};
+}
+
 YAML::Node WithOverrides(const ConfigDocument& document, const std::vector<std::string>& overrides) {
   YAML::Node root = YAML::Clone(document.root);
   for (const std::string& assignment : overrides) ApplyOverride(root, assignment);

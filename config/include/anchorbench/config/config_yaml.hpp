@@ -30,6 +30,8 @@ struct ConfigDocument {
   YAML::Node root;
 };
 ConfigDocument ReadConfigDocument(const std::string& path);
+// The same from text; `source` names it and anchors a relative `base:`.
+ConfigDocument ParseConfigDocument(const std::string& text, const std::string& source);
 // A copy of the document with `overrides` applied (the document is left as it was).
 YAML::Node WithOverrides(const ConfigDocument& document, const std::vector<std::string>& overrides);
 
