@@ -15,6 +15,8 @@ packages=(
   clang libclang-rt-14-dev libomp-14-dev  # scripts/sanitize.sh: ASan, UBSan, libFuzzer
   openmpi-bin libopenmpi-dev     # anchorbench-mpi (docs/cluster.md)
   slurm-wlm munge                # scripts/slurm/, tested against a single-node Slurm
+  pybind11-dev python3-dev python3-pandas python3-yaml python3-pytest  # the Python module (docs/python.md)
+  python3-rosbag python3-geometry-msgs python3-sensor-msgs python3-nav-msgs python3-std-msgs  # anchorbench-bag
 )
 
 missing=()

@@ -1,0 +1,176 @@
+// The trials from Python: configs, run, sweep, replay and simulate, each returning the files the
+// command line writes (the same bytes), which the package reads into DataFrames and can save.
+#include <map>
+#include <sstream>
+
+#include <pybind11/stl.h>
+#include <pybind11/stl/filesystem.h>
+
+#include "anchorbench/config/load_config.hpp"
+#include "anchorbench/engine/commit.hpp"
+#include "anchorbench/engine/monte_carlo.hpp"
+#include "anchorbench/engine/plan.hpp"
+#include "anchorbench/engine/replay_log.hpp"
+#include "anchorbench/engine/run_plan.hpp"
+#include "anchorbench/io/log_policy.hpp"
+#include "anchorbench/io/recorded_data.hpp"
+#include "anchorbench/io/result_folder.hpp"
+#include "anchorbench/io/scenario_files.hpp"
+#include "anchorbench/schema/input_error.hpp"
+#include "anchorbench/schema/sweep.hpp"
+#include "anchorbench/sim/scenario.hpp"
+#include "config_handle.hpp"
+#include "module_parts.hpp"
+
+namespace anchorbench::app {
+const char* BuildRevision();  // generated at build time (cmake/GitRevision.cmake)
+}
+
+namespace anchorbench::python {
+
+ConfigHandle LoadConfigFile(const std::string& path, const std::vector<std::string>& overrides) {
+  ConfigHandle handle{config::ReadConfigDocument(path), {}, path, overrides};
+  handle.experiment = config::LoadConfig(handle.document, overrides, ModuleComponents());
+  return handle;
+}
+
+ConfigHandle LoadConfigText(const std::string& text, const std::string& source, const std::vector<std::string>& overrides) {
+  ConfigHandle handle{config::ParseConfigDocument(text, source), {}, source, overrides};
+  handle.experiment = config::LoadConfig(handle.document, overrides, ModuleComponents());
+  return handle;
+}
+
+namespace {
+
+// A result's files by name, in the order the command writes them.
+struct Files {
+  std::vector<std::pair<std::string, std::string>> texts;
+
+  engine::FileWriter Writer() {
+    return [this](const std::string& name, const std::function<void(std::ostream&)>& write) {
+      std::ostringstream text;
+      write(text);
+      texts.emplace_back(name, text.str());
+    };
+  }
+  std::vector<std::string> Names() const {
+    std::vector<std::string> names;
+    for (const auto& [name, text] : texts) names.push_back(name);
+    return names;
+  }
+  const std::string& Text(const std::string& name) const {
+    for (const auto& [file, text] : texts) {
+      if (file == name) return text;
+    }
+    throw py::key_error(name);
+  }
+  // Whole or absent, as the command line's result folders (io::ResultFolder).
+  void Save(const std::filesystem::path& folder, bool overwrite) const {
+    io::ResultFolder::Options options;
+    options.overwrite = overwrite;
+    io::ResultFolder out(folder, options);
+    for (const auto& [name, text] : texts) out.Write(name, text);
+    out.Commit();
+  }
+};
+
+report::RunInfo InfoOf(const ConfigHandle& config, int threads, std::vector<std::string> command_line) {
+  report::RunInfo info;
+  info.config_path = config.source;
+  info.revision = app::BuildRevision();
+  info.threads = threads;
+  info.command_line = std::move(command_line);
+  info.command_line.insert(info.command_line.begin(), "python");
+  info.resolved_config = config::ToJson(config.experiment);
+  return info;
+}
+
+std::vector<engine::ExperimentAttempts> Compute(const engine::Plan& plan, int threads) {
+  engine::LocalExecutor executor(ModuleComponents());
+  py::gil_scoped_release release;  // a Python part takes it back while it runs
+  return engine::RunWholePlan(plan, executor, threads);
+}
+
+Files Run(const ConfigHandle& config, int threads) {
+  engine::CheckExperiment(config.experiment, ModuleComponents());
+  const int resolved = engine::ResolveThreads(threads);
+  const engine::Plan plan({config.experiment});
+  const std::vector<engine::ExperimentAttempts> run = Compute(plan, resolved);
+  Files files;
+  engine::WriteRunFiles(files.Writer(), config.experiment, run.front(), InfoOf(config, resolved, {"run"}));
+  return files;
+}
+
+Files Sweep(const ConfigHandle& config, const std::vector<std::string>& axes_text, int threads) {
+  const std::vector<schema::SweepAxis> axes = schema::SweepAxes(config.experiment.sweep, axes_text);
+  if (axes.empty()) throw schema::InputError(config.source + ": nothing to sweep: give axes or a 'sweep' section");
+  std::vector<schema::ExperimentConfig> points;
+  for (const schema::SweepPoint& point : schema::SweepGrid(axes)) {
+    std::vector<std::string> overrides = config.overrides;
+    overrides.insert(overrides.end(), point.overrides.begin(), point.overrides.end());
+    points.push_back(config::LoadConfig(config.document, overrides, ModuleComponents()));
+    points.back().name = config.experiment.name;
+    engine::CheckExperiment(points.back(), ModuleComponents());
+  }
+  const int resolved = engine::ResolveThreads(threads);
+  const engine::Plan plan(points);
+  const std::vector<engine::ExperimentAttempts> run = Compute(plan, resolved);
+  Files files;
+  engine::WriteSweepFiles(files.Writer(), config.experiment.name, axes, plan, run, InfoOf(config, resolved, {"sweep"}));
+  return files;
+}
+
+Files Replay(const std::string& poses, const std::vector<std::string>& ranges, const std::string& anchors,
+             const ConfigHandle* config, const std::string& repeated_poses, const std::string& out_of_order) {
+  const schema::ExperimentConfig experiment = config ? config->experiment : schema::ExperimentConfig{};
+  io::LogPolicy policy;
+  policy.repeated_poses = io::RepeatedPosesFromName(repeated_poses);
+  policy.out_of_order = io::OutOfOrderFromName(out_of_order);
+  std::optional<std::map<int, schema::AnchorTruth>> truth;
+  if (!anchors.empty()) truth = io::LoadAnchors(anchors);
+  Files files;
+  py::gil_scoped_release release;
+  const engine::ReplayLog replay({poses, ranges}, policy, std::move(truth), experiment, ModuleComponents());
+  const engine::ReplayOutcome outcome = replay.Run();
+  py::gil_scoped_acquire acquire;
+  engine::WriteReplayFiles(files.Writer(), outcome);
+  return files;
+}
+
+Files Simulate(const ConfigHandle& config, std::uint64_t realization) {
+  const sim::Scenario scenario = sim::GenerateScenario(config.experiment.scenario, config.experiment.seed, realization);
+  const io::Recording recording = io::RecordingOf(scenario);
+  Files files;
+  engine::FileWriter write = files.Writer();
+  write("poses.csv", [&](std::ostream& out) { io::WritePoses(out, recording.poses); });
+  write("ranges.csv", [&](std::ostream& out) { io::WriteRanges(out, recording.ranges); });
+  write("anchors.csv", [&](std::ostream& out) { io::WriteAnchors(out, recording.anchors); });
+  return files;
+}
+
+}  // namespace
+
+void BindTrials(py::module_& m) {
+  py::class_<ConfigHandle>(m, "Config", "An experiment config, resolved (bases and overrides applied) and validated.")
+      .def_property_readonly("name", [](const ConfigHandle& c) { return c.experiment.name; })
+      .def_property_readonly("source", [](const ConfigHandle& c) { return c.source; })
+      .def_property_readonly("seed", [](const ConfigHandle& c) { return c.experiment.seed; })
+      .def_property_readonly("realizations", [](const ConfigHandle& c) { return c.experiment.realizations; })
+      .def_property_readonly("triggers", [](const ConfigHandle& c) { return c.experiment.estimator.triggers; })
+      .def_property_readonly("yaml", [](const ConfigHandle& c) { return config::ToYaml(c.experiment); },
+                             "the resolved config in the file schema");
+  m.def("_load_config_file", &LoadConfigFile, py::arg("path"), py::arg("overrides"));
+  m.def("_load_config_text", &LoadConfigText, py::arg("text"), py::arg("source"), py::arg("overrides"));
+  py::class_<Files>(m, "Files", "A result's files, as the command line writes them.")
+      .def_property_readonly("names", &Files::Names)
+      .def("text", &Files::Text, py::arg("name"))
+      .def("save", &Files::Save, py::arg("folder"), py::arg("overwrite") = false,
+           "Writes the files into `folder`, whole or not at all; an existing folder only with overwrite=True.");
+  m.def("_run", &Run, py::arg("config"), py::arg("threads"));
+  m.def("_sweep", &Sweep, py::arg("config"), py::arg("axes"), py::arg("threads"));
+  m.def("_replay", &Replay, py::arg("poses"), py::arg("ranges"), py::arg("anchors"), py::arg("config"),
+        py::arg("repeated_poses"), py::arg("out_of_order"));
+  m.def("_simulate", &Simulate, py::arg("config"), py::arg("realization"));
+}
+
+}  // namespace anchorbench::python

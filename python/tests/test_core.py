@@ -1,0 +1,73 @@
+"""The core on arrays: solvers, PDOPs, and the online front end fed one sample at a time or in batches."""
+
+import numpy as np
+import pytest
+
+import anchorbench as ab
+from conftest import box_samples
+
+
+def test_solve_finds_an_anchor_and_its_bias():
+    p, d = box_samples([2.0, -1.0, 4.0])
+    result = ab.solve(p, d)
+    assert result.succeeded, result
+    assert np.linalg.norm(result.p_world_anchor - [2.0, -1.0, 4.0]) < 0.1
+    assert abs(result.bias_m - 0.3) < 0.05
+    assert result.covariance.shape == (4, 4)
+    assert ab.solve(p, d, solver="ls_double").succeeded
+
+
+def test_solve_refuses_a_wrong_shape_and_an_unknown_solver():
+    p, d = box_samples([2.0, -1.0, 4.0])
+    with pytest.raises(ValueError, match=r"p_world_tag: expected an array of shape \(N, 3\)"):
+        ab.solve(p[:, :2], d)
+    with pytest.raises(ValueError, match=r"range_m: expected an array of shape \(400,\)"):
+        ab.solve(p, d[:-1])
+    with pytest.raises(ab.InputError, match="unknown solver 'no_such'"):
+        ab.solve(p, d, solver="no_such")
+
+
+def test_pdops_on_arrays():
+    p, d = box_samples([2.0, -1.0, 4.0])
+    assert 0 < ab.closest_point_pdop(p, d) < np.inf
+    assert 0 < ab.geometry_pdop(p, d, np.array([2.0, -1.0, 4.0])) < 10
+    line = np.column_stack([np.linspace(0, 10, 50), np.zeros(50), np.zeros(50)])
+    assert ab.closest_point_pdop(line, np.linspace(5, 6, 50)) == np.inf  # a straight line cannot place an anchor
+
+
+def _feed_one_by_one(front_end, t, p, d):
+    for i in range(len(t)):
+        front_end.add_sample(float(t[i]), 0, 7, float(d[i]), p[i])
+
+
+def test_the_front_end_gives_the_same_events_one_sample_at_a_time_and_in_a_batch():
+    p, d = box_samples([2.0, -1.0, 4.0], n=600)
+    t = np.arange(len(d)) * 0.1
+    config = {"estimator": {"triggers": ["fixed_window", "pdop_closest_point"]}}
+    single, batch = ab.FrontEnd(config), ab.FrontEnd(config)
+    _feed_one_by_one(single, t, p, d)
+    batch.add_samples(t, np.zeros(len(t), dtype=np.int32), np.full(len(t), 7, dtype=np.int32), d, p)
+    for front_end in (single, batch):
+        front_end.finish(float(t[-1]))
+    events_single, events_batch = single.take_events(), batch.take_events_array()
+    assert [e.trigger for e in events_single] == ["pdop_closest_point", "fixed_window"]
+    assert len(events_batch) == 2
+    for event, record in zip(events_single, events_batch):
+        assert event.anchor_id == record["anchor_id"] == 7
+        assert event.t_s == record["t_s"] and event.n_used == record["n_used"]
+        assert np.array_equal(event.solve.p_world_anchor, [record["x"], record["y"], record["z"]])
+        assert record["status"].decode() == event.solve.status
+    assert single.triggers == ["fixed_window", "pdop_closest_point"]
+    assert single.counters["samples"] == 600
+
+
+def test_poses_and_ranges_meet_in_the_front_end():
+    p, d = box_samples([2.0, -1.0, 4.0], n=300)
+    t = np.arange(len(d)) * 0.1
+    front_end = ab.FrontEnd({"estimator": {"triggers": ["fixed_window"]}})
+    front_end.add_poses(t, np.zeros(len(t), dtype=np.int32), p)
+    front_end.add_ranges(t, np.zeros(len(t), dtype=np.int32), np.full(len(t), 3, dtype=np.int32), d)
+    front_end.finish(float(t[-1]))
+    (event,) = front_end.take_events()
+    assert event.anchor_id == 3 and event.solve.succeeded
+    assert np.linalg.norm(event.solve.p_world_anchor - [2.0, -1.0, 4.0]) < 0.2

@@ -1,0 +1,82 @@
+"""run, sweep, replay and simulate from Python: the command line's records as DataFrames, the same bytes when saved."""
+
+import json
+
+import pytest
+
+import anchorbench as ab
+
+SAME_BYTES_RUN = ["attempts.csv", "summary.csv", "summary.md"]  # timing and manifest record the machine and the call
+
+
+def test_run_gives_the_command_lines_bytes(small_yaml, tmp_path, cli):
+    cli("run", small_yaml, "--out", tmp_path / "cli", "--quiet")
+    result = ab.run(small_yaml, threads=2)
+    result.save(tmp_path / "py")
+    for name in SAME_BYTES_RUN:
+        assert (tmp_path / "py" / name).read_bytes() == (tmp_path / "cli" / name).read_bytes(), name
+    assert set(result.names) == {"attempts.csv", "summary.csv", "summary.md", "timing.csv", "manifest.json"}
+    attempts = result.attempts
+    assert len(attempts) == 2 * 4 * 4 * 3  # rows x realizations x anchors x the default triggers
+    assert set(attempts["method"]) == {"fixed_window", "pdop_closest_point", "certified"}
+    assert list(result.summary["method"])[:3] == ["fixed_window", "pdop_closest_point", "certified"]
+    assert json.loads(result.text("manifest.json"))["seed"] == 5
+
+
+def test_a_dict_config_is_the_same_experiment_as_its_file(small_yaml):
+    import yaml
+
+    from_file = ab.run(small_yaml, realizations=2, threads=1)
+    from_dict = ab.run(yaml.safe_load(small_yaml.read_text()), realizations=2, threads=1)
+    assert from_dict.text("attempts.csv") == from_file.text("attempts.csv")
+
+
+def test_save_refuses_earlier_results_unless_asked(small_yaml, tmp_path):
+    result = ab.run(small_yaml, realizations=1, threads=1)
+    result.save(tmp_path / "out")
+    with pytest.raises(ab.InputError, match="add --overwrite"):
+        result.save(tmp_path / "out")
+    result.save(tmp_path / "out", overwrite=True)
+
+
+def test_bad_input_is_the_command_lines_one_line(small_yaml, tmp_path):
+    with pytest.raises(ab.InputError) as error:
+        ab.load_config(small_yaml, overrides=["scenario.tunnel.width_m=-3"])
+    assert str(error.value).startswith(f"{small_yaml}: key 'scenario.tunnel.width_m'")
+    with pytest.raises(ab.InputError, match="has moved: write it as estimator.initializer.min_samples"):
+        ab.load_config({"estimator": {"trigger": {"min_samples": 30}}})
+    with pytest.raises(ab.InputError, match="cannot open the config file"):
+        ab.load_config(tmp_path / "missing.yaml")
+
+
+def test_sweep_gives_a_line_per_point_row_and_trigger(small_yaml, tmp_path, cli):
+    axes = {"estimator.trigger.pdop_threshold": "0.5,2"}
+    result = ab.sweep(small_yaml, axes, realizations=2, threads=2)
+    cli("sweep", small_yaml, "--set", "estimator.trigger.pdop_threshold=0.5,2", "--realizations", 2,
+        "--out", tmp_path / "cli", "--quiet")
+    assert result.text("sweep.csv") == (tmp_path / "cli" / "sweep.csv").read_text()
+    assert len(result.sweep) == 2 * 2 * 3
+    assert set(result.sweep["estimator.trigger.pdop_threshold"]) == {0.5, 2.0}
+
+
+def test_simulate_then_replay_gives_the_command_lines_bytes(small_yaml, tmp_path, cli):
+    recording = ab.simulate(small_yaml, realization=1)
+    recording.save(tmp_path / "log")
+    cli("simulate", small_yaml, "--realization", 1, "--out", tmp_path / "cli_log")
+    for name in ["poses.csv", "ranges.csv", "anchors.csv"]:
+        assert (tmp_path / "log" / name).read_bytes() == (tmp_path / "cli_log" / name).read_bytes(), name
+    log = tmp_path / "log"
+    replayed = ab.replay(log / "poses.csv", log / "ranges.csv", anchors=log / "anchors.csv")
+    cli("replay", "--poses", log / "poses.csv", "--ranges", log / "ranges.csv", "--anchors", log / "anchors.csv",
+        "--out", tmp_path / "cli_replay", "--quiet")
+    for name in ["estimates.csv", "replay_summary.json", "replay_summary.md"]:
+        assert replayed.text(name) == (tmp_path / "cli_replay" / name).read_text(), name
+    assert len(replayed.estimates) == 4 * 3
+    assert replayed.estimates["err_m"].notna().any()  # the anchors file gives the truth
+
+
+def test_replay_refuses_a_malformed_log_naming_its_line(tmp_path):
+    (tmp_path / "poses.csv").write_text("t,x,y,z\n0,0,0,0\n1,1,nope,0\n")
+    (tmp_path / "ranges.csv").write_text("t,anchor_id,range\n0.5,1,3\n")
+    with pytest.raises(ab.InputError, match=r"poses.csv:3"):
+        ab.replay(tmp_path / "poses.csv", tmp_path / "ranges.csv")
