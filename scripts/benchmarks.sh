@@ -16,11 +16,12 @@ min_time=0.2
 repetitions=3
 realizations=
 replay_sizes="1e6 1e7"
+python_ranges=1e6
 build=
 while [ $# -gt 0 ]; do
   case $1 in
     --out) out=$2; shift 2 ;;
-    --quick) min_time=0.001; repetitions=1; realizations="--realizations 2"; replay_sizes="1e4 1e5"; shift ;;
+    --quick) min_time=0.001; repetitions=1; realizations="--realizations 2"; replay_sizes="1e4 1e5"; python_ranges=1e4; shift ;;
     --build) build=$2; shift 2 ;;
     *) echo "benchmarks.sh: unknown option $1 (--out DIR, --quick, --build DIR)" >&2; exit 2 ;;
   esac
@@ -28,7 +29,7 @@ done
 benches="bench_compare bench_solver bench_pdop bench_filters bench_triggers bench_front_end bench_ingest"
 if [ -z "$build" ]; then
   build=build
-  bash scripts/build.sh anchorbench anchorbench-mpi $benches  # anchorbench-mpi: cluster.csv
+  bash scripts/build.sh anchorbench anchorbench-mpi _anchorbench $benches  # anchorbench-mpi: cluster.csv; _anchorbench: python.csv
 fi
 mkdir -p "$(dirname "$out")"
 staging=$(mktemp -d "$(dirname "$out")/.$(basename "$out").partial-XXXXXX")
@@ -48,6 +49,9 @@ done
 /usr/bin/python3 scripts/replay_throughput.py "$build/app/anchorbench" "$staging" $replay_sizes
 /usr/bin/python3 scripts/replay_triggers.py "$build/app/anchorbench" "$staging" "$repetitions"
 # shellcheck disable=SC2086  # $realizations is empty or two words
+if compgen -G "$build/python/anchorbench/_anchorbench*.so" >/dev/null; then  # built with ANCHORBENCH_PYTHON
+  PYTHONPATH="$build/python" /usr/bin/python3 scripts/python_overhead.py "$build/app/anchorbench" "$staging" "$python_ranges"
+fi
 /usr/bin/python3 scripts/cluster_overhead.py "$build/app/anchorbench" "$staging" $realizations
 /usr/bin/python3 scripts/benchmark_tables.py "$staging"
 rm -rf "$staging"/*.json "$staging"/table1_threads_*

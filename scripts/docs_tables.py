@@ -424,6 +424,24 @@ def replay_triggers():
                  [[r["trigger"], f"{float(r['seconds']):.2f} s", f"{float(r['ratio_to_paper']):.2f}x"] for r in rows])
 
 
+def python_overhead():
+    """The Python front's cost against the command line (results/benchmarks/python.csv)."""
+    rows = {r["way"]: r for r in read("benchmarks/python.csv")}
+    ranges = int(rows["cli_replay"]["rows"])
+    ways = [("cli_replay", "`anchorbench replay` on the CSV files (read twice: checked, then streamed)"),
+            ("python_replay", "`ab.replay` on the same files"),
+            ("python_batch", "`FrontEnd.add_poses` / `add_ranges` on arrays in memory, a 10 s window a call"),
+            ("python_single", "`FrontEnd.add_pose` / `add_range`, one call a row")]
+    feeding = table(["way", "rows", "us a row", "against the command line"],
+                    [[text, f"{int(rows[w]['rows']):,}", f"{float(rows[w]['us_per_row']):.2f}",
+                      f"{float(rows[w]['ratio']):.2f}x"] for w, text in ways])
+    numpy, builtin = rows["solver_numpy_gauss_newton"], rows["solver_lm_adaptive"]
+    return (f"A log of {ranges:,} ranges (Table I's realization tiled), two triggers:\n\n" + feeding +
+            f"\n\nA solver in numpy (examples/python's Gauss-Newton) in the Monte Carlo: "
+            f"{float(numpy['us_per_row']):.0f} us an attempt against lm_adaptive's {float(builtin['us_per_row']):.0f} "
+            f"({float(numpy['ratio']):.1f}x; Table I's fixed window, one thread).")
+
+
 def ransac_cost():
     """RANSAC against the consistency check, per whole initialization (what the paper's 463x
     compares: Table II runs the paper's RANSAC, scheme full_solve) and for the filters alone, each
@@ -814,7 +832,8 @@ GENERATORS = {f.__name__: f for f in (stress_triggers, stress_solvers, stress_co
                                       calibration_objective, calibration_profiles, calibration_cells, calibration_headline,
                                       cluster_overhead, cluster_cost_model, cluster_bullets,
                                       calibration_reachability, certified_everywhere, credibility_study,
-                                      replay_triggers, certified_summary, pdop_certified, ransac_speed)}
+                                      replay_triggers, certified_summary, pdop_certified, ransac_speed,
+                                      python_overhead)}
 MARKER = re.compile(r"(<!-- generated: (\w+) \(scripts/docs_tables.py\) -->\n)(.*?)(<!-- end generated -->)", re.S)
 
 

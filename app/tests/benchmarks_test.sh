@@ -8,7 +8,9 @@ build_dir=$2
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 bash "$source_dir/scripts/benchmarks.sh" --quick --build "$build_dir" --out "$work/benchmarks" >/dev/null
-for file in solvers.csv solvers.md micro.csv table1_threads.csv machine.md; do
+python=
+compgen -G "$build_dir/python/anchorbench/_anchorbench*.so" >/dev/null && python=python.csv  # the Python module built
+for file in solvers.csv solvers.md micro.csv table1_threads.csv machine.md $python; do
   [ -s "$work/benchmarks/$file" ] || { echo "missing $file"; exit 1; }
 done
 for solver in "eigen_dense_ls (baseline)" ls_single ls_double lm_l2 lm_huber lm_cauchy lm_adaptive nlopt:LN_BOBYQA \

@@ -23,7 +23,6 @@ from ._anchorbench import (  # noqa: F401  (the module's API)
     parts,
     register_solver,
     register_trigger,
-    solve,
 )
 from . import _anchorbench
 
@@ -53,6 +52,15 @@ def load_config(config: ConfigLike = None, overrides: Iterable[str] = (), name: 
 
         return _anchorbench._load_config_text(yaml.safe_dump(dict(config), sort_keys=False), f"{name}.yaml", overrides)
     return _anchorbench._load_config_file(os.fspath(config), overrides)
+
+
+def solve(p_world_tag, range_m, solver: str = "lm_adaptive", config: ConfigLike = None) -> SolveResult:
+    """Solves for an anchor (position and range bias) from tag positions (N, 3) and ranges (N,).
+
+    ``solver`` is a registered name (``ab.parts()["solvers"]``); ``config`` sets its options
+    (``estimator.ls``, ``estimator.nls``). Arrays of float64 are read without a copy.
+    """
+    return _anchorbench.solve(p_world_tag, range_m, solver, None if config is None else load_config(config))
 
 
 class Result:

@@ -15,6 +15,7 @@ def test_solve_finds_an_anchor_and_its_bias():
     assert abs(result.bias_m - 0.3) < 0.05
     assert result.covariance.shape == (4, 4)
     assert ab.solve(p, d, solver="ls_double").succeeded
+    assert ab.solve(p, d, config={"estimator": {"nls": {"kernel": "fixed", "fixed_alpha": 2}}}).alpha == 2.0
 
 
 def test_solve_refuses_a_wrong_shape_and_an_unknown_solver():
