@@ -94,6 +94,7 @@ struct CommandLine {
   app::RunArgs run;
   app::SweepArgs sweep;
   app::PdopStudyArgs study;
+  app::MonteCarloArgs navigate;
   app::ConvertHanyangArgs convert;
   app::CalibrateArgs calibrate;
   app::MergeArgs merge;
@@ -102,6 +103,7 @@ struct CommandLine {
   CLI::App* run_cmd = nullptr;
   CLI::App* sweep_cmd = nullptr;
   CLI::App* study_cmd = nullptr;
+  CLI::App* navigate_cmd = nullptr;
   CLI::App* convert_cmd = nullptr;
   CLI::App* calibrate_cmd = nullptr;
   CLI::App* merge_cmd = nullptr;
@@ -188,6 +190,13 @@ void AddMonteCarloCommands(CLI::App& cli, CommandLine& c) {
       ->check(WholeNumber(1, 1000000));
   c.study_cmd->add_option("--bin-s", c.study.bin_s, "Summary time bins in seconds, 0.01 to 120 (default 10)");
 
+  c.navigate_cmd = cli.add_subcommand(
+      "navigate", "Each trigger's anchors in a drifting robot's navigation filter, against the true anchors and none "
+                  "(docs/navigation.md)");
+  c.navigate_cmd->add_option("config", c.navigate.config, "Experiment config (YAML) with a 'navigation' section")
+      ->required();
+  AddMonteCarloOptions(c.navigate_cmd, c.navigate);
+
   c.calibrate_cmd = cli.add_subcommand(
       "calibrate", "Fit scenario parameters so an experiment's table matches the published one (docs/calibration.md)");
   c.calibrate_cmd->add_option("config", c.calibrate.config, "Calibration file (YAML): experiment, parameters, fit")
@@ -204,6 +213,7 @@ int Dispatch(const CommandLine& c, const app::AppContext& context) {
   if (c.run_cmd->parsed()) return app::RunCommand(c.run, context);
   if (c.sweep_cmd->parsed()) return app::SweepCommand(c.sweep, context);
   if (c.study_cmd->parsed()) return app::PdopStudyCommand(c.study, context);
+  if (c.navigate_cmd->parsed()) return app::NavigateCommand(c.navigate, context);
   if (c.calibrate_cmd->parsed()) return app::CalibrateCommand(c.calibrate, context);
   if (c.merge_cmd->parsed()) return app::MergeCommand(c.merge, context);
   if (c.convert_cmd->parsed()) return app::ConvertHanyangCommand(c.convert);

@@ -442,6 +442,18 @@ def python_overhead():
             f"({float(numpy['ratio']):.1f}x; Table I's fixed window, one thread).")
 
 
+def navigation_tunnel():
+    """Each trigger's anchors in a drifting robot's filter in Table I's tunnel (results/navigation_tunnel/)."""
+    rows = read("navigation_tunnel/navigation_summary.csv")
+    cell = lambda v, d=1: "-" if v == "" else f"{float(v):.{d}f}"
+    return table(["row", "method", "position RMSE (m)", "end error (m)", "share with a fix", "first anchor (s)",
+                  "3rd anchor (s)"],
+                 [[r["row"], r["method"], f"{float(r['rmse_mean_m']):.2f} [{float(r['rmse_lo_m']):.2f}, "
+                   f"{float(r['rmse_hi_m']):.2f}]", cell(r["final_error_median_m"], 2),
+                   f"{100 * float(r['fix_share_mean']):.0f}%", cell(r["t_first_anchor_median_s"]),
+                   cell(r["t_kth_anchor_median_s"])] for r in rows])
+
+
 def ransac_cost():
     """RANSAC against the consistency check, per whole initialization (what the paper's 463x
     compares: Table II runs the paper's RANSAC, scheme full_solve) and for the filters alone, each
@@ -833,7 +845,7 @@ GENERATORS = {f.__name__: f for f in (stress_triggers, stress_solvers, stress_co
                                       cluster_overhead, cluster_cost_model, cluster_bullets,
                                       calibration_reachability, certified_everywhere, credibility_study,
                                       replay_triggers, certified_summary, pdop_certified, ransac_speed,
-                                      python_overhead)}
+                                      python_overhead, navigation_tunnel)}
 MARKER = re.compile(r"(<!-- generated: (\w+) \(scripts/docs_tables.py\) -->\n)(.*?)(<!-- end generated -->)", re.S)
 
 

@@ -33,6 +33,7 @@ step "$bin" run configs/flat_path.yaml --out results/flat_path --quiet --overwri
 for run in cone_approach radio_biases credibility; do
   step "$bin" run "configs/$run.yaml" --out "results/$run" --quiet --overwrite
 done
+step "$bin" navigate configs/navigation_tunnel.yaml --out results/navigation_tunnel --quiet --overwrite
 for sweep in sweep_bias_aware stress stress_ransac; do
   step "$bin" sweep "configs/$sweep.yaml" --out "results/$sweep" --quiet --overwrite
 done

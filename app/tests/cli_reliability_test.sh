@@ -52,6 +52,11 @@ expect_exit 2 "outlier_probability_beyond_what_bursts_can_produce" "must be <= L
   "$bin" run "$dir/small.yaml" --set scenario.ranging.outlier_probability=0.99 --out "$dir/x"
 expect_exit 2 "retry_growth_that_would_overflow" "key 'estimator.initializer.retry_growth': must be in (1, 100]" \
   "$bin" run "$dir/small.yaml" --set estimator.initializer.retry_growth=1e300 --out "$dir/x"
+expect_exit 2 "navigate_without_a_navigation_section" "no 'navigation' section" \
+  "$bin" navigate "$dir/small.yaml" --out "$dir/x"
+{ cat "$dir/small.yaml"; printf 'navigation: {sigma_heading_rad_per_sqrt_s: -1}\n'; } >"$dir/drift.yaml"
+expect_exit 2 "navigate_with_a_negative_drift" "key 'navigation.sigma_heading_rad_per_sqrt_s'" \
+  "$bin" navigate "$dir/drift.yaml" --out "$dir/x"
 expect_exit 2 "pdop_study_bin_too_small_for_an_integer" "--bin-s: must be in [0.01, 120]" \
   "$bin" pdop-study "$dir/small.yaml" --bin-s 1e-300 --out "$dir/x"
 expect_exit 2 "threads_beyond_what_the_machine_can_run" "--threads 100000: at most" \

@@ -243,6 +243,20 @@ void Row(V& v, schema::RowConfig& row, const registry::Components& components) {
 }
 
 template <typename V>
+void Navigation(V& v, schema::NavigationConfig& o) {
+  v.Number("sigma_bias_mps_per_sqrt_s", o.sigma_bias_mps_per_sqrt_s);
+  v.Number("sigma_heading_rad_per_sqrt_s", o.sigma_heading_rad_per_sqrt_s);
+  v.Number("sigma_step_m_per_sqrt_s", o.sigma_step_m_per_sqrt_s);
+  v.Number("sigma_start_m", o.sigma_start_m);
+  v.Number("sigma_range_m", o.sigma_range_m);
+  v.Number("gate_chi2", o.gate_chi2);
+  v.Integer("fix_anchors", o.fix_anchors);
+  v.Integer("kth_anchor", o.kth_anchor);
+  v.Flag("use_height_unobservable", o.use_height_unobservable);
+  v.Check(o);
+}
+
+template <typename V>
 void Experiment(V& v, schema::ExperimentConfig& c, const registry::Components& components) {
   v.Unsigned("seed", c.seed, schema::kMaxSeed);
   v.Integer("realizations", c.realizations, 1, 100000000);
@@ -251,6 +265,7 @@ void Experiment(V& v, schema::ExperimentConfig& c, const registry::Components& c
   v.Section("estimator", [&](auto& s) { Estimator(s, c.estimator, components); });
   v.TextList("only_rows", c.only_rows);
   v.TextMap("sweep", c.sweep);
+  v.OptionalSection("navigation", c.navigation, [](auto& s, schema::NavigationConfig& o) { Navigation(s, o); });
   // Rows start from the base read above, so the base must come first in the visit.
   int index = 0;
   v.List("rows", c.rows,

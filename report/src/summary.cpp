@@ -104,14 +104,13 @@ std::optional<double> Percentile(std::vector<double> values, double q) {
 
 namespace {
 
-// FNV-1a of the method's name, cut to the substream's 24 bits.
+}  // namespace
+
 std::uint32_t MethodSubstream(const std::string& method) {
   std::uint32_t hash = 2166136261u;
   for (const char c : method) hash = (hash ^ static_cast<unsigned char>(c)) * 16777619u;
   return hash & sim::RandomStream::kMaxSubstream;
 }
-
-}  // namespace
 
 std::vector<MethodSummary> Summarize(const std::vector<Attempt>& attempts, const std::vector<schema::RowConfig>& rows,
                                      int realizations, int bootstrap_resamples, std::uint64_t seed) {

@@ -7,6 +7,7 @@
 
 #include <optional>
 #include <span>
+#include <string>
 #include <vector>
 
 #include <Eigen/Core>
@@ -48,6 +49,14 @@ struct NavigationOutcome {
   std::optional<double> t_first_anchor_s, t_kth_anchor_s;  // since the run's start
   double fix_share = 0.0;      // the share of epochs with at least fix_anchors anchors in use
   long ranges_used = 0, ranges_gated = 0;
+};
+
+// One method's run in one realization of an experiment's row (engine::RunNavigation).
+struct NavigationRecord {
+  int row = 0;
+  int realization = 0;
+  std::string method;  // a trigger, or a baseline
+  NavigationOutcome outcome;
 };
 
 // `t_s` and `p_world_tag` are the true trajectory (one entry per epoch), `odometry` its steps

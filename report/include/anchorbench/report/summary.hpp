@@ -44,6 +44,9 @@ std::optional<Interval> WilsonInterval(int successes, int trials);
 
 // The q-quantile (0..1) with linear interpolation; absent for no values.
 std::optional<double> Percentile(std::vector<double> values, double q);
+// A bootstrap substream named by a method (FNV-1a of the name, cut to the substream's 24 bits):
+// adding a method leaves the others' intervals as they were.
+std::uint32_t MethodSubstream(const std::string& method);
 
 // Summaries ordered by row, then by the row's trigger list (estimator.triggers; the default puts
 // fixed_window first, the paper's order). `rows` are the ones the attempts were run on.

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "anchorbench/schema/estimator_config.hpp"
+#include "anchorbench/schema/navigation.hpp"
 #include "anchorbench/sim/scenario.hpp"
 
 namespace anchorbench::schema {
@@ -60,6 +61,8 @@ struct ExperimentConfig {
   std::vector<std::string> only_rows;  // run these rows only (names); empty: all
   // Sweep axes (anchorbench sweep): dotted key -> values ("0.5,1,2" or a range "0.25:3:0.25").
   std::vector<std::pair<std::string, std::string>> sweep;
+  // The navigation study (anchorbench navigate; docs/navigation.md): absent unless the file has it.
+  std::optional<NavigationConfig> navigation;
 };
 
 // The rows `run` executes: config.rows (those in only_rows, if given), or the base as a single

@@ -1,0 +1,37 @@
+#include <iostream>
+
+#include "anchorbench/config/load_config.hpp"
+#include "anchorbench/engine/monte_carlo.hpp"
+#include "anchorbench/engine/navigation.hpp"
+#include "anchorbench/schema/input_error.hpp"
+#include "monte_carlo_command.hpp"
+
+namespace anchorbench::app {
+
+int NavigateCommand(const MonteCarloArgs& args, const AppContext& app) {
+  schema::ExperimentConfig config = config::LoadConfig(args.config, {}, app.components);
+  if (args.realizations) config.realizations = *args.realizations;
+  engine::CheckExperiment(config, app.components);
+  if (!config.navigation) {
+    throw schema::InputError(args.config + ": no 'navigation' section: nothing says how the robot drifts "
+                                           "(docs/navigation.md)");
+  }
+  const MonteCarloSetup setup = SetUpMonteCarlo(args, config.name);
+  // A line of ~100 bytes per (row, realization, method), and the tables.
+  const std::uintmax_t lines = static_cast<std::uintmax_t>(config.realizations) * schema::RowsOf(config).size() *
+                               (config.estimator.triggers.size() + 2);
+  const std::unique_ptr<io::ResultFolder> out = OpenResultFolder(args, setup, 150 * lines + (1 << 16));
+
+  Progress progress("navigate " + config.name, args.quiet);
+  const std::vector<engine::NavigationRecord> records = engine::RunNavigation(config, app.components, setup.threads);
+  const double wall_time_s = progress.elapsed_s();
+  progress.Finish(static_cast<long long>(records.size() / (config.estimator.triggers.size() + 2)));
+  const std::string markdown = engine::WriteNavigationFiles(
+      [&](const std::string& name, const std::function<void(std::ostream&)>& write) { out->Write(name, write); },
+      config, records, RunInfoOf(args, setup, app, config, wall_time_s, {"navigate"}));
+  out->Commit();
+  if (!args.quiet) std::cout << markdown;
+  return 0;
+}
+
+}  // namespace anchorbench::app

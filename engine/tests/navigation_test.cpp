@@ -1,0 +1,49 @@
+#include "anchorbench/engine/navigation.hpp"
+
+#include <gtest/gtest.h>
+
+#include "anchorbench/schema/input_error.hpp"
+#include "anchorbench/testing/components.hpp"
+#include "anchorbench/testing/small_table.hpp"
+
+namespace anchorbench::engine {
+namespace {
+
+using testing::AllComponents;
+
+schema::ExperimentConfig Navigated() {
+  schema::ExperimentConfig config = testing::SmallTable();
+  config.realizations = 3;
+  config.navigation.emplace();
+  return config;
+}
+
+TEST(Navigation, EveryTriggerAndBothBaselinesForEachRowAndRealizationTheSameOnAnyThreads) {
+  const schema::ExperimentConfig config = Navigated();
+  const std::vector<NavigationRecord> one = RunNavigation(config, AllComponents(), 1);
+  const std::vector<NavigationRecord> two = RunNavigation(config, AllComponents(), 3);
+  const std::size_t methods = config.estimator.triggers.size() + 2;
+  ASSERT_EQ(one.size(), 2 * 3 * methods);
+  ASSERT_EQ(two.size(), one.size());
+  for (std::size_t i = 0; i < one.size(); ++i) {
+    EXPECT_EQ(one[i].method, two[i].method);
+    EXPECT_EQ(one[i].outcome.rmse_m, two[i].outcome.rmse_m) << i;  // bit for bit
+    EXPECT_EQ(one[i].row, static_cast<int>(i / (3 * methods)));
+  }
+  EXPECT_EQ(one[methods - 2].method, kTrueAnchors);
+  EXPECT_EQ(one[methods - 1].method, kNoAnchors);
+  for (std::size_t unit = 0; unit < 6; ++unit) {
+    const NavigationRecord& floor = one[unit * methods + methods - 2];
+    const NavigationRecord& drift = one[unit * methods + methods - 1];
+    EXPECT_LT(floor.outcome.rmse_m, drift.outcome.rmse_m);
+    EXPECT_EQ(floor.outcome.fix_share, 1.0);
+    EXPECT_EQ(drift.outcome.fix_share, 0.0);
+  }
+}
+
+TEST(Navigation, AConfigWithoutANavigationSectionIsRefused) {
+  EXPECT_THROW(RunNavigation(testing::SmallTable(), AllComponents(), 1), schema::InputError);
+}
+
+}  // namespace
+}  // namespace anchorbench::engine

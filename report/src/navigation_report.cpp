@@ -1,0 +1,123 @@
+#include "anchorbench/report/navigation_report.hpp"
+
+#include <algorithm>
+#include <map>
+
+#include "anchorbench/io/format.hpp"
+#include "anchorbench/report/summary.hpp"
+#include "anchorbench/schema/random_streams.hpp"
+#include "anchorbench/sim/random_stream.hpp"
+
+namespace anchorbench::report {
+namespace {
+
+using io::FormatFixed;
+using io::FormatNumber;
+using io::FormatOptional;
+
+double Mean(const std::vector<double>& values) {
+  double sum = 0.0;
+  for (double v : values) sum += v;
+  return values.empty() ? 0.0 : sum / static_cast<double>(values.size());
+}
+
+// The 95% percentile interval of the mean over `resamples` resamples of the runs (one a realization).
+std::pair<double, double> BootstrapMean(const std::vector<double>& values, int resamples, sim::RandomStream rng) {
+  std::vector<double> means;
+  means.reserve(static_cast<std::size_t>(resamples));
+  for (int b = 0; b < resamples; ++b) {
+    double sum = 0.0;
+    for (std::size_t i = 0; i < values.size(); ++i) {
+      sum += values[std::min(values.size() - 1, static_cast<std::size_t>(rng.Uniform() * static_cast<double>(values.size())))];
+    }
+    means.push_back(sum / static_cast<double>(values.size()));
+  }
+  return {*Percentile(means, 0.025), *Percentile(means, 0.975)};
+}
+
+std::string Cell(const std::optional<double>& value, int decimals) { return value ? FormatFixed(*value, decimals) : "-"; }
+
+}  // namespace
+
+std::vector<NavigationSummary> SummarizeNavigation(const std::vector<nav::NavigationRecord>& records, int rows,
+                                                   int resamples, std::uint64_t seed) {
+  std::vector<NavigationSummary> summaries;
+  for (int row = 0; row < rows; ++row) {
+    std::vector<std::string> methods;  // in the records' order
+    for (const nav::NavigationRecord& r : records) {
+      if (r.row == row && std::find(methods.begin(), methods.end(), r.method) == methods.end()) methods.push_back(r.method);
+    }
+    for (const std::string& method : methods) {
+      std::vector<double> rmse, final_error, fix, t_first, t_kth;
+      for (const nav::NavigationRecord& r : records) {
+        if (r.row != row || r.method != method) continue;
+        rmse.push_back(r.outcome.rmse_m);
+        final_error.push_back(r.outcome.final_error_m);
+        fix.push_back(r.outcome.fix_share);
+        if (r.outcome.t_first_anchor_s) t_first.push_back(*r.outcome.t_first_anchor_s);
+        if (r.outcome.t_kth_anchor_s) t_kth.push_back(*r.outcome.t_kth_anchor_s);
+      }
+      NavigationSummary s;
+      s.row = row;
+      s.method = method;
+      s.runs = static_cast<int>(rmse.size());
+      s.rmse_mean_m = Mean(rmse);
+      if (resamples > 0) {
+        const auto [lo, hi] = BootstrapMean(rmse, resamples,
+                                            sim::RandomStream(seed, static_cast<std::uint64_t>(row), schema::kBootstrapStream,
+                                                              MethodSubstream("navigation:" + method)));
+        s.rmse_lo_m = lo;
+        s.rmse_hi_m = hi;
+      }
+      s.final_error_median_m = Percentile(final_error, 0.5).value_or(0.0);
+      s.fix_share_mean = Mean(fix);
+      s.with_first_anchor = static_cast<int>(t_first.size());
+      s.t_first_anchor_median_s = Percentile(t_first, 0.5);
+      s.t_kth_anchor_median_s = Percentile(t_kth, 0.5);
+      summaries.push_back(s);
+    }
+  }
+  return summaries;
+}
+
+void WriteNavigationCsv(std::ostream& out, const std::vector<nav::NavigationRecord>& records,
+                        const std::vector<schema::RowConfig>& rows) {
+  out << "row,realization,method,rmse_m,final_error_m,t_first_anchor_s,t_kth_anchor_s,fix_share,ranges_used,"
+         "ranges_gated\n";
+  for (const nav::NavigationRecord& r : records) {
+    const nav::NavigationOutcome& o = r.outcome;
+    out << rows[static_cast<std::size_t>(r.row)].name << ',' << r.realization << ',' << r.method << ','
+        << FormatNumber(o.rmse_m) << ',' << FormatNumber(o.final_error_m) << ',' << FormatOptional(o.t_first_anchor_s)
+        << ',' << FormatOptional(o.t_kth_anchor_s) << ',' << FormatNumber(o.fix_share) << ',' << o.ranges_used << ','
+        << o.ranges_gated << '\n';
+  }
+}
+
+void WriteNavigationSummaryCsv(std::ostream& out, const std::vector<NavigationSummary>& summaries,
+                               const std::vector<schema::RowConfig>& rows) {
+  out << "row,method,runs,rmse_mean_m,rmse_lo_m,rmse_hi_m,final_error_median_m,fix_share_mean,with_first_anchor,"
+         "t_first_anchor_median_s,t_kth_anchor_median_s\n";
+  for (const NavigationSummary& s : summaries) {
+    out << rows[static_cast<std::size_t>(s.row)].name << ',' << s.method << ',' << s.runs << ','
+        << FormatNumber(s.rmse_mean_m) << ',' << FormatOptional(s.rmse_lo_m) << ',' << FormatOptional(s.rmse_hi_m) << ','
+        << FormatNumber(s.final_error_median_m) << ',' << FormatNumber(s.fix_share_mean) << ',' << s.with_first_anchor
+        << ',' << FormatOptional(s.t_first_anchor_median_s) << ',' << FormatOptional(s.t_kth_anchor_median_s) << '\n';
+  }
+}
+
+void WriteNavigationMarkdown(std::ostream& out, const std::vector<NavigationSummary>& summaries,
+                             const std::vector<schema::RowConfig>& rows, const schema::ExperimentConfig& config) {
+  out << "# " << config.name << ": navigation\n\n" << config.realizations << " realizations per row, seed " << config.seed
+      << ". Position RMSE over the run (mean, 95% interval over realizations), end error (median), share of the run "
+         "with a fix, and when the first and k-th anchors came (medians).\n\n"
+      << "| Row | Method | RMSE (m) | End error (m) | Fix (%) | First anchor (s) | k-th anchor (s) |\n"
+      << "|---|---|---|---|---|---|---|\n";
+  for (const NavigationSummary& s : summaries) {
+    out << "| " << rows[static_cast<std::size_t>(s.row)].name << " | " << s.method << " | " << FormatFixed(s.rmse_mean_m, 3)
+        << (s.rmse_lo_m ? " [" + FormatFixed(*s.rmse_lo_m, 3) + ", " + FormatFixed(*s.rmse_hi_m, 3) + "]" : "") << " | "
+        << FormatFixed(s.final_error_median_m, 3) << " | " << FormatFixed(100.0 * s.fix_share_mean, 1) << " | "
+        << Cell(s.t_first_anchor_median_s, 1) << " | " << Cell(s.t_kth_anchor_median_s, 1) << " |\n";
+  }
+}
+
+}  // namespace anchorbench::report
