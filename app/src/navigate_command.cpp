@@ -1,9 +1,7 @@
 #include <iostream>
 
 #include "anchorbench/config/load_config.hpp"
-#include "anchorbench/engine/monte_carlo.hpp"
 #include "anchorbench/engine/navigation.hpp"
-#include "anchorbench/schema/input_error.hpp"
 #include "monte_carlo_command.hpp"
 
 namespace anchorbench::app {
@@ -11,11 +9,7 @@ namespace anchorbench::app {
 int NavigateCommand(const MonteCarloArgs& args, const AppContext& app) {
   schema::ExperimentConfig config = config::LoadConfig(args.config, {}, app.components);
   if (args.realizations) config.realizations = *args.realizations;
-  engine::CheckExperiment(config, app.components);
-  if (!config.navigation) {
-    throw schema::InputError(args.config + ": no 'navigation' section: nothing says how the robot drifts "
-                                           "(docs/navigation.md)");
-  }
+  engine::CheckNavigation(config, app.components);  // before the result folder is claimed
   const MonteCarloSetup setup = SetUpMonteCarlo(args, config.name);
   // A line of ~100 bytes per (row, realization, method), and the tables.
   const std::uintmax_t lines = static_cast<std::uintmax_t>(config.realizations) * schema::RowsOf(config).size() *

@@ -79,13 +79,17 @@ std::vector<NavigationRecord> NavigateRealization(const schema::RowConfig& row, 
   return records;
 }
 
-std::vector<NavigationRecord> RunNavigation(const schema::ExperimentConfig& config,
-                                            const registry::Components& components, int threads) {
+void CheckNavigation(const schema::ExperimentConfig& config, const registry::Components& components) {
   if (!config.navigation) {
     throw schema::InputError(config.name + ": no 'navigation' section: nothing says how the robot drifts "
                                            "(docs/navigation.md)");
   }
   CheckExperiment(config, components);
+}
+
+std::vector<NavigationRecord> RunNavigation(const schema::ExperimentConfig& config,
+                                            const registry::Components& components, int threads) {
+  CheckNavigation(config, components);
   const std::vector<schema::RowConfig> rows = schema::RowsOf(config);
   const int units = static_cast<int>(rows.size()) * config.realizations;
   std::vector<std::vector<NavigationRecord>> by_unit(static_cast<std::size_t>(units));

@@ -29,8 +29,11 @@ std::vector<NavigationRecord> NavigateRealization(const schema::RowConfig& row, 
                                                   int realization, const schema::NavigationConfig& navigation,
                                                   const registry::Components& components);
 
+// Refuses (InputError) a config without a `navigation` section, or one CheckExperiment refuses.
+void CheckNavigation(const schema::ExperimentConfig& config, const registry::Components& components);
+
 // Every row and realization on `threads` threads, ordered by row, realization, method: the same
-// for any thread count. Refuses (InputError) a config without a `navigation` section.
+// for any thread count. Checks the config first (CheckNavigation).
 std::vector<NavigationRecord> RunNavigation(const schema::ExperimentConfig& config,
                                             const registry::Components& components, int threads);
 
