@@ -9,25 +9,10 @@
 #include "monte_carlo_command.hpp"
 
 namespace anchorbench::app {
-namespace {
-
-// Every grid point parsed and validated before the first trial runs.
-std::vector<schema::ExperimentConfig> PointConfigs(const SweepArgs& args, const std::vector<schema::SweepPoint>& grid,
-                                                   const AppContext& app) {
-  std::vector<schema::ExperimentConfig> configs;
-  for (const schema::SweepPoint& point : grid) {
-    schema::ExperimentConfig config = config::LoadConfig(args.config, point.overrides, app.components);
-    if (args.realizations) config.realizations = *args.realizations;
-    engine::CheckExperiment(config, app.components);
-    configs.push_back(std::move(config));
-  }
-  return configs;
-}
-
-}  // namespace
 
 int SweepCommand(const SweepArgs& args, const AppContext& app) {
-  const schema::ExperimentConfig base = config::LoadConfig(args.config, {}, app.components);
+  const config::ConfigDocument document = config::ReadConfigDocument(args.config);  // read once
+  const schema::ExperimentConfig base = config::LoadConfig(document, {}, app.components);
   const std::vector<schema::SweepAxis> axes = schema::SweepAxes(base.sweep, args.axes);
   if (axes.empty()) throw schema::InputError(args.config + ": nothing to sweep: give --set KEY=VALUES or a 'sweep' section");
   for (const schema::SweepAxis& axis : axes) {
@@ -36,8 +21,8 @@ int SweepCommand(const SweepArgs& args, const AppContext& app) {
                            " and the sweep axis 'realizations' both set the realizations: give one of them");
     }
   }
-  const std::vector<schema::SweepPoint> grid = schema::SweepGrid(axes);
-  const std::vector<schema::ExperimentConfig> configs = PointConfigs(args, grid, app);
+  const std::vector<schema::ExperimentConfig> configs =
+      engine::SweepPoints(document, {}, axes, args.realizations, app.components);
   const MonteCarloSetup setup = SetUpMonteCarlo(args, base.name);
   const engine::Plan plan(configs);
   const std::unique_ptr<io::ResultFolder> out =

@@ -1,5 +1,7 @@
 #include "anchorbench/engine/monte_carlo.hpp"
 
+#include "anchorbench/config/load_config.hpp"
+
 #include <omp.h>
 
 #include <chrono>
@@ -112,6 +114,12 @@ std::vector<schema::Attempt> RunRealization(const schema::RowConfig& row, int ro
                                     const registry::Components& components,
                                     std::vector<estimator::RangeSample>& samples) {
   const sim::Scenario scenario = sim::GenerateScenario(row.scenario, seed, static_cast<std::uint64_t>(realization));
+  return RunRealization(row, row_index, seed, realization, scenario, components, samples);
+}
+
+std::vector<schema::Attempt> RunRealization(const schema::RowConfig& row, int row_index, std::uint64_t seed, int realization,
+                                    const sim::Scenario& scenario, const registry::Components& components,
+                                    std::vector<estimator::RangeSample>& samples) {
   std::map<int, schema::AnchorTruth> truth;
   for (const sim::SimAnchor& anchor : scenario.anchors) truth[anchor.id] = {anchor.p_world_anchor, anchor.bias_m};
   SamplesOf(scenario, samples);
@@ -141,6 +149,23 @@ std::vector<schema::Attempt> RunRealization(const schema::RowConfig& row, int ro
 void CheckExperiment(const schema::ExperimentConfig& config, const registry::Components& components) {
   CheckWork(config);
   CheckRows(schema::RowsOf(config), components);
+}
+
+std::vector<schema::ExperimentConfig> SweepPoints(const config::ConfigDocument& document,
+                                                  const std::vector<std::string>& overrides,
+                                                  const std::vector<schema::SweepAxis>& axes,
+                                                  std::optional<int> realizations,
+                                                  const registry::Components& components) {
+  std::vector<schema::ExperimentConfig> configs;
+  for (const schema::SweepPoint& point : schema::SweepGrid(axes)) {
+    std::vector<std::string> all = overrides;
+    all.insert(all.end(), point.overrides.begin(), point.overrides.end());
+    schema::ExperimentConfig config = config::LoadConfig(document, all, components);
+    if (realizations) config.realizations = *realizations;
+    CheckExperiment(config, components);
+    configs.push_back(std::move(config));
+  }
+  return configs;
 }
 
 std::vector<schema::Attempt> RunMonteCarlo(const schema::ExperimentConfig& config, const registry::Components& components,

@@ -50,9 +50,10 @@ std::vector<std::string> NavigationMethods(const schema::RowConfig& row) {
 std::vector<NavigationRecord> NavigateRealization(const schema::RowConfig& row, int row_index, std::uint64_t seed,
                                                   int realization, const schema::NavigationConfig& navigation,
                                                   const registry::Components& components) {
-  std::vector<estimator::RangeSample> samples;
-  const std::vector<schema::Attempt> attempts = RunRealization(row, row_index, seed, realization, components, samples);
   const sim::Scenario scenario = sim::GenerateScenario(row.scenario, seed, static_cast<std::uint64_t>(realization));
+  std::vector<estimator::RangeSample> samples;
+  const std::vector<schema::Attempt> attempts =
+      RunRealization(row, row_index, seed, realization, scenario, components, samples);
   const std::vector<Eigen::Vector3d>& truth = scenario.p_world_tag_true.front();  // tag 0
   const nav::NavigationOptions options = OptionsOf(navigation, row);
   sim::RandomStream rng(seed, static_cast<std::uint64_t>(realization), schema::kNavigationStream);

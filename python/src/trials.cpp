@@ -104,14 +104,8 @@ Files Run(const ConfigHandle& config, int threads) {
 Files Sweep(const ConfigHandle& config, const std::vector<std::string>& axes_text, int threads) {
   const std::vector<schema::SweepAxis> axes = schema::SweepAxes(config.experiment.sweep, axes_text);
   if (axes.empty()) throw schema::InputError(config.source + ": nothing to sweep: give axes or a 'sweep' section");
-  std::vector<schema::ExperimentConfig> points;
-  for (const schema::SweepPoint& point : schema::SweepGrid(axes)) {
-    std::vector<std::string> overrides = config.overrides;
-    overrides.insert(overrides.end(), point.overrides.begin(), point.overrides.end());
-    points.push_back(config::LoadConfig(config.document, overrides, ModuleComponents()));
-    points.back().name = config.experiment.name;
-    engine::CheckExperiment(points.back(), ModuleComponents());
-  }
+  const std::vector<schema::ExperimentConfig> points =
+      engine::SweepPoints(config.document, config.overrides, axes, std::nullopt, ModuleComponents());
   const int resolved = engine::ResolveThreads(threads);
   const engine::Plan plan(points);
   const std::vector<engine::ExperimentAttempts> run = Compute(plan, resolved);

@@ -2,12 +2,17 @@
 
 #include <cstdint>
 #include <functional>
+#include <optional>
+#include <string>
 #include <vector>
 
+#include "anchorbench/config/config_yaml.hpp"
 #include "anchorbench/estimator/range_sample.hpp"
 #include "anchorbench/registry/components.hpp"
 #include "anchorbench/engine/attempt.hpp"
 #include "anchorbench/schema/experiment.hpp"
+#include "anchorbench/schema/sweep.hpp"
+#include "anchorbench/sim/scenario.hpp"
 
 namespace anchorbench::engine {
 
@@ -37,6 +42,15 @@ void CheckRows(const std::vector<schema::RowConfig>& rows, const registry::Compo
 // Both, on the experiment's rows: what every command checks before it plans any work.
 void CheckExperiment(const schema::ExperimentConfig& config, const registry::Components& components);
 
+// A sweep's experiments, one per grid point of `axes`: the document (read once) with `overrides`,
+// then the point's overrides, then `realizations` if given; each checked (CheckExperiment) before
+// any trial runs.
+std::vector<schema::ExperimentConfig> SweepPoints(const config::ConfigDocument& document,
+                                                  const std::vector<std::string>& overrides,
+                                                  const std::vector<schema::SweepAxis>& axes,
+                                                  std::optional<int> realizations,
+                                                  const registry::Components& components);
+
 // Runs every row's realizations: the experiment checked (CheckExperiment), planned (plan.hpp) and
 // computed by this process's threads (LocalExecutor), as `run` does without a store. Realization
 // k of every row uses the random streams keyed (seed, k), so rows differ only by their
@@ -50,6 +64,11 @@ std::vector<schema::Attempt> RunMonteCarlo(const schema::ExperimentConfig& confi
 // scratch, reused from call to call by the caller.
 std::vector<schema::Attempt> RunRealization(const schema::RowConfig& row, int row_index, std::uint64_t seed, int realization,
                                     const registry::Components& components,
+                                    std::vector<estimator::RangeSample>& samples);
+// The same on a realization already simulated (sim::GenerateScenario of the row, seed and
+// realization), for a caller that needs the scenario too (the navigation study).
+std::vector<schema::Attempt> RunRealization(const schema::RowConfig& row, int row_index, std::uint64_t seed, int realization,
+                                    const sim::Scenario& scenario, const registry::Components& components,
                                     std::vector<estimator::RangeSample>& samples);
 
 }  // namespace anchorbench::engine
