@@ -252,7 +252,8 @@ void Navigation(V& v, schema::NavigationConfig& o) {
   v.Number("gate_chi2", o.gate_chi2);
   v.Integer("fix_anchors", o.fix_anchors);
   v.Integer("kth_anchor", o.kth_anchor);
-  v.Flag("use_height_unobservable", o.use_height_unobservable);
+  v.Number("error_bin_s", o.error_bin_s);
+  v.Choice("height_unobservable", o.height_unobservable, schema::kMirroredAnchorUseNames);
   v.Check(o);
 }
 

@@ -21,19 +21,21 @@ nav::NavigationOptions OptionsOf(const schema::NavigationConfig& c, const schema
   o.gate_chi2 = c.gate_chi2;
   o.fix_anchors = c.fix_anchors;
   o.kth_anchor = c.kth_anchor;
+  o.error_bin_s = c.error_bin_s;
   return o;
 }
 
-// A trigger's anchors as the filter may use them: those it initialized with an estimate (and, if
-// asked, those it refused as height_unobservable), from the time it did.
+// A trigger's anchors as the filter may use them: those it initialized with an estimate (and, as
+// `mirrored` says, those it refused as height_unobservable), from the time it did.
 std::vector<nav::UsableAnchor> AnchorsOf(const std::vector<schema::Attempt>& attempts, const std::string& method,
-                                         bool use_height_unobservable) {
+                                         schema::MirroredAnchorUse mirrored) {
   std::vector<nav::UsableAnchor> anchors;
   for (const schema::Attempt& a : attempts) {
     if (a.method != method || !a.solve || !a.t_init_s) continue;
-    const bool mirror = a.solve->status == estimator::SolveStatus::kHeightUnobservable;
-    if (!(a.initialized || (mirror && use_height_unobservable))) continue;
-    anchors.push_back({a.anchor_id, *a.t_init_s, a.solve->p_world_anchor, a.solve->bias_m, a.solve->covariance});
+    const bool mirror = !a.initialized && a.solve->status == estimator::SolveStatus::kHeightUnobservable;
+    if (!(a.initialized || (mirror && mirrored != schema::MirroredAnchorUse::kSkip))) continue;
+    anchors.push_back({a.anchor_id, *a.t_init_s, a.solve->p_world_anchor, a.solve->bias_m, a.solve->covariance,
+                       mirror && mirrored == schema::MirroredAnchorUse::kHorizontal});
   }
   return anchors;
 }
@@ -72,7 +74,7 @@ std::vector<NavigationRecord> NavigateRealization(const schema::RowConfig& row, 
         anchors.push_back({a.id, scenario.t_s.front(), a.p_world_anchor, a.bias_m, Eigen::Matrix4d::Zero()});
       }
     } else if (method != kNoAnchors) {
-      anchors = AnchorsOf(attempts, method, navigation.use_height_unobservable);
+      anchors = AnchorsOf(attempts, method, navigation.height_unobservable);
     }
     records.push_back({row_index, realization, method,
                        nav::Navigate(scenario.t_s, truth, odometry, p_start, ranges, std::move(anchors), options)});
@@ -113,6 +115,9 @@ std::string WriteNavigationFiles(const FileWriter& write, const schema::Experime
       report::SummarizeNavigation(records, static_cast<int>(rows.size()), config.bootstrap_resamples, config.seed);
   write("navigation.csv", [&](std::ostream& file) { report::WriteNavigationCsv(file, records, rows); });
   write("navigation_summary.csv", [&](std::ostream& file) { report::WriteNavigationSummaryCsv(file, summaries, rows); });
+  write("navigation_error.csv", [&](std::ostream& file) {
+    report::WriteNavigationErrorCsv(file, records, rows, config.navigation->error_bin_s);
+  });
   std::ostringstream markdown;
   report::WriteNavigationMarkdown(markdown, summaries, rows, config);
   write("navigation.md", [&](std::ostream& file) { file << markdown.str(); });

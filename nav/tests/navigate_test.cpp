@@ -3,6 +3,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 
 namespace anchorbench::nav {
@@ -92,6 +93,34 @@ TEST(Navigate, RefusesATrajectoryWithoutItsOdometry) {
   EXPECT_THROW(Navigate(run.t_s, run.p_world_tag, std::span(run.odometry).first(10), run.p_world_tag.front(), run.ranges,
                         {}, {}),
                std::invalid_argument);
+}
+
+TEST(Navigate, TheErrorOverTimeIsKeptPerBinAndAGapIsNoNumber) {
+  const RobotRun run = MakeRun(3);
+  NavigationOptions options;
+  options.error_bin_s = 10.0;
+  const NavigationOutcome never =
+      Navigate(run.t_s, run.p_world_tag, run.odometry, run.p_world_tag.front(), run.ranges, {}, options);
+  ASSERT_EQ(never.error_by_bin_m.size(), 13u);  // 120 s: 12 bins of 10 s and the last epoch's
+  EXPECT_LT(never.error_by_bin_m.front(), never.error_by_bin_m[11]);  // the drift grows
+  EXPECT_NEAR(never.error_by_bin_m.back(), never.final_error_m, 1e-12);  // the last bin: one epoch
+
+  RobotRun gap = run;  // no epoch between 40 and 60 s
+  std::vector<double> t_s;
+  std::vector<Eigen::Vector3d> p;
+  for (std::size_t k = 0; k < gap.t_s.size(); ++k) {
+    if (gap.t_s[k] < 40.0 || gap.t_s[k] >= 60.0) {
+      t_s.push_back(gap.t_s[k]);
+      p.push_back(gap.p_world_tag[k]);
+    }
+  }
+  sim::RandomStream rng(5, 0, 12);
+  const std::vector<OdometryStep> odometry = SimulateOdometry(t_s, p, {0.004, 0.002, 0.02}, rng);
+  const NavigationOutcome gapped = Navigate(t_s, p, odometry, p.front(), {}, {}, options);
+  ASSERT_EQ(gapped.error_by_bin_m.size(), 13u);
+  EXPECT_TRUE(std::isnan(gapped.error_by_bin_m[4]));
+  EXPECT_TRUE(std::isnan(gapped.error_by_bin_m[5]));
+  EXPECT_TRUE(std::isfinite(gapped.error_by_bin_m[6]));
 }
 
 }  // namespace

@@ -149,5 +149,23 @@ TEST(NavigationFilter, UnknownAnchorsAndGatedRangesLeaveTheStateAlone) {
   EXPECT_NE(filter.position(), Eigen::Vector3d::Zero());
 }
 
+// An anchor whose height is mirror-ambiguous, placed at its mirror below the tag's plane: as it
+// is, its range pulls the tag's height the wrong way; for x-y only, the height is left alone and
+// the horizontal position is still corrected.
+TEST(NavigationFilter, AHorizontalOnlyAnchorCorrectsXyAndLeavesTheHeight) {
+  const Eigen::Vector3d p_true(0.0, 0.0, 0.0), p_mirror_anchor(6.0, 0.0, -3.0);  // the truth: (6, 0, 3)
+  const double range = (p_true - Eigen::Vector3d(6.0, 0.0, 3.0)).norm();
+  auto after_ranges = [&](bool horizontal_only) {
+    NavigationFilter filter(Eigen::Vector3d(0.5, 0.0, 0.0), 0.5, {});
+    filter.AddAnchor(1, p_mirror_anchor, 0.0, Eigen::Matrix4d::Zero(), horizontal_only);
+    for (int i = 0; i < 5; ++i) EXPECT_TRUE(filter.UpdateRange(1, range, kSigmaRange, kNoGate));
+    return filter.position();
+  };
+  const Eigen::Vector3d as_is = after_ranges(false), xy_only = after_ranges(true);
+  EXPECT_EQ(xy_only.z(), 0.0);
+  EXPECT_LT(std::abs(xy_only.x()), 0.05);  // started 0.5 m off along the anchor's horizontal direction
+  EXPECT_GT(std::abs(as_is.z()), 0.1);     // the mirror's vertical pull
+}
+
 }  // namespace
 }  // namespace anchorbench::nav

@@ -1,6 +1,7 @@
 #include "anchorbench/report/navigation_report.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <map>
 
 #include "anchorbench/io/format.hpp"
@@ -90,6 +91,32 @@ void WriteNavigationCsv(std::ostream& out, const std::vector<nav::NavigationReco
         << FormatNumber(o.rmse_m) << ',' << FormatNumber(o.final_error_m) << ',' << FormatOptional(o.t_first_anchor_s)
         << ',' << FormatOptional(o.t_kth_anchor_s) << ',' << FormatNumber(o.fix_share) << ',' << o.ranges_used << ','
         << o.ranges_gated << '\n';
+  }
+}
+
+void WriteNavigationErrorCsv(std::ostream& out, const std::vector<nav::NavigationRecord>& records,
+                             const std::vector<schema::RowConfig>& rows, double error_bin_s) {
+  out << "row,method,t_s,runs,error_mean_m,error_p90_m\n";
+  std::vector<std::pair<int, std::string>> series;  // (row, method) in the records' order
+  std::map<std::pair<int, std::string>, std::vector<std::vector<double>>> by_bin;  // the realizations' bin errors
+  for (const nav::NavigationRecord& r : records) {
+    const std::pair<int, std::string> key{r.row, r.method};
+    auto [at, fresh] = by_bin.try_emplace(key);
+    if (fresh) series.push_back(key);
+    std::vector<std::vector<double>>& bins = at->second;
+    if (bins.size() < r.outcome.error_by_bin_m.size()) bins.resize(r.outcome.error_by_bin_m.size());
+    for (std::size_t b = 0; b < r.outcome.error_by_bin_m.size(); ++b) {
+      if (std::isfinite(r.outcome.error_by_bin_m[b])) bins[b].push_back(r.outcome.error_by_bin_m[b]);
+    }
+  }
+  for (const auto& key : series) {
+    const std::vector<std::vector<double>>& bins = by_bin.at(key);
+    for (std::size_t b = 0; b < bins.size(); ++b) {
+      if (bins[b].empty()) continue;
+      out << rows[static_cast<std::size_t>(key.first)].name << ',' << key.second << ','
+          << FormatNumber((static_cast<double>(b) + 0.5) * error_bin_s) << ',' << bins[b].size() << ','
+          << FormatNumber(Mean(bins[b])) << ',' << FormatNumber(*Percentile(bins[b], 0.9)) << '\n';
+    }
   }
 }
 

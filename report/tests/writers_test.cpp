@@ -7,6 +7,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "anchorbench/report/navigation_report.hpp"
 #include "anchorbench/report/pdop_study_report.hpp"
 #include "anchorbench/report/replay_report.hpp"
 #include "anchorbench/report/replay_summary.hpp"
@@ -164,6 +165,27 @@ TEST(PdopStudyFiles, TheTraceHasALinePerCheckpointAndInfWhereUndefined) {
   EXPECT_EQ(fields[5], "inf");
   EXPECT_EQ(fields[9], "0.5");  // ls_err_m
   EXPECT_EQ(fields[10], "");    // nls_err_m: the NLS did not run
+}
+
+TEST(NavigationFiles, TheErrorOverTimeAveragesTheRealizationsThatHaveABin) {
+  const double gap = std::numeric_limits<double>::quiet_NaN();
+  auto record = [](int realization, const std::string& method, std::vector<double> bins) {
+    nav::NavigationRecord r;
+    r.realization = realization;
+    r.method = method;
+    r.outcome.error_by_bin_m = std::move(bins);
+    return r;
+  };
+  const std::vector<nav::NavigationRecord> records = {record(0, "pdop", {1.0, 2.0, 5.0}), record(0, "none", {3.0}),
+                                                      record(1, "pdop", {3.0, gap})};
+  std::ostringstream out;
+  WriteNavigationErrorCsv(out, records, {Row("a")}, 10.0);
+  EXPECT_EQ(out.str(),
+            "row,method,t_s,runs,error_mean_m,error_p90_m\n"
+            "a,pdop,5,2,2,2.8\n"   // the two realizations' first bins (p90 interpolated)
+            "a,pdop,15,1,2,2\n"    // realization 1 has a gap there
+            "a,pdop,25,1,5,5\n"    // and ended before
+            "a,none,5,1,3,3\n");
 }
 
 }  // namespace

@@ -18,6 +18,7 @@ bool NavigationConfig::IsValid(std::string* why) const {
   if (!(gate_chi2 > 0.0)) return fail("gate_chi2 must be > 0");
   if (fix_anchors < 1) return fail("fix_anchors must be >= 1");
   if (kth_anchor < 1) return fail("kth_anchor must be >= 1");
+  if (!(error_bin_s > 0.0 && std::isfinite(error_bin_s))) return fail("error_bin_s must be > 0");
   return true;
 }
 

@@ -37,8 +37,8 @@ void CheckNavigation(const schema::ExperimentConfig& config, const registry::Com
 std::vector<NavigationRecord> RunNavigation(const schema::ExperimentConfig& config,
                                             const registry::Components& components, int threads);
 
-// navigation.csv, navigation_summary.csv, navigation.md and manifest.json through `write`;
-// returns navigation.md's text.
+// navigation.csv, navigation_summary.csv, navigation_error.csv, navigation.md and manifest.json
+// through `write`; returns navigation.md's text.
 std::string WriteNavigationFiles(const FileWriter& write, const schema::ExperimentConfig& config,
                                  const std::vector<NavigationRecord>& records, const report::RunInfo& info);
 

@@ -24,6 +24,7 @@ struct NavigationOptions {
   double gate_chi2 = 9.0;       // ranges beyond this (1 dof) are not used (outliers)
   int fix_anchors = 3;          // a fix: at least this many anchors in use
   int kth_anchor = 3;           // the time to the k-th anchor is reported
+  double error_bin_s = 5.0;     // the error over time is kept as means over bins this long
 
   bool IsValid(std::string* why) const;
 };
@@ -35,6 +36,7 @@ struct UsableAnchor {
   Eigen::Vector3d p_world_anchor = Eigen::Vector3d::Zero();
   double bias_m = 0.0;
   Eigen::Matrix4d covariance = Eigen::Matrix4d::Zero();  // of (p_A, gamma)
+  bool horizontal_only = false;  // its height mirror-ambiguous: x-y updates only (NavigationFilter)
 };
 
 struct RangeAt {
@@ -49,6 +51,9 @@ struct NavigationOutcome {
   std::optional<double> t_first_anchor_s, t_kth_anchor_s;  // since the run's start
   double fix_share = 0.0;      // the share of epochs with at least fix_anchors anchors in use
   long ranges_used = 0, ranges_gated = 0;
+  // The position error over time: bin b is the mean over the epochs in [b, b + 1) error_bin_s
+  // after the run's start (NaN: no epoch there, a gap in a recorded log).
+  std::vector<double> error_by_bin_m;
 };
 
 // One method's run in one realization of an experiment's row (engine::RunNavigation).

@@ -30,9 +30,12 @@ class NavigationFilter {
   void Predict(const OdometryStep& step);
 
   // An anchor from its initialization: position and range bias with their covariance (4 x 4,
-  // of (p_A, gamma)), as consider states. A second call for one id is ignored.
+  // of (p_A, gamma)), as consider states. A second call for one id is ignored. A
+  // `horizontal_only` anchor (its height mirror-ambiguous: both mirrors through a flat path's
+  // plane predict the same range there) corrects the tag's x-y alone: the update's vertical
+  // columns, whose sign the mirror leaves unknown, are dropped.
   void AddAnchor(int anchor_id, const Eigen::Vector3d& p_world_anchor, double bias_m,
-                 const Eigen::Matrix4d& covariance);
+                 const Eigen::Matrix4d& covariance, bool horizontal_only = false);
   bool HasAnchor(int anchor_id) const { return anchors_.count(anchor_id) > 0; }
 
   // A range to a known anchor; false (state untouched) for an unknown anchor or an innovation
@@ -44,10 +47,21 @@ class NavigationFilter {
   double heading_error() const { return x_[6]; }
 
  private:
+  void ResizeScratch();
+
   OdometryDrift drift_;
+  struct Consider {
+    int at = 0;  // index of its first consider state
+    bool horizontal_only = false;
+  };
   Eigen::VectorXd x_;
   Eigen::MatrixXd P_;
-  std::map<int, int> anchors_;  // id -> index of its first consider state
+  std::map<int, Consider> anchors_;  // by id
+  // Scratch of the state's size, resized when an anchor joins: no allocation per step or range.
+  Eigen::MatrixXd J_;             // the step's Jacobian rows (3 x n)
+  Eigen::MatrixXd JP_;            // J P (3 x n)
+  Eigen::RowVectorXd H_;          // a range's Jacobian
+  Eigen::VectorXd PHt_, K_;
 };
 
 }  // namespace anchorbench::nav

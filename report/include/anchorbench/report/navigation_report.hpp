@@ -4,6 +4,8 @@
 //   navigation_summary.csv  per (row, method): the mean position RMSE with its 95% interval (a
 //                           bootstrap over realizations, as Table I's), the median end error, the
 //                           mean share of time with a fix, and when anchors came;
+//   navigation_error.csv    per (row, method, time bin): the position error over time, its mean
+//                           and 90th percentile over realizations (the figure's data);
 //   navigation.md           the same for people.
 
 #include <cstdint>
@@ -33,6 +35,9 @@ struct NavigationSummary {
 // kBootstrapStream, a hash of "navigation:" and the method).
 std::vector<NavigationSummary> SummarizeNavigation(const std::vector<nav::NavigationRecord>& records, int rows,
                                                    int resamples, std::uint64_t seed);
+
+void WriteNavigationErrorCsv(std::ostream& out, const std::vector<nav::NavigationRecord>& records,
+                             const std::vector<schema::RowConfig>& rows, double error_bin_s);
 
 void WriteNavigationCsv(std::ostream& out, const std::vector<nav::NavigationRecord>& records,
                         const std::vector<schema::RowConfig>& rows);

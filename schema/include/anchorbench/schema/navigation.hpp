@@ -4,7 +4,19 @@
 
 #include <string>
 
+#include "anchorbench/estimator/enum_names.hpp"
+
 namespace anchorbench::schema {
+
+// What the filter does with an anchor the initializer refused as height_unobservable (its
+// mirror through the flat path's plane fits as well).
+enum class MirroredAnchorUse {
+  kSkip,        // not used
+  kHorizontal,  // used for x-y only (nav::NavigationFilter::AddAnchor's horizontal_only)
+  kAsIs,        // used with its estimate as it is, height included
+};
+inline constexpr estimator::EnumNames<MirroredAnchorUse, 3> kMirroredAnchorUseNames({
+    {MirroredAnchorUse::kSkip, "skip"}, {MirroredAnchorUse::kHorizontal, "xy_only"}, {MirroredAnchorUse::kAsIs, "as_is"}});
 
 struct NavigationConfig {
   // The odometry's random walks and step noise (nav/odometry.hpp). The defaults are a wheel
@@ -17,9 +29,8 @@ struct NavigationConfig {
   double gate_chi2 = 9.0;       // ranges beyond this (1 dof) are not used
   int fix_anchors = 3;          // a fix: at least this many anchors in use
   int kth_anchor = 3;           // the time to the k-th anchor is reported
-  // An anchor the initializer refused as height_unobservable (its mirror fits as well): used
-  // with its estimate as it is, or not at all.
-  bool use_height_unobservable = false;
+  double error_bin_s = 5.0;     // navigation_error.csv's time bins
+  MirroredAnchorUse height_unobservable = MirroredAnchorUse::kSkip;
 
   bool IsValid(std::string* why) const;
 };
