@@ -133,6 +133,9 @@ void AddRecordingCommands(CLI::App& cli, CommandLine& c) {
                            "Write one row per range: t,tag_id,anchor_id,range,accepted,n_accepted,pdop");
   c.replay_cmd->add_option("--out", c.replay.out, "Folder for estimates.csv");
   c.replay_cmd->add_flag("--overwrite", c.replay.overwrite, "Replace an existing --out folder or --trace file");
+  c.replay_cmd->add_flag("--navigate", c.replay.navigate,
+                         "Also run the navigation filter on the log's lowest tag with each trigger's anchors and "
+                         "synthetic odometry (the config's 'navigation' section; docs/navigation.md) into --out");
   c.replay_cmd->add_option("--max-range-m", c.replay.policy.max_range_m,
                            "Drop ranges above this as implausible (default 1000)")
       ->check(FiniteNumber(1e-3, 1e7));

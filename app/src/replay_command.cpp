@@ -8,6 +8,8 @@
 #include "anchorbench/io/recorded_data.hpp"
 #include "anchorbench/io/result_folder.hpp"
 #include "anchorbench/report/replay_report.hpp"
+#include "anchorbench/engine/monte_carlo.hpp"
+#include "anchorbench/engine/navigation_log.hpp"
 #include "anchorbench/engine/replay_log.hpp"
 #include "commands.hpp"
 #include "progress.hpp"
@@ -33,11 +35,25 @@ io::LogPolicy PolicyOf(const ReplayArgs& args) {
   return policy;
 }
 
+// The navigation filter on the log's lowest tag with each trigger's anchors (engine/navigation_log.hpp).
+void Navigate(const engine::ReplayLog& replay, const engine::ReplayOutcome& outcome,
+              const schema::ExperimentConfig& config, const engine::FileWriter& write) {
+  const engine::LogTrajectory log = engine::ReadLogTrajectory(replay.files(), replay.policy(), replay.survey());
+  const std::vector<engine::NavigationRecord> records = engine::NavigateLog(
+      log, outcome.result.attempts, replay.truth(), config, engine::ResolveThreads(0));
+  const schema::RowConfig row{"tag_" + std::to_string(log.tag_id), {}, {}, std::nullopt};
+  engine::WriteNavigationTables(write, config, {row}, records);
+}
+
 }  // namespace
 
 int ReplayCommand(const ReplayArgs& args, const AppContext& app) {
   schema::ExperimentConfig config;  // the defaults, unless --config names a file
   if (!args.config.empty()) config = config::LoadConfig(args.config, {}, app.components);
+  if (args.navigate) {
+    if (args.out.empty()) throw schema::InputError("--navigate: writes its tables into --out, which is not given");
+    engine::CheckLogNavigation(config);
+  }
   std::optional<std::map<int, schema::AnchorTruth>> truth;
   if (!args.anchors.empty()) truth = io::LoadAnchors(args.anchors);
   // The first pass: every file read to the end under the policy, so that a malformed file or a
@@ -52,7 +68,9 @@ int ReplayCommand(const ReplayArgs& args, const AppContext& app) {
   if (!args.out.empty()) {
     io::ResultFolder::Options options;
     options.overwrite = args.overwrite;
-    options.expected_bytes = 1 << 16;
+    // With --navigate: ~150 bytes per (draw, method) and the error's bins.
+    options.expected_bytes = (1 << 16) + (args.navigate ? 150u * static_cast<std::uintmax_t>(config.realizations) *
+                                                              (config.estimator.triggers.size() + 2) : 0u);
     options.inputs = Inputs(args);
     out = std::make_unique<io::ResultFolder>(args.out, options);
   }
@@ -83,9 +101,11 @@ int ReplayCommand(const ReplayArgs& args, const AppContext& app) {
   report::PrintEstimates(std::cout, outcome.result.attempts);
   if (trace_file) trace_file->Commit();
   if (out) {
-    engine::WriteReplayFiles([&](const std::string& name, const std::function<void(std::ostream&)>& write) {
-      out->Write(name, write);
-    }, outcome);
+    const engine::FileWriter write = [&](const std::string& name, const std::function<void(std::ostream&)>& file) {
+      out->Write(name, file);
+    };
+    engine::WriteReplayFiles(write, outcome);
+    if (args.navigate) Navigate(replay, outcome, config, write);
     out->Commit();
   }
   return 0;

@@ -93,5 +93,30 @@ printf 't,tag_id,anchor_id,range\n0,0,1,5\n0.1,0,1,5.x\n' >"$dir/malformed.csv"
 expect_refusal "malformed number" "malformed.csv:3: column 'range': '5.x' is not a number" \
   "$bin" replay --poses "$poses" --ranges "$dir/malformed.csv" --out-of-order drop --repeated-poses average
 
+# The navigation filter on a log (--navigate): the log's tag with each trigger's anchors and
+# synthetic odometry, the same bytes on any thread count; the replay's own files unchanged.
+printf 'seed: 3\nrealizations: 4\nestimator: {triggers: [fixed_window, pdop_closest_point]}\nnavigation: {sigma_range_m: 0.1}\n' \
+  >"$dir/navigated.yaml"
+for threads in 1 2; do
+  OMP_NUM_THREADS=$threads "$bin" replay --poses "$poses" --ranges "$ranges" --anchors "$dir/sim/anchors.csv" \
+    --config "$dir/navigated.yaml" --navigate --quiet --out "$dir/navigated_$threads" >/dev/null || fail "--navigate"
+done
+for f in navigation.csv navigation_summary.csv navigation_error.csv navigation.md; do
+  cmp -s "$dir/navigated_1/$f" "$dir/navigated_2/$f" || fail "--navigate: $f differs between 1 and 2 threads"
+done
+# 4 draws x (2 triggers, the true anchors, none) and the header
+[ "$(wc -l <"$dir/navigated_1/navigation.csv")" -eq 17 ] || fail "--navigate: $(wc -l <"$dir/navigated_1/navigation.csv") lines"
+awk -F, '$3 == "true_anchors" && $8 < 0.9 { bad = 1 } END { exit bad }' "$dir/navigated_1/navigation.csv" \
+  || fail "--navigate: the true anchors from t = 0 give a fix less than 90% of the time"
+"$bin" replay --poses "$poses" --ranges "$ranges" --anchors "$dir/sim/anchors.csv" --config "$dir/navigated.yaml" \
+  --quiet --out "$dir/not_navigated" >/dev/null || fail "replay without --navigate"
+cmp -s "$dir/not_navigated/estimates.csv" "$dir/navigated_1/estimates.csv" || fail "--navigate changed the estimates"
+[ -e "$dir/not_navigated/navigation.csv" ] && fail "navigation files without --navigate"
+expect_refusal "navigate a log without a navigation section" "the default config: --navigate needs a 'navigation' section" \
+  "$bin" replay --poses "$poses" --ranges "$ranges" --navigate
+printf 'navigation: {}\n' >"$dir/no_noise.yaml"
+expect_refusal "navigate a log without the filter's range noise" "key 'navigation.sigma_range_m': must be set" \
+  "$bin" replay --poses "$poses" --ranges "$ranges" --config "$dir/no_noise.yaml" --navigate
+
 [ "$failures" -eq 0 ] && echo "all real-log cases passed"
 exit "$failures"

@@ -54,6 +54,8 @@ expect_exit 2 "retry_growth_that_would_overflow" "key 'estimator.initializer.ret
   "$bin" run "$dir/small.yaml" --set estimator.initializer.retry_growth=1e300 --out "$dir/x"
 expect_exit 2 "navigate_without_a_navigation_section" "no 'navigation' section" \
   "$bin" navigate "$dir/small.yaml" --out "$dir/x"
+expect_exit 2 "replay_navigate_without_a_folder_for_its_tables" "--navigate: writes its tables into --out" \
+  "$bin" replay --poses "$dir/log/poses.csv" --ranges "$dir/log/ranges.csv" --navigate
 { cat "$dir/small.yaml"; printf 'navigation: {sigma_heading_rad_per_sqrt_s: -1}\n'; } >"$dir/drift.yaml"
 expect_exit 2 "navigate_with_a_negative_drift" "key 'navigation.sigma_heading_rad_per_sqrt_s'" \
   "$bin" navigate "$dir/drift.yaml" --out "$dir/x"

@@ -28,8 +28,9 @@ schema::Attempt AttemptOf(const estimator::AnchorInitializer& initializer, const
     a.n_used = event->n_used;
     a.pdop_closest_point = event->pdop_closest_point;
     a.solve = event->solve;
-  } else if (initializer.last_failed_solve()) {
-    a.solve = initializer.last_failed_solve();  // triggered, but every solve failed
+  } else if (const std::optional<estimator::InitEvent>& failed = initializer.last_failed_solve()) {
+    a.solve = failed->solve;  // triggered, but every solve failed
+    a.t_failed_solve_s = failed->t_s;
   }
   if (a.solve) {
     a.status = std::string(estimator::ToString(a.solve->status));

@@ -10,14 +10,13 @@
 #include "anchorbench/sim/scenario.hpp"
 
 namespace anchorbench::engine {
-namespace {
 
-nav::NavigationOptions OptionsOf(const schema::NavigationConfig& c, const schema::RowConfig& row) {
+nav::NavigationOptions OptionsOf(const schema::NavigationConfig& c, double row_sigma_range_m) {
   nav::NavigationOptions o;
   o.drift = {c.sigma_bias_mps_per_sqrt_s, c.sigma_heading_rad_per_sqrt_s, c.sigma_step_m_per_sqrt_s};
   o.sigma_start_m = c.sigma_start_m;
   // Unset, the filter knows the row's range noise, as a robot's would know its radios'.
-  o.sigma_range_m = c.sigma_range_m > 0.0 ? c.sigma_range_m : row.scenario.ranging.sigma_range_m;
+  o.sigma_range_m = c.sigma_range_m > 0.0 ? c.sigma_range_m : row_sigma_range_m;
   o.gate_chi2 = c.gate_chi2;
   o.fix_anchors = c.fix_anchors;
   o.kth_anchor = c.kth_anchor;
@@ -25,22 +24,39 @@ nav::NavigationOptions OptionsOf(const schema::NavigationConfig& c, const schema
   return o;
 }
 
-// A trigger's anchors as the filter may use them: those it initialized with an estimate (and, as
-// `mirrored` says, those it refused as height_unobservable), from the time it did.
-std::vector<nav::UsableAnchor> AnchorsOf(const std::vector<schema::Attempt>& attempts, const std::string& method,
-                                         schema::MirroredAnchorUse mirrored) {
-  std::vector<nav::UsableAnchor> anchors;
-  for (const schema::Attempt& a : attempts) {
-    if (a.method != method || !a.solve || !a.t_init_s) continue;
-    const bool mirror = !a.initialized && a.solve->status == estimator::SolveStatus::kHeightUnobservable;
-    if (!(a.initialized || (mirror && mirrored != schema::MirroredAnchorUse::kSkip))) continue;
-    anchors.push_back({a.anchor_id, *a.t_init_s, a.solve->p_world_anchor, a.solve->bias_m, a.solve->covariance,
-                       mirror && mirrored == schema::MirroredAnchorUse::kHorizontal});
+std::vector<MethodAnchors> TriggerAnchors(const std::vector<schema::Attempt>& attempts,
+                                          const std::vector<std::string>& triggers, schema::MirroredAnchorUse mirrored) {
+  std::vector<MethodAnchors> methods;
+  for (const std::string& trigger : triggers) {
+    std::vector<nav::UsableAnchor> anchors;
+    for (const schema::Attempt& a : attempts) {
+      if (a.method != trigger || !a.solve) continue;
+      const bool mirror = !a.initialized && a.solve->status == estimator::SolveStatus::kHeightUnobservable;
+      if (!(a.initialized || (mirror && mirrored != schema::MirroredAnchorUse::kSkip))) continue;
+      // A refused fixed window ran at the end (t_init_s); a refused online solve when it last ran.
+      const std::optional<double> t_s = a.t_init_s ? a.t_init_s : a.t_failed_solve_s;
+      if (!t_s) continue;
+      anchors.push_back({a.anchor_id, *t_s, a.solve->p_world_anchor, a.solve->bias_m, a.solve->covariance,
+                         mirror && mirrored == schema::MirroredAnchorUse::kHorizontal});
+    }
+    methods.push_back({trigger, std::move(anchors)});
   }
-  return anchors;
+  return methods;
 }
 
-}  // namespace
+std::vector<NavigationRecord> NavigateMethods(const Trajectory& run, const std::vector<MethodAnchors>& methods,
+                                              const nav::NavigationOptions& options, sim::RandomStream& rng, int row,
+                                              int realization) {
+  const std::vector<nav::OdometryStep> odometry = nav::SimulateOdometry(run.t_s, run.p_world_tag, options.drift, rng);
+  Eigen::Vector3d p_start = run.p_world_tag.front();
+  for (int i = 0; i < 3; ++i) p_start[i] += options.sigma_start_m * rng.Normal();
+  std::vector<NavigationRecord> records;
+  for (const auto& [method, anchors] : methods) {
+    records.push_back(
+        {row, realization, method, nav::Navigate(run.t_s, run.p_world_tag, odometry, p_start, run.ranges, anchors, options)});
+  }
+  return records;
+}
 
 std::vector<std::string> NavigationMethods(const schema::RowConfig& row) {
   std::vector<std::string> methods = row.estimator.triggers;
@@ -56,30 +72,20 @@ std::vector<NavigationRecord> NavigateRealization(const schema::RowConfig& row, 
   std::vector<estimator::RangeSample> samples;
   const std::vector<schema::Attempt> attempts =
       RunRealization(row, row_index, seed, realization, scenario, components, samples);
-  const std::vector<Eigen::Vector3d>& truth = scenario.p_world_tag_true.front();  // tag 0
-  const nav::NavigationOptions options = OptionsOf(navigation, row);
-  sim::RandomStream rng(seed, static_cast<std::uint64_t>(realization), schema::kNavigationStream);
-  const std::vector<nav::OdometryStep> odometry = nav::SimulateOdometry(scenario.t_s, truth, options.drift, rng);
-  Eigen::Vector3d p_start = truth.front();
-  for (int i = 0; i < 3; ++i) p_start[i] += options.sigma_start_m * rng.Normal();
-  std::vector<nav::RangeAt> ranges;
+  Trajectory run{scenario.t_s, scenario.p_world_tag_true.front(), {}};  // tag 0
   for (const sim::SimRange& r : scenario.ranges) {
-    if (r.tag_id == 0) ranges.push_back({r.epoch, r.anchor_id, r.range_m});
+    if (r.tag_id == 0) run.ranges.push_back({r.epoch, r.anchor_id, r.range_m});
   }
-  std::vector<NavigationRecord> records;
-  for (const std::string& method : NavigationMethods(row)) {
-    std::vector<nav::UsableAnchor> anchors;
-    if (method == kTrueAnchors) {
-      for (const sim::SimAnchor& a : scenario.anchors) {
-        anchors.push_back({a.id, scenario.t_s.front(), a.p_world_anchor, a.bias_m, Eigen::Matrix4d::Zero()});
-      }
-    } else if (method != kNoAnchors) {
-      anchors = AnchorsOf(attempts, method, navigation.height_unobservable);
-    }
-    records.push_back({row_index, realization, method,
-                       nav::Navigate(scenario.t_s, truth, odometry, p_start, ranges, std::move(anchors), options)});
+  std::vector<MethodAnchors> methods = TriggerAnchors(attempts, row.estimator.triggers, navigation.height_unobservable);
+  std::vector<nav::UsableAnchor> truth;
+  for (const sim::SimAnchor& a : scenario.anchors) {
+    truth.push_back({a.id, scenario.t_s.front(), a.p_world_anchor, a.bias_m, Eigen::Matrix4d::Zero()});
   }
-  return records;
+  methods.push_back({kTrueAnchors, std::move(truth)});
+  methods.push_back({kNoAnchors, {}});
+  sim::RandomStream rng(seed, static_cast<std::uint64_t>(realization), schema::kNavigationStream);
+  return NavigateMethods(run, methods, OptionsOf(navigation, row.scenario.ranging.sigma_range_m), rng, row_index,
+                         realization);
 }
 
 void CheckNavigation(const schema::ExperimentConfig& config, const registry::Components& components) {
@@ -94,25 +100,29 @@ std::vector<NavigationRecord> RunNavigation(const schema::ExperimentConfig& conf
                                             const registry::Components& components, int threads) {
   CheckNavigation(config, components);
   const std::vector<schema::RowConfig> rows = schema::RowsOf(config);
-  const int units = static_cast<int>(rows.size()) * config.realizations;
-  std::vector<std::vector<NavigationRecord>> by_unit(static_cast<std::size_t>(units));
-  ParallelFor(units, threads, [&](int unit, int) {
+  return NavigateUnits(static_cast<int>(rows.size()) * config.realizations, threads, [&](int unit) {
     const int row = unit / config.realizations;
-    by_unit[static_cast<std::size_t>(unit)] = NavigateRealization(
-        rows[static_cast<std::size_t>(row)], row, config.seed, unit % config.realizations, *config.navigation, components);
+    return NavigateRealization(rows[static_cast<std::size_t>(row)], row, config.seed, unit % config.realizations,
+                               *config.navigation, components);
   });
+}
+
+std::vector<NavigationRecord> NavigateUnits(int units, int threads,
+                                            const std::function<std::vector<NavigationRecord>(int unit)>& unit) {
+  std::vector<std::vector<NavigationRecord>> by_unit(static_cast<std::size_t>(units));
+  ParallelFor(units, threads, [&](int u, int) { by_unit[static_cast<std::size_t>(u)] = unit(u); });
   std::vector<NavigationRecord> records;
-  for (std::vector<NavigationRecord>& unit : by_unit) {
-    for (NavigationRecord& r : unit) records.push_back(std::move(r));
+  for (std::vector<NavigationRecord>& records_of_unit : by_unit) {
+    for (NavigationRecord& r : records_of_unit) records.push_back(std::move(r));
   }
   return records;
 }
 
-std::string WriteNavigationFiles(const FileWriter& write, const schema::ExperimentConfig& config,
-                                 const std::vector<NavigationRecord>& records, const report::RunInfo& info) {
-  const std::vector<schema::RowConfig> rows = schema::RowsOf(config);
-  const std::vector<report::NavigationSummary> summaries =
-      report::SummarizeNavigation(records, static_cast<int>(rows.size()), config.bootstrap_resamples, config.seed);
+std::string WriteNavigationTables(const FileWriter& write, const schema::ExperimentConfig& config,
+                                  const std::vector<schema::RowConfig>& rows,
+                                  const std::vector<NavigationRecord>& records) {
+  const std::vector<report::NavigationSummary> summaries = report::SummarizeNavigation(
+      records, static_cast<int>(rows.size()), config.bootstrap_resamples, config.seed, kNoAnchors);
   write("navigation.csv", [&](std::ostream& file) { report::WriteNavigationCsv(file, records, rows); });
   write("navigation_summary.csv", [&](std::ostream& file) { report::WriteNavigationSummaryCsv(file, summaries, rows); });
   write("navigation_error.csv", [&](std::ostream& file) {
@@ -121,8 +131,14 @@ std::string WriteNavigationFiles(const FileWriter& write, const schema::Experime
   std::ostringstream markdown;
   report::WriteNavigationMarkdown(markdown, summaries, rows, config);
   write("navigation.md", [&](std::ostream& file) { file << markdown.str(); });
-  write("manifest.json", [&](std::ostream& file) { file << report::ManifestJson(config, info); });
   return markdown.str();
+}
+
+std::string WriteNavigationFiles(const FileWriter& write, const schema::ExperimentConfig& config,
+                                 const std::vector<NavigationRecord>& records, const report::RunInfo& info) {
+  const std::string markdown = WriteNavigationTables(write, config, schema::RowsOf(config), records);
+  write("manifest.json", [&](std::ostream& file) { file << report::ManifestJson(config, info); });
+  return markdown;
 }
 
 }  // namespace anchorbench::engine

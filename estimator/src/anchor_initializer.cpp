@@ -147,7 +147,7 @@ std::optional<InitEvent> AnchorInitializer::CompletePendingSolve(const PendingWo
     return work.event;
   }
   if (work.solved) {  // failed: wait for more data before the next attempt
-    last_failed_solve_ = work.event.solve;
+    last_failed_solve_ = work.event;
     next_attempt_size_ =
         static_cast<std::size_t>(std::ceil(static_cast<double>(n_admitted_) * options_.retry_growth));
   }

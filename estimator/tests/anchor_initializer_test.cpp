@@ -145,7 +145,7 @@ TEST(AnchorInitializer, ASpentSolveBudgetIsAFailedSolve) {
   for (const RangeSample& s : PassBy(Eigen::Vector3d(0, 4, 3), 0.05, 8)) EXPECT_FALSE(initializer.Feed(s).event);
   EXPECT_FALSE(initializer.initialized());
   ASSERT_TRUE(initializer.last_failed_solve().has_value());
-  EXPECT_EQ(initializer.last_failed_solve()->status, SolveStatus::kBudgetSpent);
+  EXPECT_EQ(initializer.last_failed_solve()->solve.status, SolveStatus::kBudgetSpent);
 }
 
 TEST(InitializerOptions, ValidationNamesTheProblem) {

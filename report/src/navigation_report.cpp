@@ -41,7 +41,11 @@ std::string Cell(const std::optional<double>& value, int decimals) { return valu
 }  // namespace
 
 std::vector<NavigationSummary> SummarizeNavigation(const std::vector<nav::NavigationRecord>& records, int rows,
-                                                   int resamples, std::uint64_t seed) {
+                                                   int resamples, std::uint64_t seed, const std::string& drift_method) {
+  std::map<std::pair<int, int>, double> drift_rmse;  // by (row, realization)
+  for (const nav::NavigationRecord& r : records) {
+    if (r.method == drift_method) drift_rmse[{r.row, r.realization}] = r.outcome.rmse_m;
+  }
   std::vector<NavigationSummary> summaries;
   for (int row = 0; row < rows; ++row) {
     std::vector<std::string> methods;  // in the records' order
@@ -50,8 +54,11 @@ std::vector<NavigationSummary> SummarizeNavigation(const std::vector<nav::Naviga
     }
     for (const std::string& method : methods) {
       std::vector<double> rmse, final_error, fix, t_first, t_kth;
+      int worse = 0;
       for (const nav::NavigationRecord& r : records) {
         if (r.row != row || r.method != method) continue;
+        const auto drift = drift_rmse.find({r.row, r.realization});
+        worse += drift != drift_rmse.end() && r.outcome.rmse_m > drift->second;
         rmse.push_back(r.outcome.rmse_m);
         final_error.push_back(r.outcome.final_error_m);
         fix.push_back(r.outcome.fix_share);
@@ -75,6 +82,7 @@ std::vector<NavigationSummary> SummarizeNavigation(const std::vector<nav::Naviga
       s.with_first_anchor = static_cast<int>(t_first.size());
       s.t_first_anchor_median_s = Percentile(t_first, 0.5);
       s.t_kth_anchor_median_s = Percentile(t_kth, 0.5);
+      if (method != drift_method && !drift_rmse.empty()) s.worse_than_drift = worse;
       summaries.push_back(s);
     }
   }
@@ -123,12 +131,13 @@ void WriteNavigationErrorCsv(std::ostream& out, const std::vector<nav::Navigatio
 void WriteNavigationSummaryCsv(std::ostream& out, const std::vector<NavigationSummary>& summaries,
                                const std::vector<schema::RowConfig>& rows) {
   out << "row,method,runs,rmse_mean_m,rmse_lo_m,rmse_hi_m,final_error_median_m,fix_share_mean,with_first_anchor,"
-         "t_first_anchor_median_s,t_kth_anchor_median_s\n";
+         "t_first_anchor_median_s,t_kth_anchor_median_s,worse_than_drift\n";
   for (const NavigationSummary& s : summaries) {
     out << rows[static_cast<std::size_t>(s.row)].name << ',' << s.method << ',' << s.runs << ','
         << FormatNumber(s.rmse_mean_m) << ',' << FormatOptional(s.rmse_lo_m) << ',' << FormatOptional(s.rmse_hi_m) << ','
         << FormatNumber(s.final_error_median_m) << ',' << FormatNumber(s.fix_share_mean) << ',' << s.with_first_anchor
-        << ',' << FormatOptional(s.t_first_anchor_median_s) << ',' << FormatOptional(s.t_kth_anchor_median_s) << '\n';
+        << ',' << FormatOptional(s.t_first_anchor_median_s) << ',' << FormatOptional(s.t_kth_anchor_median_s) << ','
+        << (s.worse_than_drift ? std::to_string(*s.worse_than_drift) : "") << '\n';
   }
 }
 
@@ -136,14 +145,16 @@ void WriteNavigationMarkdown(std::ostream& out, const std::vector<NavigationSumm
                              const std::vector<schema::RowConfig>& rows, const schema::ExperimentConfig& config) {
   out << "# " << config.name << ": navigation\n\n" << config.realizations << " realizations per row, seed " << config.seed
       << ". Position RMSE over the run (mean, 95% interval over realizations), end error (median), share of the run "
-         "with a fix, and when the first and k-th anchors came (medians).\n\n"
-      << "| Row | Method | RMSE (m) | End error (m) | Fix (%) | First anchor (s) | k-th anchor (s) |\n"
-      << "|---|---|---|---|---|---|---|\n";
+         "with a fix, when the first and k-th anchors came (medians), and the share of runs navigating worse (higher "
+         "RMSE) than odometry alone in the same realization.\n\n"
+      << "| Row | Method | RMSE (m) | End error (m) | Fix (%) | First anchor (s) | k-th anchor (s) | Worse than none (%) |\n"
+      << "|---|---|---|---|---|---|---|---|\n";
   for (const NavigationSummary& s : summaries) {
     out << "| " << rows[static_cast<std::size_t>(s.row)].name << " | " << s.method << " | " << FormatFixed(s.rmse_mean_m, 3)
         << (s.rmse_lo_m ? " [" + FormatFixed(*s.rmse_lo_m, 3) + ", " + FormatFixed(*s.rmse_hi_m, 3) + "]" : "") << " | "
         << FormatFixed(s.final_error_median_m, 3) << " | " << FormatFixed(100.0 * s.fix_share_mean, 1) << " | "
-        << Cell(s.t_first_anchor_median_s, 1) << " | " << Cell(s.t_kth_anchor_median_s, 1) << " |\n";
+        << Cell(s.t_first_anchor_median_s, 1) << " | " << Cell(s.t_kth_anchor_median_s, 1) << " | "
+        << (s.worse_than_drift ? FormatFixed(100.0 * *s.worse_than_drift / s.runs, 0) : "-") << " |\n";
   }
 }
 

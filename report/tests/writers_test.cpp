@@ -188,5 +188,25 @@ TEST(NavigationFiles, TheErrorOverTimeAveragesTheRealizationsThatHaveABin) {
             "a,none,5,1,3,3\n");
 }
 
+TEST(NavigationFiles, WorseThanTheDriftIsCountedInPairsOfOneRealization) {
+  auto record = [](int realization, const std::string& method, double rmse_m) {
+    nav::NavigationRecord r;
+    r.realization = realization;
+    r.method = method;
+    r.outcome.rmse_m = rmse_m;
+    return r;
+  };
+  // Realization 0 drifts little, 1 much: the trigger's 0.5 m is worse in the first alone.
+  const std::vector<NavigationSummary> summaries = SummarizeNavigation(
+      {record(0, "pdop", 0.5), record(0, "none", 0.3), record(1, "pdop", 0.5), record(1, "none", 3.0)}, 1, 0, 1, "none");
+  ASSERT_EQ(summaries.size(), 2u);
+  EXPECT_EQ(summaries[0].worse_than_drift, 1);
+  EXPECT_FALSE(summaries[1].worse_than_drift.has_value());  // the drift itself
+  std::ostringstream markdown;
+  schema::ExperimentConfig config;
+  WriteNavigationMarkdown(markdown, summaries, {Row("a")}, config);
+  EXPECT_NE(markdown.str().find("| a | pdop | 0.500 | 0.000 | 0.0 | - | - | 50 |"), std::string::npos) << markdown.str();
+}
+
 }  // namespace
 }  // namespace anchorbench::report

@@ -5,13 +5,16 @@
 // beside two baselines: the true anchors from the start (the floor) and none (the drift). Every
 // method of a realization sees the same trajectory, ranges and odometry.
 
+#include <functional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "anchorbench/engine/commit.hpp"
 #include "anchorbench/nav/navigate.hpp"
 #include "anchorbench/registry/components.hpp"
 #include "anchorbench/schema/experiment.hpp"
+#include "anchorbench/sim/random_stream.hpp"
 
 namespace anchorbench::engine {
 
@@ -19,6 +22,29 @@ inline constexpr const char* kTrueAnchors = "true_anchors";  // baseline: the tr
 inline constexpr const char* kNoAnchors = "no_anchors";      // baseline: odometry alone
 
 using nav::NavigationRecord;
+
+// One tag's run as the filter sees it: the true positions per epoch and the ranges in epoch order.
+struct Trajectory {
+  std::vector<double> t_s;
+  std::vector<Eigen::Vector3d> p_world_tag;
+  std::vector<nav::RangeAt> ranges;
+};
+// A method's name and the anchors it hands the filter.
+using MethodAnchors = std::pair<std::string, std::vector<nav::UsableAnchor>>;
+
+// The filter's options from the config's section; `sigma_range_m` 0 there takes `row_sigma_range_m`.
+nav::NavigationOptions OptionsOf(const schema::NavigationConfig& navigation, double row_sigma_range_m);
+
+// Each trigger's anchors, in `triggers`' order: those it initialized (and, as `mirrored` says,
+// those it refused as height_unobservable), usable from their initialization's time.
+std::vector<MethodAnchors> TriggerAnchors(const std::vector<schema::Attempt>& attempts,
+                                          const std::vector<std::string>& triggers, schema::MirroredAnchorUse mirrored);
+
+// One realization: the odometry and the start drawn from `rng`, then every method on them (common
+// random numbers), one record each.
+std::vector<NavigationRecord> NavigateMethods(const Trajectory& run, const std::vector<MethodAnchors>& methods,
+                                              const nav::NavigationOptions& options, sim::RandomStream& rng, int row,
+                                              int realization);
 
 // The methods of a row: its triggers, then the two baselines.
 std::vector<std::string> NavigationMethods(const schema::RowConfig& row);
@@ -37,8 +63,18 @@ void CheckNavigation(const schema::ExperimentConfig& config, const registry::Com
 std::vector<NavigationRecord> RunNavigation(const schema::ExperimentConfig& config,
                                             const registry::Components& components, int threads);
 
-// navigation.csv, navigation_summary.csv, navigation_error.csv, navigation.md and manifest.json
-// through `write`; returns navigation.md's text.
+// `units` units on `threads` threads (ParallelFor), their records joined in unit order: the same
+// for any thread count.
+std::vector<NavigationRecord> NavigateUnits(int units, int threads,
+                                            const std::function<std::vector<NavigationRecord>(int unit)>& unit);
+
+// navigation.csv, navigation_summary.csv, navigation_error.csv and navigation.md of `records`
+// (whose row indexes `rows`) through `write`; returns navigation.md's text.
+std::string WriteNavigationTables(const FileWriter& write, const schema::ExperimentConfig& config,
+                                  const std::vector<schema::RowConfig>& rows,
+                                  const std::vector<NavigationRecord>& records);
+
+// The tables of the config's rows and manifest.json; returns navigation.md's text.
 std::string WriteNavigationFiles(const FileWriter& write, const schema::ExperimentConfig& config,
                                  const std::vector<NavigationRecord>& records, const report::RunInfo& info);
 

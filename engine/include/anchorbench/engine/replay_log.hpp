@@ -33,6 +33,9 @@ class ReplayLog {
             const io::ByteProgress& progress = nullptr);
 
   const io::LogSurvey& survey() const { return survey_; }
+  const io::LogFiles& files() const { return files_; }
+  const io::LogPolicy& policy() const { return policy_; }
+  const std::map<int, schema::AnchorTruth>* truth() const { return truth_ ? &*truth_ : nullptr; }
 
   // The second pass, one row at a time into the front end; `trace` sees every range handed to
   // the initializers.

@@ -132,8 +132,9 @@ class AnchorInitializer {
   std::span<const double> range_m() const { return range_m_; }
   std::span<const int> tag_id() const { return tag_id_; }
   const ClosestPointPdop& pdop() const { return pdop_; }
-  // The latest online solve that failed (degenerate, non-finite), if any: why it is not initialized.
-  const std::optional<SolveResult>& last_failed_solve() const { return last_failed_solve_; }
+  // The latest online solve that failed (degenerate, non-finite, a mirror), if any, with when it
+  // ran: why the anchor is not initialized.
+  const std::optional<InitEvent>& last_failed_solve() const { return last_failed_solve_; }
   // The trigger's reason for not firing, where it has one (InitTrigger::refusal).
   std::optional<SolveStatus> trigger_refusal() const { return trigger_->refusal(); }
   // Accepted samples left out of the buffer by its cap, and samples lost because the queue behind
@@ -168,7 +169,7 @@ class AnchorInitializer {
   double t_first_s_ = 0.0;
   bool initialized_ = false;
   std::size_t next_attempt_size_ = 0;
-  std::optional<SolveResult> last_failed_solve_;
+  std::optional<InitEvent> last_failed_solve_;
   bool defer_solves_ = false;
   std::optional<TriggerInput> pending_;  // what the trigger fired on; the buffer stays as it saw it
   std::deque<Accepted> queued_;  // accepted while a deferred solve was pending

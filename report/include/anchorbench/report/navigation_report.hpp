@@ -29,12 +29,16 @@ struct NavigationSummary {
   double fix_share_mean = 0.0;
   int with_first_anchor = 0;                   // runs where any anchor came
   std::optional<double> t_first_anchor_median_s, t_kth_anchor_median_s;
+  // Runs whose RMSE is above the drift's (odometry alone) in the same realization: where the
+  // anchors made navigation worse than using none. None for the drift itself.
+  std::optional<int> worse_than_drift;
 };
 
 // Per row and method in the records' order; the bootstrap draws from (seed, row,
-// kBootstrapStream, a hash of "navigation:" and the method).
+// kBootstrapStream, a hash of "navigation:" and the method). `drift_method` names the records of
+// odometry alone, the pairs worse_than_drift compares with.
 std::vector<NavigationSummary> SummarizeNavigation(const std::vector<nav::NavigationRecord>& records, int rows,
-                                                   int resamples, std::uint64_t seed);
+                                                   int resamples, std::uint64_t seed, const std::string& drift_method);
 
 void WriteNavigationErrorCsv(std::ostream& out, const std::vector<nav::NavigationRecord>& records,
                              const std::vector<schema::RowConfig>& rows, double error_bin_s);

@@ -43,6 +43,9 @@ struct Attempt {
   std::string method;  // the trigger's name (fixed_window, pdop_closest_point, ...)
   bool initialized = false;
   std::optional<double> t_init_s;  // when the solve ran (online: the trigger; fixed: end of data)
+  // Online, not initialized: when the latest failed solve (`solve`) ran. In memory only (the
+  // navigation study uses a mirror-refused estimate from then on); not in the attempts' files.
+  std::optional<double> t_failed_solve_s;
   int n_used = 0;                  // samples in the solve, or buffered so far if none ran
   double pdop_closest_point = 0.0;  // Eq. (4) at that moment, not at the estimate (+inf if undefined)
   std::optional<estimator::SolveResult> solve;  // absent if the solver never ran
