@@ -199,6 +199,9 @@ void AddMonteCarloCommands(CLI::App& cli, CommandLine& c) {
   c.navigate_cmd->add_option("config", c.navigate.config, "Experiment config (YAML) with a 'navigation' section")
       ->required();
   AddMonteCarloOptions(c.navigate_cmd, c.navigate);
+  c.navigate_cmd->add_option("--shard", c.navigate.shard,
+                             "I/N: compute only shard I of N of the (row, realization) units into a shard folder; "
+                             "`anchorbench merge` joins the N folders into the unsharded run's bytes");
 
   c.calibrate_cmd = cli.add_subcommand(
       "calibrate", "Fit scenario parameters so an experiment's table matches the published one (docs/calibration.md)");

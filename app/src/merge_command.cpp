@@ -7,6 +7,7 @@
 #include "anchorbench/schema/input_error.hpp"
 #include "anchorbench/io/result_folder.hpp"
 #include "anchorbench/engine/commit.hpp"
+#include "anchorbench/engine/navigation_shard.hpp"
 #include "anchorbench/engine/shard_folder.hpp"
 #include "monte_carlo_command.hpp"
 
@@ -86,6 +87,35 @@ std::unique_ptr<io::ResultFolder> OpenMerged(const MergeArgs& args, const std::s
   return std::make_unique<io::ResultFolder>(io::ResultFolderPath(args.out, name), options);
 }
 
+// The merged manifest's record: the shards' config, build and folders.
+report::RunInfo MergedInfo(const MergeArgs& args, const engine::ShardInfo& first, const engine::ShardInputs& inputs,
+                           const AppContext& app) {
+  report::RunInfo info;
+  info.config_path = (fs::path(args.shards.front()) / "config.yaml").string();
+  info.revision = first.revision;
+  for (const std::string& shard : args.shards) info.command_line.push_back("merge " + shard);
+  info.resolved_config = config::ToJson(config::LoadConfigText(inputs.config_yaml, "config.yaml", {}, app.components));
+  return info;
+}
+
+// A navigation study's shards (engine/navigation_shard.hpp) into its tables.
+int MergeNavigation(const MergeArgs& args, const std::vector<engine::ShardInfo>& infos,
+                    const engine::ShardInputs& inputs, const engine::Plan& plan, const AppContext& app,
+                    io::ResultFolder& out) {
+  schema::ExperimentConfig config = plan.experiments().front();
+  config.name = infos.front().name;
+  const std::vector<engine::NavigationRecord> records =
+      engine::ReadNavigationShards({args.shards.begin(), args.shards.end()}, infos, config);
+  report::RunInfo info = MergedInfo(args, infos.front(), inputs, app);
+  info.command_line.insert(info.command_line.begin(), "navigate");
+  const std::string markdown = engine::WriteNavigationFiles(
+      [&](const std::string& name, const std::function<void(std::ostream&)>& write) { out.Write(name, write); }, config,
+      records, info);
+  out.Commit();
+  if (!args.quiet) std::cout << markdown;
+  return 0;
+}
+
 }  // namespace
 
 int MergeCommand(const MergeArgs& args, const AppContext& app) {
@@ -93,18 +123,14 @@ int MergeCommand(const MergeArgs& args, const AppContext& app) {
   engine::ShardInputs inputs;
   const engine::Plan plan = CheckInputs(args.shards, infos.front(), app.components, inputs);
   const std::unique_ptr<io::ResultFolder> out = OpenMerged(args, infos.front().name);
+  if (infos.front().command == "navigate") return MergeNavigation(args, infos, inputs, plan, app, *out);
   std::map<int, engine::ChunkResult> chunks;
   for (std::size_t s = 0; s < args.shards.size(); ++s) {
     chunks.merge(engine::ReadShardChunks(args.shards[s], infos[s], plan));
   }
 
   const std::vector<engine::ExperimentAttempts> joined = engine::Join(plan, chunks);
-  const fs::path first(args.shards.front());
-  report::RunInfo info;
-  info.config_path = (first / "config.yaml").string();
-  info.revision = infos.front().revision;
-  for (const std::string& shard : args.shards) info.command_line.push_back("merge " + shard);
-  info.resolved_config = config::ToJson(config::LoadConfigText(inputs.config_yaml, "config.yaml", {}, app.components));
+  const report::RunInfo info = MergedInfo(args, infos.front(), inputs, app);
   std::string markdown;
   if (infos.front().command == "run") {
     schema::ExperimentConfig config = plan.experiments().front();

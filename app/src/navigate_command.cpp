@@ -2,6 +2,8 @@
 
 #include "anchorbench/config/load_config.hpp"
 #include "anchorbench/engine/navigation.hpp"
+#include "anchorbench/engine/navigation_shard.hpp"
+#include "anchorbench/engine/plan.hpp"
 #include "monte_carlo_command.hpp"
 
 namespace anchorbench::app {
@@ -17,6 +19,18 @@ int NavigateCommand(const MonteCarloArgs& args, const AppContext& app) {
   const std::unique_ptr<io::ResultFolder> out = OpenResultFolder(args, setup, 150 * lines + (1 << 16));
 
   Progress progress("navigate " + config.name, args.quiet);
+  if (const std::optional<engine::Shard> shard = ShardOf(args)) {
+    const std::vector<engine::NavigationRecord> records =
+        engine::RunNavigationShard(config, app.components, setup.threads, *shard);
+    const engine::Plan plan({config});
+    const int units = static_cast<int>(records.size() / (config.estimator.triggers.size() + 2));
+    progress.Finish(units);
+    engine::WriteNavigationShard([&](const std::string& name, const std::string& text) { out->Write(name, text); },
+                                 {*shard, units, "navigate", config.name, plan.identity(), app.revision},
+                                 {plan.texts().front(), {}}, records);
+    out->Commit();
+    return 0;
+  }
   const std::vector<engine::NavigationRecord> records = engine::RunNavigation(config, app.components, setup.threads);
   const double wall_time_s = progress.elapsed_s();
   progress.Finish(static_cast<long long>(records.size() / (config.estimator.triggers.size() + 2)));

@@ -63,5 +63,31 @@ expect_refusal "a run's and a sweep's shards" "is of another run" "$dir/w3-0" "$
 refused "a shard index out of range" "'3/3' is not a shard I/N" "$dir/bad" "$bin" run "$dir/small.yaml" --shard 3/3 --out "$dir/bad"
 refused "a shard that is not I/N" "'x' is not a shard I/N" "$dir/bad" "$bin" run "$dir/small.yaml" --shard x --out "$dir/bad"
 
+# The navigation study (issue 27): its (row, realization) units in shards, merged to the bytes of
+# the single process, whatever the split and threads; an edited records file is refused.
+{ sed 's/^realizations: 5$/realizations: 3/' "$dir/small.yaml"; printf 'navigation: {}\n'; } >"$dir/navigated.yaml"
+"$bin" navigate "$dir/navigated.yaml" --out "$dir/nav_whole" --quiet --threads 2 || fail "navigate"
+for n in 1 4 7; do
+  shards=()
+  for ((i = 0; i < n; i++)); do
+    "$bin" navigate "$dir/navigated.yaml" --shard "$i/$n" --out "$dir/n$n-$i" --quiet --threads $((1 + i % 2)) \
+      || fail "navigate shard $i/$n"
+    shards+=("$dir/n$n-$i")
+  done
+  "$bin" merge "$dir/nav_merged$n" "${shards[@]}" --quiet || fail "merge of $n navigation shards"
+  for file in navigation.csv navigation_summary.csv navigation_error.csv navigation.md; do
+    cmp -s "$dir/nav_whole/$file" "$dir/nav_merged$n/$file" || fail "$n navigation shards: merged $file differs"
+  done
+  echo "ok: $n navigation shards merge to the single run's bytes"
+done
+expect_refusal "a navigation shard missing" "shard 2/4 is missing" "$dir/n4-0" "$dir/n4-1" "$dir/n4-3"
+sed -i '2d' "$dir/n4-1/navigation_records.csv"
+expect_refusal "a navigation shard with a record taken out" "do not hold each of its methods once" \
+  "$dir/n4-0" "$dir/n4-1" "$dir/n4-2" "$dir/n4-3"
+"$bin" navigate "$dir/navigated.yaml" --shard 1/4 --out "$dir/n4-1" --quiet --overwrite || fail "navigate shard 1/4"
+sed -i '2s/^0,2,/0,1,/' "$dir/n4-2/navigation_records.csv"  # shard 2/4 holds row 0's realization 2 alone
+expect_refusal "a navigation record moved to another shard's unit" "is not a unit of this shard" \
+  "$dir/n4-0" "$dir/n4-1" "$dir/n4-2" "$dir/n4-3"
+
 [ "$failures" -eq 0 ] || { echo "$failures failure(s)"; exit 1; }
 echo "all shard cases passed"

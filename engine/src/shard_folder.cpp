@@ -25,6 +25,11 @@ Plan RebuildPlan(const ShardInputs& inputs, const registry::Components& componen
 void WriteShardFolder(const std::function<void(const std::string&, const std::string&)>& write, const ShardInfo& info,
                       const ShardInputs& inputs, const Plan& plan, const std::map<int, ChunkResult>& chunks) {
   for (const auto& [chunk, result] : chunks) write(ChunkFileName(chunk), ChunkText(plan, chunk, result));
+  WriteShardIdentity(write, info, inputs);
+}
+
+void WriteShardIdentity(const std::function<void(const std::string&, const std::string&)>& write,
+                        const ShardInfo& info, const ShardInputs& inputs) {
   write("config.yaml", inputs.config_yaml);
   std::string axes;
   for (const std::string& axis : schema::DescribeAxes(inputs.axes)) axes += axis + '\n';
@@ -52,7 +57,9 @@ ShardInfo ReadShardInfo(const fs::path& folder) {
   if (info.shard.count < 1 || info.shard.index < 0 || info.shard.index >= info.shard.count) {
     csv.Fail("shard " + std::to_string(info.shard.index) + " of " + std::to_string(info.shard.count) + " is not a shard");
   }
-  if (info.command != "run" && info.command != "sweep") csv.Fail("command '" + info.command + "': run or sweep");
+  if (info.command != "run" && info.command != "sweep" && info.command != "navigate") {
+    csv.Fail("command '" + info.command + "': run, sweep or navigate");
+  }
   return info;
 }
 

@@ -1,0 +1,36 @@
+#pragma once
+// A navigation study's shard (anchorbench navigate --shard I/N) and its merge (anchorbench merge).
+// Shard I of N holds the units u = row * realizations + realization with u % N == I; its folder
+// has shard_folder.hpp's shard.csv, config.yaml and axes.txt, and navigation_records.csv: the
+// units' records at round-trip precision, so the merged tables are the unsharded run's bytes.
+
+#include <filesystem>
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "anchorbench/engine/navigation.hpp"
+#include "anchorbench/engine/shard.hpp"
+#include "anchorbench/engine/shard_folder.hpp"
+
+namespace anchorbench::engine {
+
+inline constexpr const char* kNavigationRecordsFile = "navigation_records.csv";
+
+// The shard's units of RunNavigation, in unit order. Checks the config first (CheckNavigation).
+std::vector<NavigationRecord> RunNavigationShard(const schema::ExperimentConfig& config,
+                                                 const registry::Components& components, int threads,
+                                                 const Shard& shard);
+
+// The shard's folder through `write(name, text)`, shard.csv last.
+void WriteNavigationShard(const std::function<void(const std::string&, const std::string&)>& write,
+                          const ShardInfo& info, const ShardInputs& inputs,
+                          const std::vector<NavigationRecord>& records);
+
+// Every shard's records joined in unit order: RunNavigation's. Refuses (InputError naming the file
+// and line) a malformed line, a unit its shard does not hold, or a unit no shard has.
+std::vector<NavigationRecord> ReadNavigationShards(const std::vector<std::filesystem::path>& folders,
+                                                   const std::vector<ShardInfo>& infos,
+                                                   const schema::ExperimentConfig& config);
+
+}  // namespace anchorbench::engine
