@@ -33,7 +33,10 @@ step "$bin" run configs/flat_path.yaml --out results/flat_path --quiet --overwri
 for run in cone_approach radio_biases credibility; do
   step "$bin" run "configs/$run.yaml" --out "results/$run" --quiet --overwrite
 done
-step "$bin" navigate configs/navigation_tunnel.yaml --out results/navigation_tunnel --quiet --overwrite
+# Navigation in the loop (issue 27): Table I's tunnel, the UAV hall with a VIO (Table IV), the radio biases
+for study in navigation_tunnel navigation_uav_hall navigation_radio_biases; do
+  step "$bin" navigate "configs/$study.yaml" --out "results/$study" --quiet --overwrite
+done
 for sweep in sweep_bias_aware stress stress_ransac; do
   step "$bin" sweep "configs/$sweep.yaml" --out "results/$sweep" --quiet --overwrite
 done

@@ -28,7 +28,8 @@ from . import _anchorbench
 
 __all__ = [
     "Config", "Event", "FrontEnd", "InputError", "Result", "SolveResult", "closest_point_pdop", "geometry_pdop",
-    "load_config", "parts", "register_solver", "register_trigger", "replay", "run", "simulate", "solve", "sweep",
+    "load_config", "navigate", "parts", "register_solver", "register_trigger", "replay", "run", "simulate", "solve",
+    "sweep",
 ]
 
 ConfigLike = Union[None, str, os.PathLike, Mapping, Config]
@@ -129,16 +130,24 @@ def sweep(config: ConfigLike, axes: Union[Mapping[str, str], Sequence[str]] = ()
     return Result(_anchorbench._sweep(_with(config, overrides, None, realizations), [str(a) for a in axes], int(threads)))
 
 
+def navigate(config: ConfigLike, *, overrides: Iterable[str] = (), seed: Optional[int] = None,
+             realizations: Optional[int] = None, threads: int = 0) -> Result:
+    """``anchorbench navigate`` (docs/navigation.md): each trigger's anchors in a drifting robot's filter;
+    navigation, navigation_summary and navigation_error as DataFrames. The config needs a 'navigation' section."""
+    return Result(_anchorbench._navigate(_with(config, overrides, seed, realizations), int(threads)))
+
+
 def replay(poses: Union[str, os.PathLike], ranges: Union[str, os.PathLike, Sequence[Union[str, os.PathLike]]],
            anchors: Union[None, str, os.PathLike] = None, config: ConfigLike = None, *,
-           repeated_poses: str = "error", out_of_order: str = "sort") -> Result:
-    """``anchorbench replay`` of a recorded log (docs/real_data.md): estimates.csv and the replay summary."""
+           repeated_poses: str = "error", out_of_order: str = "sort", navigate: bool = False) -> Result:
+    """``anchorbench replay`` of a recorded log (docs/real_data.md): estimates.csv and the replay summary;
+    with ``navigate``, also the navigation filter on the log with synthetic odometry (``replay --navigate``)."""
     if isinstance(ranges, (str, os.PathLike)):
         ranges = [ranges]
     loaded = None if config is None else load_config(config)
     return Result(_anchorbench._replay(os.fspath(poses), [os.fspath(r) for r in ranges],
                                        "" if anchors is None else os.fspath(anchors), loaded, repeated_poses,
-                                       out_of_order))
+                                       out_of_order, bool(navigate)))
 
 
 def simulate(config: ConfigLike, realization: int = 0, *, seed: Optional[int] = None,

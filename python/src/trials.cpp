@@ -1,4 +1,4 @@
-// The trials from Python: configs, run, sweep, replay and simulate, each returning the files the
+// The trials from Python: configs, run, sweep, navigate, replay and simulate, each returning the files the
 // command line writes (the same bytes), which the package reads into DataFrames and can save.
 #include <map>
 #include <sstream>
@@ -9,6 +9,8 @@
 #include "anchorbench/config/load_config.hpp"
 #include "anchorbench/engine/commit.hpp"
 #include "anchorbench/engine/monte_carlo.hpp"
+#include "anchorbench/engine/navigation.hpp"
+#include "anchorbench/engine/navigation_log.hpp"
 #include "anchorbench/engine/plan.hpp"
 #include "anchorbench/engine/replay_log.hpp"
 #include "anchorbench/engine/run_plan.hpp"
@@ -114,9 +116,24 @@ Files Sweep(const ConfigHandle& config, const std::vector<std::string>& axes_tex
   return files;
 }
 
+Files Navigate(const ConfigHandle& config, int threads) {
+  engine::CheckNavigation(config.experiment, ModuleComponents());
+  const int resolved = engine::ResolveThreads(threads);
+  std::vector<engine::NavigationRecord> records;
+  {
+    py::gil_scoped_release release;
+    records = engine::RunNavigation(config.experiment, ModuleComponents(), resolved);
+  }
+  Files files;
+  engine::WriteNavigationFiles(files.Writer(), config.experiment, records, InfoOf(config, resolved, {"navigate"}));
+  return files;
+}
+
 Files Replay(const std::string& poses, const std::vector<std::string>& ranges, const std::string& anchors,
-             const ConfigHandle* config, const std::string& repeated_poses, const std::string& out_of_order) {
+             const ConfigHandle* config, const std::string& repeated_poses, const std::string& out_of_order,
+             bool navigate) {
   const schema::ExperimentConfig experiment = config ? config->experiment : schema::ExperimentConfig{};
+  if (navigate) engine::CheckLogNavigation(experiment);
   io::LogPolicy policy;
   policy.repeated_poses = io::RepeatedPosesFromName(repeated_poses);
   policy.out_of_order = io::OutOfOrderFromName(out_of_order);
@@ -126,8 +143,18 @@ Files Replay(const std::string& poses, const std::vector<std::string>& ranges, c
   py::gil_scoped_release release;
   const engine::ReplayLog replay({poses, ranges}, policy, std::move(truth), experiment, ModuleComponents());
   const engine::ReplayOutcome outcome = replay.Run();
+  std::vector<engine::NavigationRecord> navigation;
+  std::optional<engine::LogTrajectory> log;
+  if (navigate) {
+    log = engine::ReadLogTrajectory(replay.files(), replay.policy(), replay.survey());
+    navigation = engine::NavigateLog(*log, outcome.result.attempts, replay.truth(), experiment, engine::ResolveThreads(0));
+  }
   py::gil_scoped_acquire acquire;
   engine::WriteReplayFiles(files.Writer(), outcome);
+  if (log) {
+    const schema::RowConfig row{"tag_" + std::to_string(log->tag_id), {}, {}, std::nullopt};
+    engine::WriteNavigationTables(files.Writer(), experiment, {row}, navigation);
+  }
   return files;
 }
 
@@ -162,8 +189,9 @@ void BindTrials(py::module_& m) {
            "Writes the files into `folder`, whole or not at all; an existing folder only with overwrite=True.");
   m.def("_run", &Run, py::arg("config"), py::arg("threads"));
   m.def("_sweep", &Sweep, py::arg("config"), py::arg("axes"), py::arg("threads"));
+  m.def("_navigate", &Navigate, py::arg("config"), py::arg("threads"));
   m.def("_replay", &Replay, py::arg("poses"), py::arg("ranges"), py::arg("anchors"), py::arg("config"),
-        py::arg("repeated_poses"), py::arg("out_of_order"));
+        py::arg("repeated_poses"), py::arg("out_of_order"), py::arg("navigate"));
   m.def("_simulate", &Simulate, py::arg("config"), py::arg("realization"));
 }
 

@@ -1,4 +1,4 @@
-"""run, sweep, replay and simulate from Python: the command line's records as DataFrames, the same bytes when saved."""
+"""run, sweep, navigate, replay and simulate from Python: the command line's records as DataFrames, the same bytes when saved."""
 
 import json
 
@@ -80,3 +80,32 @@ def test_replay_refuses_a_malformed_log_naming_its_line(tmp_path):
     (tmp_path / "ranges.csv").write_text("t,anchor_id,range\n0.5,1,3\n")
     with pytest.raises(ab.InputError, match=r"poses.csv:3"):
         ab.replay(tmp_path / "poses.csv", tmp_path / "ranges.csv")
+
+
+NAVIGATION_FILES = ["navigation.csv", "navigation_summary.csv", "navigation_error.csv", "navigation.md"]
+
+
+def test_navigate_gives_the_command_lines_bytes(small_yaml, tmp_path, cli):
+    navigated = tmp_path / "navigated.yaml"
+    navigated.write_text(small_yaml.read_text() + "navigation: {}\n")
+    cli("navigate", navigated, "--realizations", 2, "--out", tmp_path / "cli", "--quiet")
+    result = ab.navigate(navigated, realizations=2, threads=2)
+    for name in NAVIGATION_FILES:
+        assert result.text(name) == (tmp_path / "cli" / name).read_text(), name
+    assert set(result.navigation["method"]) == {"fixed_window", "pdop_closest_point", "certified", "true_anchors",
+                                                "no_anchors"}
+    with pytest.raises(ab.InputError, match="no 'navigation' section"):
+        ab.navigate(small_yaml, realizations=1)
+
+
+def test_replay_with_navigate_gives_the_command_lines_navigation_tables(small_yaml, tmp_path, cli):
+    ab.simulate(small_yaml).save(tmp_path / "log")
+    log = tmp_path / "log"
+    (tmp_path / "config.yaml").write_text("realizations: 3\nnavigation: {sigma_range_m: 0.1}\n")
+    replayed = ab.replay(log / "poses.csv", log / "ranges.csv", anchors=log / "anchors.csv",
+                         config=tmp_path / "config.yaml", navigate=True)
+    cli("replay", "--poses", log / "poses.csv", "--ranges", log / "ranges.csv", "--anchors", log / "anchors.csv",
+        "--config", tmp_path / "config.yaml", "--navigate", "--out", tmp_path / "cli", "--quiet")
+    for name in NAVIGATION_FILES + ["estimates.csv"]:
+        assert replayed.text(name) == (tmp_path / "cli" / name).read_text(), name
+    assert len(replayed.navigation) == 3 * 5  # draws x (3 triggers, the true anchors, none)
