@@ -12,6 +12,7 @@ int NavigateCommand(const MonteCarloArgs& args, const AppContext& app) {
   schema::ExperimentConfig config = config::LoadConfig(args.config, {}, app.components);
   if (args.realizations) config.realizations = *args.realizations;
   engine::CheckNavigation(config, app.components);  // before the result folder is claimed
+  const std::optional<engine::Shard> shard = ShardOf(args);
   const MonteCarloSetup setup = SetUpMonteCarlo(args, config.name);
   // A line of ~100 bytes per (row, realization, method), and the tables.
   const std::uintmax_t lines = static_cast<std::uintmax_t>(config.realizations) * schema::RowsOf(config).size() *
@@ -19,21 +20,19 @@ int NavigateCommand(const MonteCarloArgs& args, const AppContext& app) {
   const std::unique_ptr<io::ResultFolder> out = OpenResultFolder(args, setup, 150 * lines + (1 << 16));
 
   Progress progress("navigate " + config.name, args.quiet);
-  if (const std::optional<engine::Shard> shard = ShardOf(args)) {
-    const std::vector<engine::NavigationRecord> records =
-        engine::RunNavigationShard(config, app.components, setup.threads, *shard);
+  const std::vector<engine::NavigationRecord> records =
+      engine::RunNavigation(config, app.components, setup.threads, shard.value_or(engine::Shard{}));
+  const int units = static_cast<int>(records.size() / (config.estimator.triggers.size() + 2));
+  const double wall_time_s = progress.elapsed_s();
+  progress.Finish(units);
+  if (shard) {
     const engine::Plan plan({config});
-    const int units = static_cast<int>(records.size() / (config.estimator.triggers.size() + 2));
-    progress.Finish(units);
     engine::WriteNavigationShard([&](const std::string& name, const std::string& text) { out->Write(name, text); },
                                  {*shard, units, "navigate", config.name, plan.identity(), app.revision},
                                  {plan.texts().front(), {}}, records);
     out->Commit();
     return 0;
   }
-  const std::vector<engine::NavigationRecord> records = engine::RunNavigation(config, app.components, setup.threads);
-  const double wall_time_s = progress.elapsed_s();
-  progress.Finish(static_cast<long long>(records.size() / (config.estimator.triggers.size() + 2)));
   const std::string markdown = engine::WriteNavigationFiles(
       [&](const std::string& name, const std::function<void(std::ostream&)>& write) { out->Write(name, write); },
       config, records, RunInfoOf(args, setup, app, config, wall_time_s, {"navigate"}));

@@ -35,16 +35,6 @@ io::LogPolicy PolicyOf(const ReplayArgs& args) {
   return policy;
 }
 
-// The navigation filter on the log's lowest tag with each trigger's anchors (engine/navigation_log.hpp).
-void Navigate(const engine::ReplayLog& replay, const engine::ReplayOutcome& outcome,
-              const schema::ExperimentConfig& config, const engine::FileWriter& write) {
-  const engine::LogTrajectory log = engine::ReadLogTrajectory(replay.files(), replay.policy(), replay.survey());
-  const std::vector<engine::NavigationRecord> records = engine::NavigateLog(
-      log, outcome.result.attempts, replay.truth(), config, engine::ResolveThreads(0));
-  const schema::RowConfig row{"tag_" + std::to_string(log.tag_id), {}, {}, std::nullopt};
-  engine::WriteNavigationTables(write, config, {row}, records);
-}
-
 }  // namespace
 
 int ReplayCommand(const ReplayArgs& args, const AppContext& app) {
@@ -105,7 +95,7 @@ int ReplayCommand(const ReplayArgs& args, const AppContext& app) {
       out->Write(name, file);
     };
     engine::WriteReplayFiles(write, outcome);
-    if (args.navigate) Navigate(replay, outcome, config, write);
+    if (args.navigate) engine::WriteLogNavigation(write, replay, outcome, config, engine::ResolveThreads(0));
     out->Commit();
   }
   return 0;

@@ -97,11 +97,15 @@ void CheckNavigation(const schema::ExperimentConfig& config, const registry::Com
 }
 
 std::vector<NavigationRecord> RunNavigation(const schema::ExperimentConfig& config,
-                                            const registry::Components& components, int threads) {
+                                            const registry::Components& components, int threads, const Shard& shard) {
   CheckNavigation(config, components);
   const std::vector<schema::RowConfig> rows = schema::RowsOf(config);
-  return NavigateUnits(static_cast<int>(rows.size()) * config.realizations, threads, [&](int unit) {
-    const int row = unit / config.realizations;
+  std::vector<int> units;  // the shard's (row, realization) units: row * realizations + realization
+  for (int u = 0; u < static_cast<int>(rows.size()) * config.realizations; ++u) {
+    if (shard.Holds(u)) units.push_back(u);
+  }
+  return NavigateUnits(static_cast<int>(units.size()), threads, [&](int i) {
+    const int unit = units[static_cast<std::size_t>(i)], row = unit / config.realizations;
     return NavigateRealization(rows[static_cast<std::size_t>(row)], row, config.seed, unit % config.realizations,
                                *config.navigation, components);
   });

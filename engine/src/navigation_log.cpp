@@ -81,4 +81,13 @@ std::vector<NavigationRecord> NavigateLog(const LogTrajectory& log, const std::v
   });
 }
 
+void WriteLogNavigation(const FileWriter& write, const ReplayLog& replay, const ReplayOutcome& outcome,
+                        const schema::ExperimentConfig& config, int threads) {
+  const LogTrajectory log = ReadLogTrajectory(replay.files(), replay.policy(), replay.survey());
+  const std::vector<NavigationRecord> records =
+      NavigateLog(log, outcome.result.attempts, replay.truth(), config, threads);
+  const schema::RowConfig row{"tag_" + std::to_string(log.tag_id), {}, {}, std::nullopt};
+  WriteNavigationTables(write, config, {row}, records);
+}
+
 }  // namespace anchorbench::engine

@@ -52,22 +52,6 @@ std::optional<double> OptionalNumber(const io::CsvReader& csv, int column) {
 
 }  // namespace
 
-std::vector<NavigationRecord> RunNavigationShard(const schema::ExperimentConfig& config,
-                                                 const registry::Components& components, int threads,
-                                                 const Shard& shard) {
-  CheckNavigation(config, components);
-  const std::vector<schema::RowConfig> rows = schema::RowsOf(config);
-  std::vector<int> units;
-  for (int u = 0; u < static_cast<int>(rows.size()) * config.realizations; ++u) {
-    if (shard.Holds(u)) units.push_back(u);
-  }
-  return NavigateUnits(static_cast<int>(units.size()), threads, [&](int i) {
-    const int unit = units[static_cast<std::size_t>(i)], row = unit / config.realizations;
-    return NavigateRealization(rows[static_cast<std::size_t>(row)], row, config.seed, unit % config.realizations,
-                               *config.navigation, components);
-  });
-}
-
 void WriteNavigationShard(const std::function<void(const std::string&, const std::string&)>& write,
                           const ShardInfo& info, const ShardInputs& inputs,
                           const std::vector<NavigationRecord>& records) {

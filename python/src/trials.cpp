@@ -143,18 +143,8 @@ Files Replay(const std::string& poses, const std::vector<std::string>& ranges, c
   py::gil_scoped_release release;
   const engine::ReplayLog replay({poses, ranges}, policy, std::move(truth), experiment, ModuleComponents());
   const engine::ReplayOutcome outcome = replay.Run();
-  std::vector<engine::NavigationRecord> navigation;
-  std::optional<engine::LogTrajectory> log;
-  if (navigate) {
-    log = engine::ReadLogTrajectory(replay.files(), replay.policy(), replay.survey());
-    navigation = engine::NavigateLog(*log, outcome.result.attempts, replay.truth(), experiment, engine::ResolveThreads(0));
-  }
-  py::gil_scoped_acquire acquire;
-  engine::WriteReplayFiles(files.Writer(), outcome);
-  if (log) {
-    const schema::RowConfig row{"tag_" + std::to_string(log->tag_id), {}, {}, std::nullopt};
-    engine::WriteNavigationTables(files.Writer(), experiment, {row}, navigation);
-  }
+  engine::WriteReplayFiles(files.Writer(), outcome);  // into C++ strings: no Python object touched
+  if (navigate) engine::WriteLogNavigation(files.Writer(), replay, outcome, experiment, engine::ResolveThreads(0));
   return files;
 }
 

@@ -16,12 +16,6 @@ using io::FormatFixed;
 using io::FormatNumber;
 using io::FormatOptional;
 
-double Mean(const std::vector<double>& values) {
-  double sum = 0.0;
-  for (double v : values) sum += v;
-  return values.empty() ? 0.0 : sum / static_cast<double>(values.size());
-}
-
 // The 95% percentile interval of the mean over `resamples` resamples of the runs (one a realization).
 std::pair<double, double> BootstrapMean(const std::vector<double>& values, int resamples, sim::RandomStream rng) {
   std::vector<double> means;
@@ -69,7 +63,7 @@ std::vector<NavigationSummary> SummarizeNavigation(const std::vector<nav::Naviga
       s.row = row;
       s.method = method;
       s.runs = static_cast<int>(rmse.size());
-      s.rmse_mean_m = Mean(rmse);
+      s.rmse_mean_m = Mean(rmse).value_or(0.0);
       if (resamples > 0) {
         const auto [lo, hi] = BootstrapMean(rmse, resamples,
                                             sim::RandomStream(seed, static_cast<std::uint64_t>(row), schema::kBootstrapStream,
@@ -78,7 +72,7 @@ std::vector<NavigationSummary> SummarizeNavigation(const std::vector<nav::Naviga
         s.rmse_hi_m = hi;
       }
       s.final_error_median_m = Percentile(final_error, 0.5).value_or(0.0);
-      s.fix_share_mean = Mean(fix);
+      s.fix_share_mean = Mean(fix).value_or(0.0);
       s.with_first_anchor = static_cast<int>(t_first.size());
       s.t_first_anchor_median_s = Percentile(t_first, 0.5);
       s.t_kth_anchor_median_s = Percentile(t_kth, 0.5);
@@ -123,7 +117,7 @@ void WriteNavigationErrorCsv(std::ostream& out, const std::vector<nav::Navigatio
       if (bins[b].empty()) continue;
       out << rows[static_cast<std::size_t>(key.first)].name << ',' << key.second << ','
           << FormatNumber((static_cast<double>(b) + 0.5) * error_bin_s) << ',' << bins[b].size() << ','
-          << FormatNumber(Mean(bins[b])) << ',' << FormatNumber(*Percentile(bins[b], 0.9)) << '\n';
+          << FormatNumber(*Mean(bins[b])) << ',' << FormatNumber(*Percentile(bins[b], 0.9)) << '\n';
     }
   }
 }

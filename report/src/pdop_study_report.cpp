@@ -22,13 +22,6 @@ constexpr double kFigure7Span_s = 120.0;
 
 double Median(const std::vector<double>& values) { return Percentile(values, 0.5).value_or(std::nan("")); }
 
-double Mean(const std::vector<double>& values) {
-  if (values.empty()) return std::nan("");
-  double sum = 0.0;
-  for (double v : values) sum += v;
-  return sum / static_cast<double>(values.size());
-}
-
 void WriteTraceRows(std::ostream& out, const std::vector<PdopCheckpoint>& checkpoints) {
   out << "realization,anchor_id,n,t,pdop_closest_point,pdop_ls,pdop_nls,pdop_true,bias_aware_dop,ls_err_m,nls_err_m,"
          "dop4_closest_point,dop4_confidence\n";
@@ -101,7 +94,7 @@ std::string OutcomeCells(const TriggerOutcome& o, int anchors) {
   const double count = static_cast<double>(o.errors.size());
   return std::to_string(o.errors.size()) + " / " + std::to_string(anchors) + " | " + FormatFixed(Median(o.times), 1) +
          " | " + FormatFixed(Median(o.samples), 0) + " | " + FormatFixed(Median(o.errors), 3) + " | " +
-         FormatFixed(Mean(o.errors), 3) + " | " + (count > 0 ? FormatFixed(100.0 * o.bad / count, 1) + "%" : "-");
+         FormatFixed(Mean(o.errors).value_or(std::nan("")), 3) + " | " + (count > 0 ? FormatFixed(100.0 * o.bad / count, 1) + "%" : "-");
 }
 
 // Figs. 7/8 right: each method as the trigger at the threshold.

@@ -93,6 +93,13 @@ std::optional<Interval> WilsonInterval(int successes, int trials) {
   return Interval{std::max(0.0, centre - half), std::min(1.0, centre + half)};
 }
 
+std::optional<double> Mean(const std::vector<double>& values) {
+  if (values.empty()) return std::nullopt;
+  double sum = 0.0;
+  for (double v : values) sum += v;
+  return sum / static_cast<double>(values.size());
+}
+
 std::optional<double> Percentile(std::vector<double> values, double q) {
   if (values.empty()) return std::nullopt;
   std::sort(values.begin(), values.end());

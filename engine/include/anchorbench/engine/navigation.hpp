@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "anchorbench/engine/commit.hpp"
+#include "anchorbench/engine/shard.hpp"
 #include "anchorbench/nav/navigate.hpp"
 #include "anchorbench/registry/components.hpp"
 #include "anchorbench/schema/experiment.hpp"
@@ -58,10 +59,12 @@ std::vector<NavigationRecord> NavigateRealization(const schema::RowConfig& row, 
 // Refuses (InputError) a config without a `navigation` section, or one CheckExperiment refuses.
 void CheckNavigation(const schema::ExperimentConfig& config, const registry::Components& components);
 
-// Every row and realization on `threads` threads, ordered by row, realization, method: the same
-// for any thread count. Checks the config first (CheckNavigation).
+// Every row and realization (or the units `shard` holds: unit = row * realizations +
+// realization, as navigation_shard.hpp's) on `threads` threads, ordered by row, realization,
+// method: the same for any thread count. Checks the config first (CheckNavigation).
 std::vector<NavigationRecord> RunNavigation(const schema::ExperimentConfig& config,
-                                            const registry::Components& components, int threads);
+                                            const registry::Components& components, int threads,
+                                            const Shard& shard = {});
 
 // `units` units on `threads` threads (ParallelFor), their records joined in unit order: the same
 // for any thread count.

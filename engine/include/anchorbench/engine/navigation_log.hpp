@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "anchorbench/engine/navigation.hpp"
+#include "anchorbench/engine/replay_log.hpp"
 #include "anchorbench/io/log_reader.hpp"
 #include "anchorbench/schema/attempt.hpp"
 #include "anchorbench/schema/experiment.hpp"
@@ -36,5 +37,11 @@ void CheckLogNavigation(const schema::ExperimentConfig& config);
 std::vector<NavigationRecord> NavigateLog(const LogTrajectory& log, const std::vector<schema::Attempt>& attempts,
                                           const std::map<int, schema::AnchorTruth>* truth,
                                           const schema::ExperimentConfig& config, int threads);
+
+// `replay --navigate` after the replay: the log's trajectory read (ReadLogTrajectory), navigated
+// with the outcome's anchors (NavigateLog), and its tables written through `write`, their one
+// row named by the tag (WriteNavigationTables).
+void WriteLogNavigation(const FileWriter& write, const ReplayLog& replay, const ReplayOutcome& outcome,
+                        const schema::ExperimentConfig& config, int threads);
 
 }  // namespace anchorbench::engine

@@ -17,10 +17,7 @@ namespace anchorbench::engine {
 
 inline constexpr const char* kNavigationRecordsFile = "navigation_records.csv";
 
-// The shard's units of RunNavigation, in unit order. Checks the config first (CheckNavigation).
-std::vector<NavigationRecord> RunNavigationShard(const schema::ExperimentConfig& config,
-                                                 const registry::Components& components, int threads,
-                                                 const Shard& shard);
+// A shard's records come from RunNavigation(config, components, threads, shard).
 
 // The shard's folder through `write(name, text)`, shard.csv last.
 void WriteNavigationShard(const std::function<void(const std::string&, const std::string&)>& write,

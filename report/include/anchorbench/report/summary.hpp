@@ -44,6 +44,8 @@ std::optional<Interval> WilsonInterval(int successes, int trials);
 
 // The q-quantile (0..1) with linear interpolation; absent for no values.
 std::optional<double> Percentile(std::vector<double> values, double q);
+// The arithmetic mean; absent for no values.
+std::optional<double> Mean(const std::vector<double>& values);
 // A bootstrap substream named by a method (FNV-1a of the name, cut to the substream's 24 bits):
 // adding a method leaves the others' intervals as they were.
 std::uint32_t MethodSubstream(const std::string& method);
