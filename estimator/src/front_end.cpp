@@ -7,11 +7,23 @@ namespace anchorbench::estimator {
 FrontEnd::FrontEnd(ChainFactory factory, const FrontEndOptions& options)
     : factory_(std::move(factory)), options_(options), poses_(options.poses) {}
 
-std::vector<AnchorInitializer>& FrontEnd::Anchor(int anchor_id) {
-  if (const auto found = anchors_.find(anchor_id); found != anchors_.end()) return found->second;
+std::vector<AnchorInitializer> FrontEnd::MakeChains(int anchor_id) {
   std::vector<AnchorInitializer> chains = factory_(anchor_id);
   for (AnchorInitializer& chain : chains) chain.SetDeferSolves(options_.defer_solves);
-  return anchors_.emplace(anchor_id, std::move(chains)).first->second;
+  return chains;
+}
+
+std::vector<AnchorInitializer>& FrontEnd::Anchor(int anchor_id) {
+  if (const auto found = anchors_.find(anchor_id); found != anchors_.end()) return found->second;
+  return anchors_.emplace(anchor_id, MakeChains(anchor_id)).first->second;
+}
+
+bool FrontEnd::ResetAnchor(int anchor_id) {
+  const auto found = anchors_.find(anchor_id);
+  if (found == anchors_.end()) return false;
+  std::erase_if(pending_, [anchor_id](const std::pair<int, std::size_t>& p) { return p.first == anchor_id; });
+  found->second = MakeChains(anchor_id);
+  return true;
 }
 
 bool FrontEnd::AddAnchor(int anchor_id) {
@@ -91,15 +103,28 @@ void FrontEnd::ReleaseWaiting() {
   }
 }
 
-std::size_t FrontEnd::RunPendingSolves() {
+std::optional<FrontEnd::PendingSolve> FrontEnd::TakePendingSolve() {
+  if (pending_.empty()) return std::nullopt;
+  const auto [anchor_id, chain] = pending_.front();
+  pending_.pop_front();
+  return PendingSolve{anchor_id, chain, &anchors_.at(anchor_id)[chain]};
+}
+
+void FrontEnd::CompletePendingSolve(const PendingSolve& solve, const PendingWork& work) {
+  if (std::optional<InitEvent> event = solve.initializer->CompletePendingSolve(work)) {
+    Emit(solve.anchor_id, solve.chain, *event);
+  }
+  // The catch-up on the samples queued meanwhile fired again: due once more, behind the others.
+  if (solve.initializer->solve_pending()) pending_.emplace_back(solve.anchor_id, solve.chain);
+}
+
+std::size_t FrontEnd::RunPendingSolves(std::size_t max_count, Clock::time_point deadline) {
   std::size_t solved = 0;
-  while (!pending_.empty()) {
-    const auto [anchor_id, chain] = pending_.front();
-    pending_.pop_front();
-    AnchorInitializer& initializer = anchors_.at(anchor_id)[chain];
-    if (std::optional<InitEvent> event = initializer.RunPendingSolve()) Emit(anchor_id, chain, *event);
+  while (solved < max_count && (deadline == Clock::time_point::max() || Clock::now() < deadline)) {
+    const std::optional<PendingSolve> solve = TakePendingSolve();
+    if (!solve) break;
+    CompletePendingSolve(*solve, WorkPendingSolve(*solve));
     ++solved;
-    if (initializer.solve_pending()) pending_.emplace_back(anchor_id, chain);  // the catch-up fired again
   }
   return solved;
 }

@@ -6,7 +6,7 @@
 #include "anchorbench/config/load_config.hpp"
 #include "anchorbench/engine/attempt.hpp"
 #include "anchorbench/estimator/closest_point_pdop.hpp"
-#include "anchorbench/estimator/front_end.hpp"
+#include "anchorbench/estimator/live_front_end.hpp"
 #include "anchorbench/estimator/pdop.hpp"
 #include "anchorbench/schema/input_error.hpp"
 #include "config_handle.hpp"
@@ -46,12 +46,15 @@ estimator::SolveResult Solve(const Doubles& p_world_tag, const Doubles& range_m,
   return made->Solve(p, d);
 }
 
-// The online front end with the config's chains (one per trigger), as replay builds them.
+// The online front end with the config's chains (one per trigger), as replay builds them. It is a
+// LiveFrontEnd, so any Python thread may call it (each call releases the GIL); without
+// defer_solves, the adding call runs the solves it made due before it returns (the inline results).
 class PyFrontEnd {
  public:
   PyFrontEnd(const ConfigHandle* config, bool defer_solves)
       : estimator_(config ? config->experiment.estimator : schema::EstimatorConfig{}),
         seed_(config ? config->experiment.seed : 0),
+        defer_solves_(defer_solves),
         front_end_(
             [this](int anchor_id) {
               try {
@@ -61,19 +64,25 @@ class PyFrontEnd {
                 throw schema::InputError("anchor " + std::to_string(anchor_id) + ": " + e.what());
               }
             },
-            Options(defer_solves)) {
+            {}) {
     std::string why;
     if (!ModuleComponents().Check(estimator_, &why)) throw schema::InputError(why);
   }
 
-  void AddPose(double t_s, int tag_id, const Eigen::Vector3d& p) { front_end_.AddPose(t_s, tag_id, p); }
+  void AddPose(double t_s, int tag_id, const Eigen::Vector3d& p) {
+    py::gil_scoped_release release;
+    front_end_.AddPose(t_s, tag_id, p);
+    SolveUnlessDeferred();
+  }
   void AddRange(double t_s, int tag_id, int anchor_id, double range_m) {
     py::gil_scoped_release release;
     front_end_.AddRange(t_s, tag_id, anchor_id, range_m);
+    SolveUnlessDeferred();
   }
   void AddSample(double t_s, int tag_id, int anchor_id, double range_m, const Eigen::Vector3d& p) {
     py::gil_scoped_release release;
     front_end_.AddSample({t_s, tag_id, anchor_id, range_m, p});
+    SolveUnlessDeferred();
   }
   void AddSamples(const Doubles& t_s, const Ints& tag_id, const Ints& anchor_id, const Doubles& range_m,
                   const Doubles& p_world_tag) {
@@ -82,7 +91,10 @@ class PyFrontEnd {
     const std::span<const double> t = Values(t_s, "t_s", n), d = Values(range_m, "range_m", n);
     const std::span<const int> tags = IntValues(tag_id, "tag_id", n), anchors = IntValues(anchor_id, "anchor_id", n);
     py::gil_scoped_release release;
-    for (std::size_t i = 0; i < p.size(); ++i) front_end_.AddSample({t[i], tags[i], anchors[i], d[i], p[i]});
+    for (std::size_t i = 0; i < p.size(); ++i) {
+      front_end_.AddSample({t[i], tags[i], anchors[i], d[i], p[i]});
+      SolveUnlessDeferred();
+    }
   }
   void AddPoses(const Doubles& t_s, const Ints& tag_id, const Doubles& p_world_tag) {
     const std::span<const Eigen::Vector3d> p = Points(p_world_tag, "p_world_tag");
@@ -90,7 +102,10 @@ class PyFrontEnd {
     const std::span<const double> t = Values(t_s, "t_s", n);
     const std::span<const int> tags = IntValues(tag_id, "tag_id", n);
     py::gil_scoped_release release;
-    for (std::size_t i = 0; i < p.size(); ++i) front_end_.AddPose(t[i], tags[i], p[i]);
+    for (std::size_t i = 0; i < p.size(); ++i) {
+      front_end_.AddPose(t[i], tags[i], p[i]);
+      SolveUnlessDeferred();
+    }
   }
   void AddRanges(const Doubles& t_s, const Ints& tag_id, const Ints& anchor_id, const Doubles& range_m) {
     const std::span<const double> t = Values(t_s, "t_s");
@@ -98,25 +113,39 @@ class PyFrontEnd {
     const std::span<const double> d = Values(range_m, "range_m", n);
     const std::span<const int> tags = IntValues(tag_id, "tag_id", n), anchors = IntValues(anchor_id, "anchor_id", n);
     py::gil_scoped_release release;
-    for (std::size_t i = 0; i < t.size(); ++i) front_end_.AddRange(t[i], tags[i], anchors[i], d[i]);
+    for (std::size_t i = 0; i < t.size(); ++i) {
+      front_end_.AddRange(t[i], tags[i], anchors[i], d[i]);
+      SolveUnlessDeferred();
+    }
   }
-  std::size_t RunPendingSolves() {
+  std::size_t RunPendingSolves(std::size_t max_count, double budget_s) {
     py::gil_scoped_release release;
-    return front_end_.RunPendingSolves();
+    const auto deadline = budget_s > 0.0 && std::isfinite(budget_s)
+                              ? estimator::LiveFrontEnd::Clock::now() +
+                                    std::chrono::duration_cast<estimator::LiveFrontEnd::Clock::duration>(
+                                        std::chrono::duration<double>(budget_s))
+                              : estimator::LiveFrontEnd::Clock::time_point::max();
+    return front_end_.RunPendingSolves(max_count, deadline);
   }
   void Finish(double t_end_s) {
     py::gil_scoped_release release;
     front_end_.Finish(t_end_s);
   }
+  // Every call into the front end releases the GIL first: a Python part runs under its lock and
+  // takes the GIL, so holding the GIL while waiting for the lock could deadlock.
+  std::vector<estimator::FrontEndEvent> Take() {
+    py::gil_scoped_release release;
+    return front_end_.TakeEvents();
+  }
   std::vector<Event> TakeEvents() {
     std::vector<Event> events;
-    for (const estimator::FrontEndEvent& e : front_end_.TakeEvents()) {
+    for (const estimator::FrontEndEvent& e : Take()) {
       events.push_back({e.anchor_id, estimator_.triggers.at(e.chain), e.init});
     }
     return events;
   }
   py::array TakeEventsArray() {
-    const std::vector<estimator::FrontEndEvent> events = front_end_.TakeEvents();
+    const std::vector<estimator::FrontEndEvent> events = Take();
     py::array_t<EventRecord> out(static_cast<py::ssize_t>(events.size()));
     EventRecord* records = out.mutable_data();
     for (std::size_t i = 0; i < events.size(); ++i) {
@@ -139,7 +168,10 @@ class PyFrontEnd {
   }
   const std::vector<std::string>& triggers() const { return estimator_.triggers; }
   py::dict Counters() const {
-    const estimator::FrontEndCounters& c = front_end_.counters();
+    const estimator::FrontEndCounters c = [this] {
+      py::gil_scoped_release release;
+      return front_end_.counters();
+    }();
     py::dict out;
     out["samples"] = c.samples;
     out["ranges_outside_poses"] = c.ranges_outside_poses;
@@ -150,15 +182,14 @@ class PyFrontEnd {
   }
 
  private:
-  static estimator::FrontEndOptions Options(bool defer_solves) {
-    estimator::FrontEndOptions options;
-    options.defer_solves = defer_solves;
-    return options;
+  void SolveUnlessDeferred() {
+    if (!defer_solves_) front_end_.RunPendingSolves();
   }
 
   schema::EstimatorConfig estimator_;
   std::uint64_t seed_;
-  estimator::FrontEnd front_end_;
+  bool defer_solves_;
+  estimator::LiveFrontEnd front_end_;
 };
 
 void BindSolveResult(py::module_& m) {
@@ -205,7 +236,9 @@ void BindFrontEnd(py::module_& m) {
       .def("add_poses", &PyFrontEnd::AddPoses, py::arg("t_s"), py::arg("tag_id"), py::arg("p_world_tag"))
       .def("add_ranges", &PyFrontEnd::AddRanges, py::arg("t_s"), py::arg("tag_id"), py::arg("anchor_id"),
            py::arg("range_m"))
-      .def("run_pending_solves", &PyFrontEnd::RunPendingSolves)
+      .def("run_pending_solves", &PyFrontEnd::RunPendingSolves,
+           py::arg("max_count") = std::numeric_limits<std::size_t>::max(), py::arg("budget_s") = 0.0,
+           "runs due solves (with defer_solves), at most max_count, none started after budget_s seconds (0: no limit)")
       .def("finish", &PyFrontEnd::Finish, py::arg("t_end_s"))
       .def("take_events", &PyFrontEnd::TakeEvents)
       .def("take_events_array", &PyFrontEnd::TakeEventsArray,

@@ -1,5 +1,6 @@
 #pragma once
 
+#include <chrono>
 #include <cstddef>
 #include <deque>
 #include <functional>
@@ -66,8 +67,8 @@ struct FrontEndCounters {
 // Threading: not thread-safe; one thread makes every call. With defer_solves, AddPose/AddRange/
 // AddSample never solve (every trigger's O(N) evaluation waits too: InitTrigger::Evaluate), and
 // RunPendingSolves() runs them where the caller likes, e.g. in an idle step of the same thread.
-// A stack that wants the solves on a worker thread owns AnchorInitializers directly, whose
-// pending solve can run on another thread while Feed() goes on (anchor_initializer.hpp).
+// LiveFrontEnd (live_front_end.hpp) is the thread-safe wrapper: any thread adds, and solves run
+// outside its lock through TakePendingSolve / WorkPendingSolve / CompletePendingSolve.
 //
 // Memory: at most max_anchors anchors, each with its chains' bounded buffers (~5.2 MB per chain
 // at most, at the default caps: AnchorInitializer), max_waiting_ranges waiting ranges (24 bytes each) and
@@ -89,8 +90,32 @@ class FrontEnd {
   void AddRange(double t_s, int tag_id, int anchor_id, double range_m);
   void AddSample(const RangeSample& sample);  // the tag position already known (e.g. simulation)
 
+  using Clock = std::chrono::steady_clock;
   bool HasPendingSolves() const { return !pending_.empty(); }
-  std::size_t RunPendingSolves();  // returns the number of solves run
+  std::size_t pending_solves() const { return pending_.size(); }
+  // Runs pending solves in the order they became due, at most `max_count`, and none started after
+  // `deadline` (a solve is not interrupted: its own budget, NlsOptions::max_passes, bounds it).
+  // Returns the number run.
+  std::size_t RunPendingSolves(std::size_t max_count = std::numeric_limits<std::size_t>::max(),
+                               Clock::time_point deadline = Clock::time_point::max());
+
+  // A pending solve in three steps, for a caller that runs the work outside its own lock: Take
+  // (O(1), removes it from the queue), Work (the O(N) evaluation and solve; on any thread, while
+  // this front end goes on taking samples, since the chain queues them: anchor_initializer.hpp),
+  // then Complete (emits the event; the chain's catch-up may leave it pending again). The chain's
+  // address is stable for the front end's life, until ResetAnchor.
+  struct PendingSolve {
+    int anchor_id = 0;
+    std::size_t chain = 0;
+    AnchorInitializer* initializer = nullptr;
+  };
+  std::optional<PendingSolve> TakePendingSolve();
+  static PendingWork WorkPendingSolve(const PendingSolve& solve) { return solve.initializer->WorkPendingSolve(); }
+  void CompletePendingSolve(const PendingSolve& solve, const PendingWork& work);
+
+  // Starts an anchor over: its chains made anew by the factory (its data, estimates and pending
+  // solves gone), as if its first range came next. False if the anchor is unknown.
+  bool ResetAnchor(int anchor_id);
   std::vector<FrontEndEvent> TakeEvents();
 
   // End of data at t_end_s: ranges still waiting are dropped (never extrapolated), pending solves
@@ -111,6 +136,7 @@ class FrontEnd {
     int anchor_id;
     double range_m;
   };
+  std::vector<AnchorInitializer> MakeChains(int anchor_id);
   std::vector<AnchorInitializer>& Anchor(int anchor_id);
   void Feed(const RangeSample& sample);
   void ReleaseWaiting();
