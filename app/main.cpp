@@ -11,6 +11,7 @@
 #include "anchorbench/io/format.hpp"
 #include "anchorbench/schema/input_error.hpp"
 #include "commands.hpp"
+#include "interrupt.hpp"
 #ifdef ANCHORBENCH_MPI
 #include "mpi_job.hpp"
 #endif
@@ -252,7 +253,11 @@ int RunCommandLine(int argc, char** argv, const anchorbench::registry::Component
     return UsageError(cli, e);
   }
   try {
-    return Dispatch(command_line, {components, app::BuildRevision(), executor});
+    return Dispatch(command_line, {components, app::BuildRevision(), executor, &app::InterruptFlag()});
+  } catch (const anchorbench::engine::Interrupted&) {
+    std::cerr << "anchorbench: interrupted: no result folder written (finished chunks, where the command keeps "
+                 "them, wait in <out>.chunks for --resume)\n";
+    return 130;
   } catch (const anchorbench::schema::InputError& e) {
     std::cerr << "anchorbench: error: " << e.what() << '\n';
     return 2;
@@ -263,13 +268,14 @@ int RunCommandLine(int argc, char** argv, const anchorbench::registry::Component
 }
 
 int main(int argc, char** argv) {
+  app::InstallInterruptHandlers();
   const anchorbench::registry::Components components = anchorbench::eval::MakeComponentsWithOracles();
 #ifdef ANCHORBENCH_MPI
   app::MpiJob job(argc, argv, components);  // anchorbench-mpi: rank 0 runs the command, the others compute chunks
   if (job.worker()) return job.Serve();
   return job.Finish(RunCommandLine(argc, argv, components, job.executor()));
 #else
-  anchorbench::engine::LocalExecutor executor(components);
+  anchorbench::engine::LocalExecutor executor(components, &app::InterruptFlag());
   return RunCommandLine(argc, argv, components, executor);
 #endif
 }

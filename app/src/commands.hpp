@@ -11,6 +11,7 @@
 #include "anchorbench/io/log_policy.hpp"
 #include "anchorbench/registry/components.hpp"
 #include "anchorbench/engine/executor.hpp"
+#include "anchorbench/engine/run_control.hpp"
 
 namespace anchorbench::app {
 
@@ -20,6 +21,7 @@ struct AppContext {
   const registry::Components& components;
   std::string revision;
   engine::Executor& executor;
+  const engine::StopFlag* stop = nullptr;  // set by Ctrl-C (interrupt.hpp): the engine stops before its next unit
 };
 
 struct SimulateArgs {

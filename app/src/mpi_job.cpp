@@ -9,6 +9,8 @@
 #include <stdexcept>
 #include <thread>
 
+#include "interrupt.hpp"
+
 #include "anchorbench/schema/input_error.hpp"
 
 namespace anchorbench::app {
@@ -80,6 +82,7 @@ void MpiExecutor::Compute(const engine::Plan& plan, const std::vector<int>& chun
   while (received < chunks.size() || told_no_more < asking) {
     MPI_Status status;
     const std::string text = Receive(MPI_ANY_SOURCE, MPI_ANY_TAG, status);
+    engine::ThrowIfStopped(stop_);  // busy_ stays set: Finish aborts the workers mid-plan
     const std::string rank = "rank " + std::to_string(status.MPI_SOURCE);
     if (status.MPI_TAG == kError) {
       if (text.rfind("2", 0) == 0) throw schema::InputError(rank + ": " + text.substr(1));
@@ -118,7 +121,7 @@ int MpiJob::Init(int& argc, char**& argv, int& rank) {
 }
 
 MpiJob::MpiJob(int& argc, char**& argv, const registry::Components& components)
-    : components_(components), ranks_(Init(argc, argv, rank_)), executor_(components, ranks_) {}
+    : components_(components), ranks_(Init(argc, argv, rank_)), executor_(components, ranks_, &InterruptFlag()) {}
 
 // One worker thread: asks for a chunk, computes it, sends it (asking for the next), until rank 0
 // says no more. Errors go to rank 0, which ends the job.
@@ -135,7 +138,7 @@ void ServeThread(const engine::Plan* plan, const std::string& plan_error, int th
     const int chunk = std::stoi(chunk_text);
     try {
       if (!plan) throw schema::InputError(plan_error);
-      const engine::ChunkResult result = engine::ComputeChunk(*plan, chunk, components, samples);
+      const engine::ChunkResult result = engine::ComputeChunk(*plan, chunk, components, samples, &InterruptFlag());
       request = Pack({std::to_string(thread), chunk_text, engine::ChunkText(*plan, chunk, result),
                       engine::ChunkRecords(*plan, chunk, result)});
       tag = kResult;

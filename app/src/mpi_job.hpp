@@ -18,7 +18,8 @@ namespace anchorbench::app {
 // With no worker (-n 1) it computes on its own threads.
 class MpiExecutor final : public engine::Executor {
  public:
-  MpiExecutor(const registry::Components& components, int ranks) : local_(components), ranks_(ranks) {}
+  MpiExecutor(const registry::Components& components, int ranks, const engine::StopFlag* stop)
+      : local_(components, stop), ranks_(ranks), stop_(stop) {}
   void Compute(const engine::Plan& plan, const std::vector<int>& chunks, int threads, const engine::ChunkDone& done) override;
   // Whether workers hold chunks of a Compute that did not end (an error mid-plan).
   bool busy() const { return busy_; }
@@ -26,6 +27,7 @@ class MpiExecutor final : public engine::Executor {
  private:
   engine::LocalExecutor local_;
   int ranks_;
+  const engine::StopFlag* stop_;  // checked by rank 0 at every message: a signal ends the job there
   std::string plan_sent_;  // the plan the workers hold
   bool busy_ = false;
 };

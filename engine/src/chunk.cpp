@@ -24,12 +24,13 @@ std::size_t AttemptsPerUnit(const schema::RowConfig& row) {
 }  // namespace
 
 ChunkResult ComputeChunk(const Plan& plan, int chunk, const registry::Components& components,
-                         std::vector<estimator::RangeSample>& samples) {
+                         std::vector<estimator::RangeSample>& samples, const StopFlag* stop) {
   const ChunkSpan& span = plan.chunks()[static_cast<std::size_t>(chunk)];
   const schema::ExperimentConfig& config = plan.experiments()[static_cast<std::size_t>(span.experiment)];
   const std::vector<schema::RowConfig>& rows = plan.rows(span.experiment);
   ChunkResult result;
   for (int unit = span.first_unit; unit < span.end_unit; ++unit) {
+    ThrowIfStopped(stop);
     const int row = unit / config.realizations;
     for (schema::Attempt& attempt : engine::RunRealization(rows[static_cast<std::size_t>(row)], row, config.seed,
                                                            unit % config.realizations, components, samples)) {

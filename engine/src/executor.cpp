@@ -8,7 +8,7 @@
 
 namespace anchorbench::engine {
 
-void ParallelFor(int count, int threads, const std::function<void(int, int)>& work) {
+void ParallelFor(int count, int threads, const std::function<void(int, int)>& work, const StopFlag* stop) {
   std::exception_ptr first_error;
   int first_error_at = count;
   std::mutex error_mutex;
@@ -17,6 +17,7 @@ void ParallelFor(int count, int threads, const std::function<void(int, int)>& wo
   for (int i = 0; i < count; ++i) {
     if (failed.load(std::memory_order_relaxed)) continue;  // an error ends the loop: no new item starts
     try {  // an exception must not leave the parallel region (std::terminate)
+      ThrowIfStopped(stop);
       work(i, omp_get_thread_num());
     } catch (...) {
       failed.store(true, std::memory_order_relaxed);
@@ -36,11 +37,11 @@ void LocalExecutor::Compute(const Plan& plan, const std::vector<int>& chunks, in
   std::mutex done_mutex;  // `done` sees one chunk at a time
   ParallelFor(static_cast<int>(chunks.size()), threads, [&](int i, int thread) {
     const int chunk = chunks[static_cast<std::size_t>(i)];
-    ChunkResult result = ComputeChunk(plan, chunk, components_, samples[static_cast<std::size_t>(thread)]);
+    ChunkResult result = ComputeChunk(plan, chunk, components_, samples[static_cast<std::size_t>(thread)], stop_);
     const std::string text = ChunkText(plan, chunk, result);
     const std::lock_guard<std::mutex> lock(done_mutex);
     done(chunk, std::move(result), text);
-  });
+  }, stop_);
 }
 
 }  // namespace anchorbench::engine

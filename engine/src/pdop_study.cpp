@@ -185,13 +185,14 @@ schema::PdopStudy StudyRealization(const schema::ExperimentConfig& config, const
 
 }  // namespace
 
-schema::PdopStudy RunPdopStudy(const schema::ExperimentConfig& config, const registry::Components& components, int every, int threads) {
+schema::PdopStudy RunPdopStudy(const schema::ExperimentConfig& config, const registry::Components& components, int every, int threads,
+                               const StopFlag* stop) {
   std::string why;
   if (!components.filters.Knows(config.estimator.filter.kind, &why)) throw schema::InputError(why);
   std::vector<schema::PdopStudy> per_realization(static_cast<std::size_t>(config.realizations));
   ParallelFor(config.realizations, threads, [&](int r, int) {
     per_realization[static_cast<std::size_t>(r)] = StudyRealization(config, components, r, every);
-  });
+  }, stop);
   schema::PdopStudy study;
   for (schema::PdopStudy& r : per_realization) {
     study.checkpoints.insert(study.checkpoints.end(), r.checkpoints.begin(), r.checkpoints.end());

@@ -46,8 +46,9 @@ std::map<int, ChunkResult> RunPlan(const Plan& plan, Executor& executor, const R
   return chunks;
 }
 
-std::vector<ExperimentAttempts> RunWholePlan(const Plan& plan, Executor& executor, int threads) {
-  std::map<int, ChunkResult> chunks = RunPlan(plan, executor, {threads, nullptr, nullptr, {}});
+std::vector<ExperimentAttempts> RunWholePlan(const Plan& plan, Executor& executor, int threads,
+                                             const std::function<void(long long, long long)>& progress) {
+  std::map<int, ChunkResult> chunks = RunPlan(plan, executor, {threads, nullptr, progress, {}});
   return Join(plan, chunks);
 }
 

@@ -10,6 +10,7 @@
 #include "anchorbench/registry/components.hpp"
 #include "anchorbench/engine/attempt.hpp"
 #include "anchorbench/engine/plan.hpp"
+#include "anchorbench/engine/run_control.hpp"
 #include "anchorbench/engine/shard.hpp"
 
 namespace anchorbench::engine {
@@ -23,9 +24,9 @@ struct ChunkResult {
 };
 
 // Computes chunk `chunk` of `plan` on the calling thread (engine::RunRealization per unit);
-// `samples` is the caller's scratch.
+// `samples` is the caller's scratch. With `stop` set, the next unit throws Interrupted.
 ChunkResult ComputeChunk(const Plan& plan, int chunk, const registry::Components& components,
-                         std::vector<estimator::RangeSample>& samples);
+                         std::vector<estimator::RangeSample>& samples, const StopFlag* stop = nullptr);
 
 // The chunk's text: an identity line, then attempts.csv's header and lines, each with compute_s as
 // its last column. The identity line names the chunk, its plan and a checksum of the lines below:

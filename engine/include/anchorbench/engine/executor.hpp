@@ -10,6 +10,7 @@
 #include "anchorbench/registry/components.hpp"
 #include "anchorbench/engine/chunk.hpp"
 #include "anchorbench/engine/plan.hpp"
+#include "anchorbench/engine/run_control.hpp"
 
 namespace anchorbench::engine {
 
@@ -30,17 +31,22 @@ class Executor {
 // work(item, thread) for every item in [0, count) on `threads` OpenMP threads, one item per
 // thread at a time, dynamically scheduled; `thread` in [0, threads) indexes per-thread scratch.
 // An exception stops new items from starting, and the first one in item order (whatever the
-// timing) is rethrown once the threads are done. The one parallel loop of the engine.
-void ParallelFor(int count, int threads, const std::function<void(int item, int thread)>& work);
+// timing) is rethrown once the threads are done. With `stop` set, no new item starts either, and
+// the loop ends in Interrupted. The one parallel loop of the engine.
+void ParallelFor(int count, int threads, const std::function<void(int item, int thread)>& work,
+                 const StopFlag* stop = nullptr);
 
-// This process's threads (OpenMP), one chunk per thread at a time, dynamically scheduled.
+// This process's threads (OpenMP), one chunk per thread at a time, dynamically scheduled; with
+// `stop`, checked before every unit (run_control.hpp).
 class LocalExecutor final : public Executor {
  public:
-  explicit LocalExecutor(const registry::Components& components) : components_(components) {}
+  explicit LocalExecutor(const registry::Components& components, const StopFlag* stop = nullptr)
+      : components_(components), stop_(stop) {}
   void Compute(const Plan& plan, const std::vector<int>& chunks, int threads, const ChunkDone& done) override;
 
  private:
   const registry::Components& components_;
+  const StopFlag* stop_;
 };
 
 }  // namespace anchorbench::engine

@@ -5,6 +5,7 @@
 #include <string>
 #include <vector>
 
+#include "anchorbench/engine/run_control.hpp"
 #include "anchorbench/registry/components.hpp"
 #include "anchorbench/schema/experiment.hpp"
 #include "anchorbench/schema/pdop_study.hpp"
@@ -17,6 +18,7 @@ namespace anchorbench::engine {
 // estimator with the certified trigger, runs beside it. Both chains are built by
 // registry::MakeInitializer (the probe through a TriggerMaker), parallel over realizations by
 // ParallelFor, identical for any thread count.
-schema::PdopStudy RunPdopStudy(const schema::ExperimentConfig& config, const registry::Components& components, int every, int threads);
+schema::PdopStudy RunPdopStudy(const schema::ExperimentConfig& config, const registry::Components& components, int every, int threads,
+                               const StopFlag* stop = nullptr);
 
 }  // namespace anchorbench::engine

@@ -33,6 +33,7 @@ std::map<int, ChunkResult> RunPlan(const Plan& plan, Executor& executor, const R
 std::vector<ExperimentAttempts> Join(const Plan& plan, std::map<int, ChunkResult>& chunks);
 
 // The whole plan in memory, joined: RunPlan without a store or a shard, then Join.
-std::vector<ExperimentAttempts> RunWholePlan(const Plan& plan, Executor& executor, int threads);
+std::vector<ExperimentAttempts> RunWholePlan(const Plan& plan, Executor& executor, int threads,
+                                             const std::function<void(long long, long long)>& progress = nullptr);
 
 }  // namespace anchorbench::engine
