@@ -16,7 +16,8 @@ packages=(
   openmpi-bin libopenmpi-dev     # anchorbench-mpi (docs/cluster.md)
   slurm-wlm munge                # scripts/slurm/, tested against a single-node Slurm
   pybind11-dev python3-dev python3-pandas python3-yaml python3-pytest  # the Python module (docs/python.md)
-  python3-rosbag python3-geometry-msgs python3-sensor-msgs python3-nav-msgs python3-std-msgs  # anchorbench-bag
+  python3-tqdm python3-hypothesis  # progress bars; property tests of the module and the bag tool
+  python3-rosbag python3-genpy python3-geometry-msgs python3-sensor-msgs python3-nav-msgs python3-std-msgs python3-tf2-msgs  # anchorbench-bag
 )
 
 missing=()

@@ -60,12 +60,18 @@ std::vector<fs::path> Inputs(const CalibrateArgs& args, const schema::Calibratio
   return inputs;
 }
 
-void CheckReuse(const std::string& reuse) {
+// The reused log is read, never appended to or removed: it may not be this calibration's own
+// running log (which is appended to, then removed at the end, and resumed from without --reuse).
+void CheckReuse(const std::string& reuse, const fs::path& running_log) {
   if (reuse.empty()) return;
   std::error_code error;
   if (!fs::exists(reuse, error)) throw InputError("--reuse " + reuse + ": no such file");
   if (fs::is_directory(reuse, error)) throw InputError("--reuse " + reuse + ": is a folder, not an evaluation log");
   if (!fs::is_regular_file(reuse, error)) throw InputError("--reuse " + reuse + ": is not a regular file");
+  if (fs::equivalent(reuse, running_log, error)) {
+    throw InputError("--reuse " + reuse + ": is the running log of this --out, which a rerun without --reuse resumes "
+                     "from; copy it elsewhere to reuse it");
+  }
 }
 
 }  // namespace
@@ -83,7 +89,8 @@ int CalibrateCommand(const CalibrateArgs& args, const AppContext& app) {
     throw InputError(spec.experiment_path + ": no row carries the paper's values (`paper:`) and runs both " +
                      schema::kFixedWindowTrigger + " and " + schema::kPaperTrigger + ": nothing to calibrate to");
   }
-  CheckReuse(args.reuse);
+  const fs::path running_log = setup.out.string() + ".evaluations.csv";  // beside the folder: resumable
+  CheckReuse(args.reuse, running_log);
   const std::vector<fs::path> inputs = Inputs(args, spec);
   io::ResultFolder::Options options;
   options.overwrite = args.overwrite;
@@ -95,7 +102,6 @@ int CalibrateCommand(const CalibrateArgs& args, const AppContext& app) {
                             args.overwrite, inputs, kCalibratedConfigBytes);
   std::vector<std::string> row_names;
   for (const schema::RowConfig& row : rows) row_names.push_back(row.name);
-  const fs::path running_log = setup.out.string() + ".evaluations.csv";  // beside the folder: resumable
   std::error_code error;
   if (fs::exists(running_log, error) && !fs::is_regular_file(running_log, error)) {
     throw InputError(running_log.string() + ": is a folder (or not a regular file), not the evaluation log of a " +

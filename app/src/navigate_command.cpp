@@ -21,7 +21,7 @@ int NavigateCommand(const MonteCarloArgs& args, const AppContext& app) {
 
   Progress progress("navigate " + config.name, args.quiet);
   const std::vector<engine::NavigationRecord> records =
-      engine::RunNavigation(config, app.components, setup.threads, shard.value_or(engine::Shard{}));
+      engine::RunNavigation(config, app.components, setup.threads, shard.value_or(engine::Shard{}), {nullptr, app.stop});
   const int units = static_cast<int>(records.size() / (config.estimator.triggers.size() + 2));
   const double wall_time_s = progress.elapsed_s();
   progress.Finish(units);

@@ -2,6 +2,7 @@
 #include <iostream>
 #include <memory>
 
+#include "anchorbench/config/config_yaml.hpp"
 #include "anchorbench/config/load_config.hpp"
 #include "anchorbench/io/atomic_file.hpp"
 #include "anchorbench/schema/input_error.hpp"
@@ -22,8 +23,9 @@ constexpr double kBytesPerMb = 1e6;  // progress counts bytes read, shows megaby
 std::vector<std::filesystem::path> Inputs(const ReplayArgs& args) {
   std::vector<std::filesystem::path> inputs = {args.poses};
   for (const std::string& ranges : args.ranges) inputs.emplace_back(ranges);
-  for (const std::string& optional : {args.anchors, args.config}) {
-    if (!optional.empty()) inputs.emplace_back(optional);
+  if (!args.anchors.empty()) inputs.emplace_back(args.anchors);
+  if (!args.config.empty()) {
+    for (const std::string& file : config::ConfigFiles(args.config)) inputs.emplace_back(file);  // and its bases
   }
   return inputs;
 }
@@ -52,6 +54,10 @@ int ReplayCommand(const ReplayArgs& args, const AppContext& app) {
   const engine::ReplayLog replay({args.poses, args.ranges}, PolicyOf(args), std::move(truth), config, app.components,
                                  [&](std::uint64_t done, std::uint64_t total) { checking.Update(done, total); });
   if (!args.quiet && checking.elapsed_s() > 1.0) checking.Finish(static_cast<long long>(replay.survey().bytes));
+  if (args.navigate) {
+    engine::CheckErrorBins(replay.survey().t_last_pose_s - replay.survey().t_first_pose_s, *config.navigation,
+                           args.poses);
+  }
 
   // The outputs, before any work: never an input, never earlier results without --overwrite.
   std::unique_ptr<io::ResultFolder> out;
@@ -83,6 +89,7 @@ int ReplayCommand(const ReplayArgs& args, const AppContext& app) {
   // The second pass, streamed: one row at a time from the files into the front end.
   Progress progress("replay", args.quiet, "MB", kBytesPerMb);
   const engine::ReplayOutcome outcome = replay.Run(trace, [&](std::uint64_t done, std::uint64_t total) {
+    engine::ThrowIfStopped(app.stop);  // every 65,536 rows
     progress.Update(static_cast<long long>(done), static_cast<long long>(total));
   });
   if (progress.elapsed_s() > 1.0) progress.Finish(static_cast<long long>(replay.survey().bytes));

@@ -28,7 +28,7 @@ expect_error() {
 printf 'seed: 1\nscenario:\n  ranging:\n    sigma_range_m: -1\n' >"$dir/neg.yaml"
 printf 'seed: 1\nbogus: 2\n' >"$dir/unknown.yaml"
 printf 'seed: 1\nscenario:\n  tunnel:\n    length_m: 60\n    num_anchors: 4\n' >"$dir/ok.yaml"
-expect_error "negative sigma" "key 'scenario.ranging.sigma_range_m': must be >= 0" "$bin" simulate "$dir/neg.yaml" --out "$dir/sim"
+expect_error "negative sigma" "key 'scenario.ranging.sigma_range_m': must be in [0, 100]" "$bin" simulate "$dir/neg.yaml" --out "$dir/sim"
 expect_error "unknown key" "key 'bogus': unknown key" "$bin" simulate "$dir/unknown.yaml" --out "$dir/sim"
 expect_error "missing config" "cannot open the config file" "$bin" simulate "$dir/none.yaml" --out "$dir/sim"
 [ -e "$dir/sim" ] && { echo "FAIL: output folder created on bad input"; failures=$((failures + 1)); }
@@ -88,7 +88,7 @@ grep -q "realizations in" <<<"$summary_line" || { echo "FAIL: no summary line wh
 # sweep: every grid point is validated before any trial; results do not depend on threads.
 expect_error "sweep unknown key" "key 'estimator.trigger.pdop_treshold': unknown key" \
   "$bin" sweep "$dir/small.yaml" --set estimator.trigger.pdop_treshold=0.5,1 --out "$dir/sw0"
-expect_error "sweep bad value" "key 'estimator.trigger.pdop_threshold': must be > 0" \
+expect_error "sweep bad value" "key 'estimator.trigger.pdop_threshold': must be in (0, 1e6]" \
   "$bin" sweep "$dir/small.yaml" --set estimator.trigger.pdop_threshold=1,0 --out "$dir/sw0"
 expect_error "sweep bad range" "a range is START:STOP:STEP" \
   "$bin" sweep "$dir/small.yaml" --set estimator.trigger.pdop_threshold=1:2 --out "$dir/sw0"

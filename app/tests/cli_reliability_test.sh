@@ -66,11 +66,11 @@ expect_exit 2 "threads_beyond_what_the_machine_can_run" "--threads 100000: at mo
 expect_exit 2 "omp_num_threads_beyond_what_the_machine_can_run" "OMP_NUM_THREADS=100000" \
   env OMP_NUM_THREADS=100000 "$bin" run "$dir/small.yaml" --out "$dir/x"
 expect_exit 2 "a_tunnel_longer_than_the_work_limit" "the limits are 1e7 and 2e7" \
-  "$bin" run "$dir/small.yaml" --set scenario.tunnel.length_m=1e300 --out "$dir/x"
+  "$bin" run "$dir/small.yaml" --set scenario.tunnel.length_m=1e5 --set scenario.trajectory.speed_mps=0.01 --out "$dir/x"
 expect_exit 2 "a_crawling_speed" "the limits are 1e7 and 2e7" \
   "$bin" run "$dir/small.yaml" --set scenario.trajectory.speed_mps=1e-300 --out "$dir/x"
-expect_exit 2 "a_hall_run_of_thirty_thousand_years" "the limits are 1e7 and 2e7" \
-  "$bin" run "$dir/small.yaml" --set scenario.environment=hall --set scenario.trajectory.hall_duration_s=1e12 --out "$dir/x"
+expect_exit 2 "a_hall_run_of_eleven_days_at_10_hz" "the limits are 1e7 and 2e7" \
+  "$bin" run "$dir/small.yaml" --set scenario.environment=hall --set scenario.trajectory.hall_duration_s=1e6 --out "$dir/x"
 expect_exit 2 "realizations_times_rows_beyond_memory" "attempts (rows x realizations x anchors x triggers)" \
   "$bin" run "$dir/small.yaml" --realizations 100000000 --out "$dir/x"
 expect_exit 2 "a_sweep_grid_of_a_hundred_million_points" "grid points; at most 10000" \

@@ -85,8 +85,38 @@ sed -i '2d' "$dir/n4-1/navigation_records.csv"
 expect_refusal "a navigation shard with a record taken out" "do not hold each of its methods once" \
   "$dir/n4-0" "$dir/n4-1" "$dir/n4-2" "$dir/n4-3"
 "$bin" navigate "$dir/navigated.yaml" --shard 1/4 --out "$dir/n4-1" --quiet --overwrite || fail "navigate shard 1/4"
-sed -i '2s/^0,2,/0,1,/' "$dir/n4-2/navigation_records.csv"  # shard 2/4 holds row 0's realization 2 alone
-expect_refusal "a navigation record moved to another shard's unit" "is not a unit of this shard" \
+# Every edit of a record is refused by its checksum (issue 33's tampered shards), whichever field.
+cp -r "$dir/n4-2" "$dir/n4-2.kept"
+nav_tamper() {  # NAME AWK_PROGRAM: one way of editing shard 2/4's records
+  rm -rf "$dir/n4-2" && cp -r "$dir/n4-2.kept" "$dir/n4-2"
+  awk -F, -v OFS=, "$2" "$dir/n4-2.kept/navigation_records.csv" >"$dir/n4-2/navigation_records.csv"
+  cmp -s "$dir/n4-2.kept/navigation_records.csv" "$dir/n4-2/navigation_records.csv" && fail "tamper $1 changed nothing"
+  expect_refusal "a navigation record with $1" "does not match its checksum" "$dir/n4-0" "$dir/n4-1" "$dir/n4-2" "$dir/n4-3"
+}
+nav_tamper "a negated rmse" 'NR == 2 { $4 = -$4 } { print }'
+nav_tamper "an rmse of 1e300" 'NR == 2 { $4 = "1e300" } { print }'
+nav_tamper "a fix share of 2" 'NR == 2 { $8 = 2 } { print }'
+nav_tamper "dropped bins" 'NR == 2 { sub(/;[^;]*$/, "", $11) } { print }'
+nav_tamper "its unit moved" 'NR == 2 { $2 = 1 } { print }'
+nav_tamper "two lines' units swapped" 'NR == 2 { a = $0; getline; b = $0; split(a, x, ","); split(b, y, ","); sub(/^[^,]*,[^,]*,[^,]*/, y[1] "," y[2] "," y[3], a); sub(/^[^,]*,[^,]*,[^,]*/, x[1] "," x[2] "," x[3], b); print b; print a; next } { print }'
+nav_tamper "a line of another run" 'NR == 2 { $NF = "0123456789abcdef" } { print }'
+# A value no run writes is refused even with a checksum made to fit it.
+rm -rf "$dir/n4-2" && cp -r "$dir/n4-2.kept" "$dir/n4-2"
+plan=$(tail -1 "$dir/n4-2/shard.csv" | cut -d, -f6)
+/usr/bin/python3 - "$dir/n4-2/navigation_records.csv" "$plan" <<'PY'
+import sys
+path, plan = sys.argv[1], sys.argv[2]
+lines = open(path).read().splitlines()
+fields = lines[1].split(",")[:-1]
+fields[7] = "2"  # a fix share of 2
+text = ",".join(fields)
+h = 0xcbf29ce484222325
+for b in (plan + "\n" + text).encode():
+    h = ((h ^ b) * 0x100000001b3) % (1 << 64)
+lines[1] = text + ",%016x" % h
+open(path, "w").write("\n".join(lines) + "\n")
+PY
+expect_refusal "a fix share of 2 with a checksum made to fit" "a fix share outside [0, 1]" \
   "$dir/n4-0" "$dir/n4-1" "$dir/n4-2" "$dir/n4-3"
 
 [ "$failures" -eq 0 ] || { echo "$failures failure(s)"; exit 1; }

@@ -67,6 +67,14 @@ schema::ExperimentConfig FromYaml(const YAML::Node& root, const std::string& pat
   YamlSection top(root, "", path);
   visit::Experiment(top, config, components);
   top.Finish();
+  for (std::size_t i = 0; i < config.rows.size(); ++i) {
+    for (std::size_t j = 0; j < i; ++j) {
+      if (config.rows[i].name == config.rows[j].name) {
+        top.Fail("rows", "rows " + std::to_string(j) + " and " + std::to_string(i) + " are both named '" +
+                             config.rows[i].name + "': each row's name must be its own (it keys the result tables)");
+      }
+    }
+  }
   for (const std::string& name : config.only_rows) {
     const bool known =
         std::any_of(config.rows.begin(), config.rows.end(), [&](const schema::RowConfig& r) { return r.name == name; });

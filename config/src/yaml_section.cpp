@@ -4,8 +4,8 @@
 #include <cmath>
 #include <sstream>
 
-#include "anchorbench/io/format.hpp"
 #include "anchorbench/schema/input_error.hpp"
+#include "anchorbench/schema/names.hpp"
 
 namespace anchorbench::config {
 
@@ -121,14 +121,7 @@ void YamlSection::Text(std::string_view key, std::string& value) {
 void YamlSection::Label(std::string_view key, std::string& value) {
   if (!Has(key)) return;
   Text(key, value);
-  for (const char c : value) {
-    const auto byte = static_cast<unsigned char>(c);
-    if (byte < 0x20 || byte == 0x7F || c == ',' || c == '"' || c == '|') {
-      Fail(key, "'" + io::Printable(value) + "' holds '" + io::Printable(std::string_view(&c, 1)) +
-                    "': a name for CSV and Markdown tables holds no commas, quotes, '|' or control characters");
-    }
-  }
-  if (value.empty()) Fail(key, "expected a name, got an empty text");
+  if (const std::string why = schema::NameProblem(value); !why.empty()) Fail(key, why);
 }
 
 void YamlSection::TextList(std::string_view key, std::vector<std::string>& values) {

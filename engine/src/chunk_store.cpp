@@ -44,6 +44,22 @@ int CountChunkFiles(const fs::path& folder) {
   return count;
 }
 
+// Whether `folder` holds only what a store writes (its plan, chunk files and their temporaries,
+// the reservation): a store killed before its plan file was in place. Anything else under the
+// store's name is a user's, never removed.
+bool HoldsOnlyStoreFiles(const fs::path& folder) {
+  std::error_code error;
+  if (!fs::is_directory(fs::symlink_status(folder, error))) return false;
+  for (const fs::directory_entry& entry : fs::directory_iterator(folder, error)) {
+    const std::string name = entry.path().filename().string();
+    // The plan file's temporary is io::AtomicFile's <name>.tmp.<pid>.
+    const bool ours = name == kPlanFile || name == kReservation || name.rfind(std::string(kPlanFile) + ".tmp.", 0) == 0 ||
+                      (name.rfind("chunk-", 0) == 0 && (name.ends_with(".csv") || name.ends_with(".csv.partial")));
+    if (!ours || !entry.is_regular_file(error)) return false;
+  }
+  return !error;
+}
+
 }  // namespace
 
 fs::path ChunkStorePath(const fs::path& out) {
@@ -62,9 +78,15 @@ ChunkStore::ChunkStore(const fs::path& out, const Plan& plan, Mode mode, std::ui
     }
   }
   std::error_code error;
-  // Killed before its plan file was in place, a store holds nothing to keep.
-  if (fs::exists(folder_, error) && (mode == Mode::kOverwrite || !fs::exists(folder_ / kPlanFile, error))) {
-    fs::remove_all(folder_, error);
+  if (fs::exists(fs::symlink_status(folder_, error))) {
+    const bool has_plan = fs::is_directory(fs::symlink_status(folder_, error)) &&
+                          fs::is_regular_file(folder_ / kPlanFile, error);
+    if (!has_plan && !HoldsOnlyStoreFiles(folder_)) {
+      throw InputError(folder_.string() + ": is where this run keeps its finished chunks, and holds something else; "
+                                          "move it or choose another output folder");
+    }
+    // Killed before its plan file was in place, a store holds nothing to keep.
+    if (mode == Mode::kOverwrite || !has_plan) fs::remove_all(folder_, error);
   }
   const bool fresh = !fs::exists(folder_, error);
   if (fresh) {

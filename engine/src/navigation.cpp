@@ -1,8 +1,10 @@
 #include "anchorbench/engine/navigation.hpp"
 
+#include <mutex>
 #include <sstream>
 
 #include "anchorbench/engine/executor.hpp"
+#include "anchorbench/io/format.hpp"
 #include "anchorbench/report/navigation_report.hpp"
 #include "anchorbench/engine/monte_carlo.hpp"
 #include "anchorbench/schema/input_error.hpp"
@@ -94,10 +96,24 @@ void CheckNavigation(const schema::ExperimentConfig& config, const registry::Com
                                            "(docs/navigation.md)");
   }
   CheckExperiment(config, components);
+  for (const schema::RowConfig& row : schema::RowsOf(config)) {
+    const sim::ScenarioOptions& scenario = row.scenario;
+    CheckErrorBins(scenario.MaxEpochs() / scenario.trajectory.rate_hz, *config.navigation, config.name + ": row '" + row.name + "'");
+  }
+}
+
+void CheckErrorBins(double duration_s, const schema::NavigationConfig& navigation, const std::string& what) {
+  const double bins = duration_s / navigation.error_bin_s;
+  if (!(bins <= kMaxErrorBins)) {
+    throw schema::InputError(what + ": key 'navigation.error_bin_s': " + io::FormatNumber(navigation.error_bin_s) +
+                             " s bins over a run of up to " + io::FormatNumber(duration_s) + " s are " +
+                             io::FormatNumber(std::ceil(bins)) + " bins; at most 1e5: use wider bins");
+  }
 }
 
 std::vector<NavigationRecord> RunNavigation(const schema::ExperimentConfig& config,
-                                            const registry::Components& components, int threads, const Shard& shard) {
+                                            const registry::Components& components, int threads, const Shard& shard,
+                                            const RunControl& control) {
   CheckNavigation(config, components);
   const std::vector<schema::RowConfig> rows = schema::RowsOf(config);
   std::vector<int> units;  // the shard's (row, realization) units: row * realizations + realization
@@ -108,13 +124,22 @@ std::vector<NavigationRecord> RunNavigation(const schema::ExperimentConfig& conf
     const int unit = units[static_cast<std::size_t>(i)], row = unit / config.realizations;
     return NavigateRealization(rows[static_cast<std::size_t>(row)], row, config.seed, unit % config.realizations,
                                *config.navigation, components);
-  });
+  }, control);
 }
 
 std::vector<NavigationRecord> NavigateUnits(int units, int threads,
-                                            const std::function<std::vector<NavigationRecord>(int unit)>& unit) {
+                                            const std::function<std::vector<NavigationRecord>(int unit)>& unit,
+                                            const RunControl& control) {
   std::vector<std::vector<NavigationRecord>> by_unit(static_cast<std::size_t>(units));
-  ParallelFor(units, threads, [&](int u, int) { by_unit[static_cast<std::size_t>(u)] = unit(u); });
+  std::mutex progress_mutex;
+  long long done = 0;
+  if (control.progress) control.progress(0, units);
+  ParallelFor(units, threads, [&](int u, int) {
+    by_unit[static_cast<std::size_t>(u)] = unit(u);
+    if (!control.progress) return;
+    const std::lock_guard<std::mutex> lock(progress_mutex);
+    control.progress(++done, units);
+  }, control.stop);
   std::vector<NavigationRecord> records;
   for (std::vector<NavigationRecord>& records_of_unit : by_unit) {
     for (NavigationRecord& r : records_of_unit) records.push_back(std::move(r));

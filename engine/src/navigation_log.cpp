@@ -63,6 +63,7 @@ std::vector<NavigationRecord> NavigateLog(const LogTrajectory& log, const std::v
                                           const schema::ExperimentConfig& config, int threads) {
   CheckLogNavigation(config);
   const schema::NavigationConfig& navigation = *config.navigation;
+  CheckErrorBins(log.run.t_s.back() - log.run.t_s.front(), navigation, config.name);
   std::vector<MethodAnchors> methods =
       TriggerAnchors(attempts, config.estimator.triggers, navigation.height_unobservable);
   if (truth) {

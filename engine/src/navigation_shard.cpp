@@ -8,6 +8,7 @@
 
 #include "anchorbench/io/csv_reader.hpp"
 #include "anchorbench/io/format.hpp"
+#include "anchorbench/io/hash.hpp"
 #include "anchorbench/schema/input_error.hpp"
 
 namespace anchorbench::engine {
@@ -15,7 +16,25 @@ namespace {
 
 constexpr const char* kHeader =
     "row,realization,method,rmse_m,final_error_m,t_first_anchor_s,t_kth_anchor_s,fix_share,ranges_used,ranges_gated,"
-    "error_by_bin_m";
+    "error_by_bin_m,checksum";
+
+// A line's checksum binds its fields to the run (the plan's identity): an edited value, a torn
+// line or a line of another run's shard does not match.
+std::string Checksum(const std::string& plan, std::string_view fields) {
+  std::string text = plan;
+  text.append("\n").append(fields);
+  return io::Fingerprint(text);
+}
+
+// What no run writes: refused even where a checksum was made to fit.
+void CheckOutcome(const io::CsvReader& csv, const nav::NavigationOutcome& o) {
+  if (!(o.rmse_m >= 0.0) || !(o.final_error_m >= 0.0)) csv.Fail("an error that is negative or not a number");
+  if (!(o.fix_share >= 0.0 && o.fix_share <= 1.0)) csv.Fail("a fix share outside [0, 1]");
+  if (o.ranges_used < 0 || o.ranges_gated < 0) csv.Fail("a negative count of ranges");
+  for (const double e : o.error_by_bin_m) {
+    if (!(e >= 0.0) && !std::isnan(e)) csv.Fail("a binned error that is negative or infinite");
+  }
+}
 
 std::string Bins(const std::vector<double>& bins) {  // ';'-separated, "nan" for a gap
   std::string text;
@@ -59,10 +78,12 @@ void WriteNavigationShard(const std::function<void(const std::string&, const std
   csv << kHeader << '\n';
   for (const NavigationRecord& r : records) {
     const nav::NavigationOutcome& o = r.outcome;
-    csv << r.row << ',' << r.realization << ',' << r.method << ',' << io::FormatNumber(o.rmse_m) << ','
-        << io::FormatNumber(o.final_error_m) << ',' << io::FormatOptional(o.t_first_anchor_s) << ','
-        << io::FormatOptional(o.t_kth_anchor_s) << ',' << io::FormatNumber(o.fix_share) << ',' << o.ranges_used << ','
-        << o.ranges_gated << ',' << Bins(o.error_by_bin_m) << '\n';
+    std::ostringstream fields;
+    fields << r.row << ',' << r.realization << ',' << r.method << ',' << io::FormatNumber(o.rmse_m) << ','
+           << io::FormatNumber(o.final_error_m) << ',' << io::FormatOptional(o.t_first_anchor_s) << ','
+           << io::FormatOptional(o.t_kth_anchor_s) << ',' << io::FormatNumber(o.fix_share) << ',' << o.ranges_used
+           << ',' << o.ranges_gated << ',' << Bins(o.error_by_bin_m);
+    csv << fields.str() << ',' << Checksum(info.plan, fields.str()) << '\n';
   }
   write(kNavigationRecordsFile, csv.str());
   WriteShardIdentity(write, info, inputs);
@@ -83,8 +104,13 @@ std::vector<NavigationRecord> ReadNavigationShards(const std::vector<std::filesy
               rmse = csv.Column({"rmse_m"}), final_error = csv.Column({"final_error_m"}),
               t_first = csv.Column({"t_first_anchor_s"}), t_kth = csv.Column({"t_kth_anchor_s"}),
               fix = csv.Column({"fix_share"}), used = csv.Column({"ranges_used"}), gated = csv.Column({"ranges_gated"}),
-              bins = csv.Column({"error_by_bin_m"});
+              bins = csv.Column({"error_by_bin_m"}), checksum = csv.Column({"checksum"});
     while (csv.Next()) {
+      std::string_view fields = csv.record_text();
+      fields = fields.substr(0, fields.rfind(','));
+      if (csv.Text(checksum) != Checksum(infos[s].plan, fields)) {
+        csv.Fail("the line does not match its checksum (edited after the run, or another run's?)");
+      }
       NavigationRecord r;
       r.row = csv.Integer(row);
       r.realization = csv.Integer(realization);
@@ -103,6 +129,7 @@ std::vector<NavigationRecord> ReadNavigationShards(const std::vector<std::filesy
       r.outcome.ranges_used = csv.Integer64(used);
       r.outcome.ranges_gated = csv.Integer64(gated);
       r.outcome.error_by_bin_m = ParseBins(csv, bins);
+      CheckOutcome(csv, r.outcome);
       by_unit[unit].push_back(std::move(r));
     }
   }

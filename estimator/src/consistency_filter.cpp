@@ -6,8 +6,8 @@
 namespace anchorbench::estimator {
 
 bool ConsistencyFilterOptions::IsValid(std::string* why) const {
-  if (!(tau_m >= 0.0) || !std::isfinite(tau_m)) {
-    if (why) *why = "tau_m must be >= 0";
+  if (!(tau_m >= 0.0 && tau_m <= 1e4)) {
+    if (why) *why = "tau_m must be in [0, 1e4]";
     return false;
   }
   if (reseed_after_rejections < 0 || reseed_after_rejections > 1000000) {

@@ -45,6 +45,10 @@ bool CovarianceOptions::IsValid(std::string* why) const {
     if (why) *why = "model_error_degree must be 1, 2 or 3";
     return false;
   }
+  if (!(link_offset_m >= 0.0 && link_offset_m <= 100.0)) {
+    if (why) *why = "link_offset_m must be in [0, 100]";
+    return false;
+  }
   return true;
 }
 

@@ -48,9 +48,9 @@ bool HeightCheckOptions::IsValid(std::string* why) const {
     if (why) *why = message;
     return false;
   };
-  if (!(min_evidence >= 0.0) || !std::isfinite(min_evidence)) return fail("min_evidence must be >= 0");
+  if (!(min_evidence >= 0.0 && min_evidence <= 1e6)) return fail("min_evidence must be in [0, 1e6]");
   if (!(trim_fraction >= 0.0 && trim_fraction <= 0.5)) return fail("trim_fraction must be in [0, 0.5]");
-  if (!(min_separation >= 0.0) || !std::isfinite(min_separation)) return fail("min_separation must be >= 0");
+  if (!(min_separation >= 0.0 && min_separation <= 1e6)) return fail("min_separation must be in [0, 1e6]");
   return !height_prior || height_prior->IsValid(why);
 }
 

@@ -65,12 +65,12 @@ class RowBuilder {
 }  // namespace
 
 bool LsOptions::IsValid(std::string* why) const {
-  if (!(sigma_range_m > 0.0) || !std::isfinite(sigma_range_m)) {
-    if (why) *why = "sigma_range_m must be > 0";
+  if (!(sigma_range_m > 0.0 && sigma_range_m <= 100.0)) {
+    if (why) *why = "sigma_range_m must be in (0, 100]";
     return false;
   }
-  if (!(sigma_position_m >= 0.0) || !std::isfinite(sigma_position_m)) {
-    if (why) *why = "sigma_position_m must be >= 0";
+  if (!(sigma_position_m >= 0.0 && sigma_position_m <= 100.0)) {
+    if (why) *why = "sigma_position_m must be in [0, 100]";
     return false;
   }
   return true;

@@ -114,13 +114,13 @@ bool NlsOptions::IsValid(std::string* why) const {
   // Below about -1000 the kernel is flat to double precision: nothing would distinguish alphas.
   if (!(alpha_min >= -1000.0 && alpha_min < 2.0)) return fail("alpha_min must be in [-1000, 2)");
   if (!(fixed_alpha >= -1000.0 && fixed_alpha <= 2.0)) return fail("fixed_alpha must be in [-1000, 2]");
-  if (!(kernel_scale_m > 0.0) || !std::isfinite(kernel_scale_m)) return fail("kernel_scale_m must be > 0");
-  if (!(truncation > 0.0) || !std::isfinite(truncation)) return fail("truncation must be > 0");
+  if (!(kernel_scale_m > 0.0 && kernel_scale_m <= 1e4)) return fail("kernel_scale_m must be in (0, 1e4]");
+  if (!(truncation > 0.0 && truncation <= 1e4)) return fail("truncation must be in (0, 1e4]");
   if (max_iterations < 1 || max_iterations > 100000) return fail("max_iterations must be in [1, 100000]");
-  if (!(step_tolerance_m > 0.0) || !std::isfinite(step_tolerance_m)) return fail("step_tolerance_m must be > 0");
-  if (!(alpha_tolerance > 0.0) || !std::isfinite(alpha_tolerance)) return fail("alpha_tolerance must be > 0");
-  if (!(initial_damping >= 0.0) || !std::isfinite(initial_damping)) return fail("initial_damping must be >= 0");
-  if (max_passes < 0) return fail("max_passes must be >= 0 (0: no budget)");
+  if (!(step_tolerance_m > 0.0 && step_tolerance_m <= 1e3)) return fail("step_tolerance_m must be in (0, 1e3]");
+  if (!(alpha_tolerance > 0.0 && alpha_tolerance <= 10.0)) return fail("alpha_tolerance must be in (0, 10]");
+  if (!(initial_damping >= 0.0 && initial_damping <= 1e12)) return fail("initial_damping must be in [0, 1e12]");
+  if (max_passes < 0 || max_passes > 100000000) return fail("max_passes must be in [0, 1e8] (0: no budget)");
   return true;
 }
 

@@ -23,19 +23,5 @@ std::string FormatFixed(double value, int decimals) {
 
 std::string FormatOptional(const std::optional<double>& value) { return value ? FormatNumber(*value) : ""; }
 
-std::string Printable(std::string_view text) {
-  std::string out;
-  for (const char c : text) {
-    const auto byte = static_cast<unsigned char>(c);
-    if (byte >= 0x20 && byte < 0x7F) {
-      out += c;
-    } else {
-      char escaped[5];
-      std::snprintf(escaped, sizeof(escaped), "\\x%02X", byte);
-      out += escaped;
-    }
-  }
-  return out;
-}
 
 }  // namespace anchorbench::io

@@ -4,6 +4,7 @@
 #include <charconv>
 #include <cmath>
 #include <cstring>
+#include <filesystem>
 
 #include "anchorbench/io/format.hpp"
 #include "anchorbench/schema/input_error.hpp"
@@ -321,7 +322,33 @@ std::uint64_t FileBytes(const std::string& path) {
 
 }  // namespace
 
+namespace {
+
+// A log is read twice (checked, then streamed): a pipe would read empty the second time. And a
+// file named twice would count every row twice.
+void CheckLogFiles(const LogFiles& files) {
+  std::vector<std::string> paths = {files.poses};
+  paths.insert(paths.end(), files.ranges.begin(), files.ranges.end());
+  std::error_code error;
+  for (std::size_t i = 0; i < paths.size(); ++i) {
+    const std::filesystem::file_status status = std::filesystem::status(paths[i], error);
+    if (std::filesystem::exists(status) && !std::filesystem::is_regular_file(status) &&
+        !std::filesystem::is_directory(status)) {
+      throw schema::InputError(paths[i] + ": is not a regular file (a pipe or a device): the log is read twice, once to "
+                               "check it; save it to a file first");
+    }
+    for (std::size_t j = 0; j < i; ++j) {
+      if (std::filesystem::equivalent(paths[i], paths[j], error)) {
+        throw schema::InputError(paths[i] + ": is given twice (also as " + paths[j] + "); each row would count twice");
+      }
+    }
+  }
+}
+
+}  // namespace
+
 LogSurvey SurveyLog(const LogFiles& files, const LogPolicy& policy, const ByteProgress& progress) {
+  CheckLogFiles(files);
   LogSurvey survey;
   std::uint64_t total = FileBytes(files.poses), before = 0;
   for (const std::string& path : files.ranges) total += FileBytes(path);
@@ -333,8 +360,12 @@ LogSurvey SurveyLog(const LogFiles& files, const LogPolicy& policy, const BytePr
     std::ifstream in = OpenForReading(files.poses);
     PoseStream poses(in, files.poses, policy, survey.drops);
     PoseRecord pose;
+    bool first = true;
     while (poses.Next(pose)) {
       survey.tag_ids.insert(pose.tag_id);
+      survey.t_first_pose_s = first ? pose.t_s : std::min(survey.t_first_pose_s, pose.t_s);
+      survey.t_last_pose_s = first ? pose.t_s : std::max(survey.t_last_pose_s, pose.t_s);
+      first = false;
       report(poses.bytes_read());
     }
     survey.pose_rows = poses.rows();

@@ -82,8 +82,8 @@ ResultFolder::ResultFolder(fs::path target, const Options& options) : target_(st
   std::error_code error;
   if (fs::exists(target_, error) && !fs::is_directory(target_, error)) throw schema::InputError(name + ": exists and is not a folder");
   if (HoldsFiles(target_) && !options.overwrite) {
-    throw schema::InputError(name + ": holds earlier results; add --overwrite to replace them (the folder is replaced as a "
-                            "whole once the new results are complete)");
+    throw schema::InputError(name + ": holds earlier results; add " + options.overwrite_option +
+                             " to replace them (the folder is replaced as a whole once the new results are complete)");
   }
   fs::create_directories(Parent(target_), error);
   if (error) throw schema::InputError(Parent(target_).string() + ": cannot create the folder: " + error.message());

@@ -8,8 +8,10 @@ saves them with ``result.save(folder)``. docs/python.md shows the API by example
 from __future__ import annotations
 
 import io
+import numbers
 import os
-from typing import Iterable, Mapping, Optional, Sequence, Union
+import sys
+from typing import Any, Callable, Iterable, Mapping, Optional, Sequence, Union
 
 from ._anchorbench import (  # noqa: F401  (the module's API)
     Config,
@@ -33,6 +35,133 @@ __all__ = [
 ]
 
 ConfigLike = Union[None, str, os.PathLike, Mapping, Config]
+ProgressLike = Union[None, bool, Callable[[int, int], Any]]
+
+_MAX_SEED = 2**63 - 1
+_MAX_ID = 2**31 - 1
+
+
+# --- Arguments, checked in Python words: each error an InputError naming the argument ----------
+
+def _whole(name: str, value, low: int, high: int) -> int:
+    """A whole number in [low, high] (an int or a numpy integer; never a float or a bool)."""
+    if isinstance(value, bool) or not isinstance(value, numbers.Integral):
+        raise InputError(f"{name}: expected a whole number, got {value!r}")
+    value = int(value)
+    if not low <= value <= high:
+        raise InputError(f"{name}: must be from {low} to {high}, got {value}")
+    return value
+
+
+def _finite(name: str, value) -> float:
+    if isinstance(value, bool) or not isinstance(value, numbers.Real):
+        raise InputError(f"{name}: expected a number, got {value!r}")
+    value = float(value)
+    if value != value or value in (float("inf"), float("-inf")):
+        raise InputError(f"{name}: must be finite, got {value}")
+    return value
+
+
+def _path(name: str, value) -> str:
+    """A path as text: not empty, without a NUL byte."""
+    try:
+        text = os.fspath(value)
+    except TypeError:
+        raise InputError(f"{name}: expected a path, got {type(value).__name__}") from None
+    if isinstance(text, bytes):
+        text = os.fsdecode(text)
+    if not text:
+        raise InputError(f"{name}: an empty path")
+    if "\0" in text:
+        raise InputError(f"{name}: {text!r} holds a NUL byte")
+    return text
+
+
+def _point(name: str, value):
+    import numpy as np
+
+    try:
+        point = np.asarray(value, dtype=np.float64)
+    except (TypeError, ValueError):
+        raise InputError(f"{name}: expected [x, y, z] in metres, got {value!r}") from None
+    if point.shape != (3,):
+        raise InputError(f"{name}: expected shape (3,), got {point.shape}")
+    return point
+
+
+def _ids(name: str, values, n: Optional[int] = None):
+    """Ids as an int32 array: whole numbers within int32, never wrapped."""
+    import numpy as np
+
+    array = np.asarray(values)
+    if array.ndim != 1 or (n is not None and len(array) != n):
+        raise InputError(f"{name}: expected an array of shape ({'N' if n is None else n},), got {array.shape}")
+    if array.dtype.kind not in "iu":
+        if array.dtype.kind == "f" and np.all(np.isfinite(array)) and np.all(array == np.round(array)):
+            array = array.astype(np.int64)
+        elif len(array):
+            raise InputError(f"{name}: expected whole numbers, got an array of {array.dtype}")
+    if len(array) and (array.min() < -_MAX_ID - 1 or array.max() > _MAX_ID):
+        raise InputError(f"{name}: ids must lie within [{-_MAX_ID - 1}, {_MAX_ID}], got {array.min()} to {array.max()}")
+    return array.astype(np.int32)
+
+
+def _floats(name: str, values, shape_text: str):
+    import numpy as np
+
+    try:
+        return np.ascontiguousarray(values, dtype=np.float64)
+    except (TypeError, ValueError):
+        raise InputError(f"{name}: expected numbers of shape {shape_text}") from None
+
+
+def _plain(value):
+    """A config dict with numpy scalars and arrays as plain Python values (what YAML writes)."""
+    if isinstance(value, Mapping):
+        return {str(k): _plain(v) for k, v in value.items()}
+    if isinstance(value, (list, tuple)):
+        return [_plain(v) for v in value]
+    if hasattr(value, "tolist") and hasattr(value, "dtype"):  # a numpy scalar or array
+        return _plain(value.tolist())
+    if isinstance(value, os.PathLike):
+        return os.fspath(value)
+    return value
+
+
+class _Progress:
+    """A progress bar (tqdm, on a terminal by default), a callback, or nothing."""
+
+    def __init__(self, progress: ProgressLike, what: str):
+        self._bar = None
+        self._callback = None
+        if callable(progress) and not isinstance(progress, bool):
+            self._callback = progress
+        elif progress or (progress is None and sys.stderr is not None and sys.stderr.isatty()):
+            try:
+                from tqdm import tqdm  # Debian's python3-tqdm
+            except ImportError:
+                return
+            self._bar = tqdm(desc=what, unit="unit", leave=False)
+
+    def callback(self):
+        if self._callback is not None:
+            return self._callback
+        if self._bar is None:
+            return None
+
+        def update(done: int, total: int) -> None:
+            self._bar.total = total
+            self._bar.n = done
+            self._bar.refresh()
+
+        return update
+
+    def __enter__(self):
+        return self.callback()
+
+    def __exit__(self, *exc) -> None:
+        if self._bar is not None:
+            self._bar.close()
 
 
 def load_config(config: ConfigLike = None, overrides: Iterable[str] = (), name: str = "experiment") -> Config:
@@ -41,6 +170,8 @@ def load_config(config: ConfigLike = None, overrides: Iterable[str] = (), name: 
     ``overrides`` are KEY=VALUE strings, as ``--set`` takes them. Bad input raises InputError with
     the command line's one-line message (the file and key).
     """
+    if isinstance(overrides, (str, bytes)):
+        raise InputError("overrides: expected a list of KEY=VALUE strings, got one string")
     overrides = [str(o) for o in overrides]
     if isinstance(config, Config):
         if overrides:
@@ -51,8 +182,14 @@ def load_config(config: ConfigLike = None, overrides: Iterable[str] = (), name: 
     if isinstance(config, Mapping):
         import yaml  # Debian's python3-yaml
 
-        return _anchorbench._load_config_text(yaml.safe_dump(dict(config), sort_keys=False), f"{name}.yaml", overrides)
-    return _anchorbench._load_config_file(os.fspath(config), overrides)
+        try:
+            text = yaml.safe_dump(_plain(config), sort_keys=False)
+        except yaml.YAMLError as error:
+            raise InputError(f"config: a value YAML cannot hold: {str(error).splitlines()[0]}") from None
+        return _anchorbench._load_config_text(text, f"{name}.yaml", overrides)
+    if isinstance(config, (str, bytes, os.PathLike)):
+        return _anchorbench._load_config_file(_path("config", config), overrides)
+    raise InputError(f"config: expected a YAML path, a dict or None, got {type(config).__name__}")
 
 
 def solve(p_world_tag, range_m, solver: str = "lm_adaptive", config: ConfigLike = None) -> SolveResult:
@@ -61,7 +198,10 @@ def solve(p_world_tag, range_m, solver: str = "lm_adaptive", config: ConfigLike 
     ``solver`` is a registered name (``ab.parts()["solvers"]``); ``config`` sets its options
     (``estimator.ls``, ``estimator.nls``). Arrays of float64 are read without a copy.
     """
-    return _anchorbench.solve(p_world_tag, range_m, solver, None if config is None else load_config(config))
+    if not isinstance(solver, str):
+        raise InputError(f"solver: expected a registered name, got {solver!r}")
+    return _anchorbench.solve(_floats("p_world_tag", p_world_tag, "(N, 3)"), _floats("range_m", range_m, "(N,)"),
+                              solver, None if config is None else load_config(config))
 
 
 class Result:
@@ -97,44 +237,68 @@ class Result:
         raise AttributeError(f"no {name} in this result (files: {', '.join(self._files.names)})")
 
     def save(self, folder: Union[str, os.PathLike], overwrite: bool = False) -> None:
-        """Writes the files into ``folder``, whole or not at all (an existing folder only with overwrite)."""
-        self._files.save(os.fspath(folder), overwrite)
+        """Writes the files into ``folder``, whole or not at all (an existing folder only with overwrite).
+
+        A folder that holds a file the result was made from (its config, a replayed log) is refused.
+        """
+        self._files.save(_path("folder", folder), bool(overwrite))
 
     def __repr__(self) -> str:
         return f"Result({', '.join(self._files.names)})"
 
 
 def _with(config: ConfigLike, overrides: Iterable[str], seed: Optional[int], realizations: Optional[int]) -> Config:
+    if isinstance(overrides, (str, bytes)):
+        raise InputError("overrides: expected a list of KEY=VALUE strings, got one string")
     overrides = list(overrides)
     if seed is not None:
-        overrides.append(f"seed={int(seed)}")
+        overrides.append(f"seed={_whole('seed', seed, 0, _MAX_SEED)}")
     if realizations is not None:
-        overrides.append(f"realizations={int(realizations)}")
+        overrides.append(f"realizations={_whole('realizations', realizations, 1, 100_000_000)}")
     return load_config(config, overrides)
 
 
+def _threads(threads) -> int:
+    return _whole("threads", threads, 0, 8 * (os.cpu_count() or 1))
+
+
 def run(config: ConfigLike, *, overrides: Iterable[str] = (), seed: Optional[int] = None,
-        realizations: Optional[int] = None, threads: int = 0) -> Result:
+        realizations: Optional[int] = None, threads: int = 0, progress: ProgressLike = None) -> Result:
     """The Monte Carlo run of ``anchorbench run``: attempts, summary and timing as DataFrames.
 
     ``threads`` 0 takes OMP_NUM_THREADS, else every core; the bytes do not depend on it.
+    ``progress``: a bar on a terminal (None), always (True), never (False), or a callable(done, total)
+    of realizations. Ctrl-C stops the run within about a second (KeyboardInterrupt).
     """
-    return Result(_anchorbench._run(_with(config, overrides, seed, realizations), int(threads)))
+    config = _with(config, overrides, seed, realizations)
+    with _Progress(progress, f"run {config.name}") as callback:
+        return Result(_anchorbench._run(config, _threads(threads), callback))
 
 
 def sweep(config: ConfigLike, axes: Union[Mapping[str, str], Sequence[str]] = (), *, overrides: Iterable[str] = (),
-          realizations: Optional[int] = None, threads: int = 0) -> Result:
-    """``anchorbench sweep``: ``axes`` as {"estimator.trigger.pdop_threshold": "0.5,1,2"} or ["KEY=VALUES", ...]."""
+          realizations: Optional[int] = None, threads: int = 0, progress: ProgressLike = None) -> Result:
+    """``anchorbench sweep``: ``axes`` as {"estimator.trigger.pdop_threshold": "0.5,1,2"} or ["KEY=VALUES", ...].
+
+    ``progress`` and Ctrl-C as in run().
+    """
     if isinstance(axes, Mapping):
-        axes = [f"{key}={values}" for key, values in axes.items()]
-    return Result(_anchorbench._sweep(_with(config, overrides, None, realizations), [str(a) for a in axes], int(threads)))
+        axes = [f"{key}={','.join(map(str, _plain(values))) if isinstance(values, (list, tuple)) else values}"
+                for key, values in axes.items()]
+    elif isinstance(axes, (str, bytes)):
+        axes = [axes]
+    config = _with(config, overrides, None, realizations)
+    with _Progress(progress, f"sweep {config.name}") as callback:
+        return Result(_anchorbench._sweep(config, [str(a) for a in axes], _threads(threads), callback))
 
 
 def navigate(config: ConfigLike, *, overrides: Iterable[str] = (), seed: Optional[int] = None,
-             realizations: Optional[int] = None, threads: int = 0) -> Result:
+             realizations: Optional[int] = None, threads: int = 0, progress: ProgressLike = None) -> Result:
     """``anchorbench navigate`` (docs/navigation.md): each trigger's anchors in a drifting robot's filter;
-    navigation, navigation_summary and navigation_error as DataFrames. The config needs a 'navigation' section."""
-    return Result(_anchorbench._navigate(_with(config, overrides, seed, realizations), int(threads)))
+    navigation, navigation_summary and navigation_error as DataFrames. The config needs a 'navigation' section.
+    ``progress`` and Ctrl-C as in run()."""
+    config = _with(config, overrides, seed, realizations)
+    with _Progress(progress, f"navigate {config.name}") as callback:
+        return Result(_anchorbench._navigate(config, _threads(threads), callback))
 
 
 def replay(poses: Union[str, os.PathLike], ranges: Union[str, os.PathLike, Sequence[Union[str, os.PathLike]]],
@@ -142,18 +306,19 @@ def replay(poses: Union[str, os.PathLike], ranges: Union[str, os.PathLike, Seque
            repeated_poses: str = "error", out_of_order: str = "sort", navigate: bool = False) -> Result:
     """``anchorbench replay`` of a recorded log (docs/real_data.md): estimates.csv and the replay summary;
     with ``navigate``, also the navigation filter on the log with synthetic odometry (``replay --navigate``)."""
-    if isinstance(ranges, (str, os.PathLike)):
+    if isinstance(ranges, (str, bytes, os.PathLike)):
         ranges = [ranges]
     loaded = None if config is None else load_config(config)
-    return Result(_anchorbench._replay(os.fspath(poses), [os.fspath(r) for r in ranges],
-                                       "" if anchors is None else os.fspath(anchors), loaded, repeated_poses,
+    return Result(_anchorbench._replay(_path("poses", poses), [_path("ranges", r) for r in ranges],
+                                       "" if anchors is None else _path("anchors", anchors), loaded, repeated_poses,
                                        out_of_order, bool(navigate)))
 
 
 def simulate(config: ConfigLike, realization: int = 0, *, seed: Optional[int] = None,
              overrides: Iterable[str] = ()) -> Result:
     """``anchorbench simulate``: one realization's poses, ranges and anchors (the truth)."""
-    return Result(_anchorbench._simulate(_with(config, overrides, seed, None), int(realization)))
+    return Result(_anchorbench._simulate(_with(config, overrides, seed, None),
+                                         _whole("realization", realization, 0, 100_000_000 - 1)))
 
 
 class FrontEnd(_FrontEnd):
@@ -164,4 +329,42 @@ class FrontEnd(_FrontEnd):
     """
 
     def __init__(self, config: ConfigLike = None, defer_solves: bool = False):
-        super().__init__(None if config is None else load_config(config), defer_solves)
+        super().__init__(None if config is None else load_config(config), bool(defer_solves))
+
+    def add_pose(self, t_s: float, tag_id: int, p_world_tag) -> None:
+        super().add_pose(_finite("t_s", t_s), _whole("tag_id", tag_id, -_MAX_ID - 1, _MAX_ID),
+                         _point("p_world_tag", p_world_tag))
+
+    def add_range(self, t_s: float, tag_id: int, anchor_id: int, range_m: float) -> None:
+        super().add_range(_finite("t_s", t_s), _whole("tag_id", tag_id, -_MAX_ID - 1, _MAX_ID),
+                          _whole("anchor_id", anchor_id, -_MAX_ID - 1, _MAX_ID), _finite("range_m", range_m))
+
+    def add_sample(self, t_s: float, tag_id: int, anchor_id: int, range_m: float, p_world_tag) -> None:
+        super().add_sample(_finite("t_s", t_s), _whole("tag_id", tag_id, -_MAX_ID - 1, _MAX_ID),
+                           _whole("anchor_id", anchor_id, -_MAX_ID - 1, _MAX_ID), _finite("range_m", range_m),
+                           _point("p_world_tag", p_world_tag))
+
+    def add_poses(self, t_s, tag_id, p_world_tag) -> None:
+        t = _floats("t_s", t_s, "(N,)")
+        super().add_poses(t, _ids("tag_id", tag_id, len(t) if t.ndim == 1 else None),
+                          _floats("p_world_tag", p_world_tag, "(N, 3)"))
+
+    def add_ranges(self, t_s, tag_id, anchor_id, range_m) -> None:
+        t = _floats("t_s", t_s, "(N,)")
+        n = len(t) if t.ndim == 1 else None
+        super().add_ranges(t, _ids("tag_id", tag_id, n), _ids("anchor_id", anchor_id, n),
+                           _floats("range_m", range_m, "(N,)"))
+
+    def add_samples(self, t_s, tag_id, anchor_id, range_m, p_world_tag) -> None:
+        t = _floats("t_s", t_s, "(N,)")
+        n = len(t) if t.ndim == 1 else None
+        super().add_samples(t, _ids("tag_id", tag_id, n), _ids("anchor_id", anchor_id, n),
+                            _floats("range_m", range_m, "(N,)"), _floats("p_world_tag", p_world_tag, "(N, 3)"))
+
+    def run_pending_solves(self, max_count: Optional[int] = None, budget_s: float = 0.0) -> int:
+        """Runs due solves (with defer_solves): at most max_count, none started after budget_s seconds (0: no limit)."""
+        count = 2**63 - 1 if max_count is None else _whole("max_count", max_count, 0, 2**63 - 1)
+        return super().run_pending_solves(count, _finite("budget_s", budget_s))
+
+    def finish(self, t_end_s: float) -> None:
+        super().finish(_finite("t_end_s", t_end_s))

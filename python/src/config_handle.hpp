@@ -15,6 +15,7 @@ struct ConfigHandle {
   schema::ExperimentConfig experiment;
   std::string source;                   // the file, or "<name>.yaml" for a dict
   std::vector<std::string> overrides;   // applied to the document: a sweep's points start from them
+  std::vector<std::string> files;       // the files it was read from (its bases too): never replaced by save()
 };
 
 // From a file (its bases read once) or from YAML text, with KEY=VALUE overrides; InputError on bad input.

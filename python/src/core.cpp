@@ -1,5 +1,7 @@
 // The core from Python: solvers and PDOPs on arrays, and the online front end fed one sample at a
 // time or in batches. The C++ work runs with the GIL released.
+#include <cmath>
+
 #include <pybind11/eigen.h>
 #include <pybind11/stl.h>
 
@@ -8,6 +10,7 @@
 #include "anchorbench/estimator/closest_point_pdop.hpp"
 #include "anchorbench/estimator/live_front_end.hpp"
 #include "anchorbench/estimator/pdop.hpp"
+#include "anchorbench/io/format.hpp"
 #include "anchorbench/schema/input_error.hpp"
 #include "config_handle.hpp"
 #include "module_parts.hpp"
@@ -36,6 +39,14 @@ estimator::SolveResult Solve(const Doubles& p_world_tag, const Doubles& range_m,
                              const ConfigHandle* config) {
   const std::span<const Eigen::Vector3d> p = Points(p_world_tag, "p_world_tag");
   const std::span<const double> d = Values(range_m, "range_m", static_cast<py::ssize_t>(p.size()));
+  // What the initializer's front drops before any solver sees it is refused here, never solved.
+  for (std::size_t k = 0; k < d.size(); ++k) {
+    if (!(d[k] > 0.0 && std::isfinite(d[k]))) {
+      throw schema::InputError("range_m[" + std::to_string(k) + "]: " + io::FormatNumber(d[k]) +
+                               " is not a range (a positive, finite distance in metres)");
+    }
+    if (!p[k].allFinite()) throw schema::InputError("p_world_tag[" + std::to_string(k) + "]: is not finite");
+  }
   const schema::EstimatorConfig estimator = config ? config->experiment.estimator : schema::EstimatorConfig{};
   registry::Components& components = ModuleComponents();
   std::string why;

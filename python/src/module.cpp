@@ -13,7 +13,7 @@ registry::Components& ModuleComponents() {
 
 std::span<const Eigen::Vector3d> Points(const Doubles& array, const char* what) {
   if (array.ndim() != 2 || array.shape(1) != 3) {
-    throw py::value_error(std::string(what) + ": expected an array of shape (N, 3)");
+    throw schema::InputError(std::string(what) + ": expected an array of shape (N, 3)");
   }
   static_assert(sizeof(Eigen::Vector3d) == 3 * sizeof(double), "Vector3d is three packed doubles");
   return {reinterpret_cast<const Eigen::Vector3d*>(array.data()), static_cast<std::size_t>(array.shape(0))};
@@ -25,8 +25,8 @@ template <typename T>
 std::span<const T> OneAxis(const py::array_t<T, py::array::c_style | py::array::forcecast>& array, const char* what,
                            py::ssize_t n) {
   if (array.ndim() != 1 || (n >= 0 && array.shape(0) != n)) {
-    throw py::value_error(std::string(what) + ": expected an array of shape (" + (n >= 0 ? std::to_string(n) : "N") +
-                          ",)");
+    throw schema::InputError(std::string(what) + ": expected an array of shape (" + (n >= 0 ? std::to_string(n) : "N") +
+                             ",)");
   }
   return {array.data(), static_cast<std::size_t>(array.shape(0))};
 }

@@ -4,12 +4,38 @@
 #include <pybind11/eigen.h>
 #include <pybind11/stl.h>
 
+#include <cmath>
+#include <set>
+#include <type_traits>
+
 #include "anchorbench/estimator/init_trigger.hpp"
 #include "anchorbench/estimator/solver.hpp"
+#include "anchorbench/schema/input_error.hpp"
+#include "anchorbench/schema/names.hpp"
+#include "interruptible.hpp"
 #include "module_parts.hpp"
 
 namespace anchorbench::python {
 namespace {
+
+// The Python threads inside a part's call, by thread id (read and changed with the GIL held), so
+// that Ctrl-C can interrupt them (Interruptible).
+std::multiset<unsigned long>& RunningPartThreads() {
+  static auto* threads = new std::multiset<unsigned long>();  // never destroyed: used until exit
+  return *threads;
+}
+
+// Marks the calling thread as inside a part for the scope's life; with the GIL held.
+class InsidePart {
+ public:
+  InsidePart() : id_(PyThread_get_thread_ident()) { RunningPartThreads().insert(id_); }
+  ~InsidePart() { RunningPartThreads().erase(RunningPartThreads().find(id_)); }
+  InsidePart(const InsidePart&) = delete;
+  InsidePart& operator=(const InsidePart&) = delete;
+
+ private:
+  unsigned long id_;
+};
 
 // A Python callable kept for the life of the process: the registry holds it past any scope, and
 // it must never be released without the GIL (at exit, after the interpreter).
@@ -30,19 +56,39 @@ estimator::SolveStatus StatusOf(const std::string& name) {
   return status;
 }
 
+// A part's output, checked: `what` if it is not there, of the wrong type or shape, or not finite.
+template <typename T>
+T Checked(const py::handle& value, const char* what) {
+  T out;
+  try {
+    out = value.cast<T>();
+  } catch (const py::cast_error&) {
+    throw std::invalid_argument(std::string(what) + " has the wrong type or shape (got " +
+                                std::string(py::str(py::repr(value))).substr(0, 80) + ")");
+  }
+  if constexpr (std::is_same_v<T, double>) {
+    if (!std::isfinite(out)) throw std::invalid_argument(std::string(what) + " is not finite");
+  } else if constexpr (!std::is_same_v<T, std::string> && !std::is_same_v<T, bool>) {
+    if (!out.allFinite()) throw std::invalid_argument(std::string(what) + " is not finite");
+  }
+  return out;
+}
+
 // solve(p_world_tag (N, 3), range_m (N,)) -> (p_world_anchor (3,), bias_m, status) or a dict
-// with those keys (and optionally covariance (4, 4)).
+// with those keys (and optionally covariance (4, 4)). A result that is not that, or not finite
+// with a status that claims an estimate, is refused with the part named.
 class PySolver final : public estimator::Solver {
  public:
   PySolver(std::string name, std::shared_ptr<py::function> solve) : name_(std::move(name)), solve_(std::move(solve)) {}
 
   estimator::SolveResult Solve(std::span<const Eigen::Vector3d> p_world_tag, std::span<const double> range_m) const override {
     py::gil_scoped_acquire acquire;
+    const InsidePart inside;
     try {
       return ResultOf((*solve_)(View(p_world_tag), View(range_m)));
     } catch (py::error_already_set& e) {
       Rethrow("solver", name_, e);
-    } catch (const py::cast_error& e) {
+    } catch (const std::exception& e) {
       throw std::runtime_error("python solver '" + name_ + "': " + e.what());
     }
   }
@@ -52,16 +98,23 @@ class PySolver final : public estimator::Solver {
     estimator::SolveResult result;
     if (py::isinstance<py::dict>(value)) {
       const py::dict d = value.cast<py::dict>();
-      result.p_world_anchor = d["p_world_anchor"].cast<Eigen::Vector3d>();
-      result.bias_m = d.contains("bias_m") ? d["bias_m"].cast<double>() : 0.0;
-      result.status = StatusOf(d.contains("status") ? d["status"].cast<std::string>() : "converged");
-      if (d.contains("covariance")) result.covariance = d["covariance"].cast<Eigen::Matrix4d>();
+      if (!d.contains("p_world_anchor")) throw std::invalid_argument("the dict it returned has no 'p_world_anchor'");
+      result.status = StatusOf(d.contains("status") ? Checked<std::string>(d["status"], "status") : "converged");
+      if (!estimator::Succeeded(result.status)) return result;  // no estimate claimed: nothing to check
+      result.p_world_anchor = Checked<Eigen::Vector3d>(d["p_world_anchor"], "p_world_anchor (3,)");
+      result.bias_m = d.contains("bias_m") ? Checked<double>(d["bias_m"], "bias_m") : 0.0;
+      if (d.contains("covariance")) result.covariance = Checked<Eigen::Matrix4d>(d["covariance"], "covariance (4, 4)");
       return result;
     }
+    if (!py::isinstance<py::tuple>(value) || py::len(value) != 3) {
+      throw std::invalid_argument("must return (p_world_anchor, bias_m, status) or a dict, got " +
+                                  std::string(py::str(py::repr(value))).substr(0, 80));
+    }
     const py::tuple t = value.cast<py::tuple>();
-    result.p_world_anchor = t[0].cast<Eigen::Vector3d>();
-    result.bias_m = t[1].cast<double>();
-    result.status = StatusOf(t[2].cast<std::string>());
+    result.status = StatusOf(Checked<std::string>(t[2], "status"));
+    if (!estimator::Succeeded(result.status)) return result;
+    result.p_world_anchor = Checked<Eigen::Vector3d>(t[0], "p_world_anchor (3,)");
+    result.bias_m = Checked<double>(t[1], "bias_m");
     return result;
   }
 
@@ -78,6 +131,7 @@ class PyTrigger final : public estimator::InitTrigger {
 
   bool Fire(const estimator::TriggerInput& in) override {
     py::gil_scoped_acquire acquire;
+    const InsidePart inside;
     try {
       py::dict sample;
       sample["t_s"] = in.t_s;
@@ -87,10 +141,10 @@ class PyTrigger final : public estimator::InitTrigger {
       sample["eligible"] = in.eligible;
       sample["p_world_tag"] = View(in.p_world_tag);
       sample["range_m"] = View(in.range_m);
-      return (*fire_)(sample).cast<bool>();
+      return Checked<bool>((*fire_)(sample), "its answer (True or False)");
     } catch (py::error_already_set& e) {
       Rethrow("trigger", name_, e);
-    } catch (const py::cast_error& e) {
+    } catch (const std::exception& e) {
       throw std::runtime_error("python trigger '" + name_ + "': " + e.what());
     }
   }
@@ -102,10 +156,43 @@ class PyTrigger final : public estimator::InitTrigger {
 
 }  // namespace
 
+void InterruptRunningParts() {
+  for (const unsigned long id : std::set<unsigned long>(RunningPartThreads().begin(), RunningPartThreads().end())) {
+    PyThreadState_SetAsyncExc(id, PyExc_KeyboardInterrupt);
+  }
+}
+
+namespace {
+
+// A part's name goes into attempts.csv like a row's (schema::NameProblem), and names a built-in
+// only if it is one: a name Python registered may be registered again (a notebook's cell run
+// twice), a built-in's never.
+template <typename Registry>
+void CheckPartName(const Registry& registry, std::set<std::string>& from_python, const std::string& kind,
+                   const std::string& name) {
+  if (const std::string why = schema::NameProblem(name); !why.empty()) throw schema::InputError("name: " + why);
+  if (registry.Knows(name) && !from_python.contains(name)) {
+    throw schema::InputError("name: '" + name + "' is a built-in " + kind + "; give yours a name of its own");
+  }
+  from_python.insert(name);
+}
+
+std::set<std::string>& PythonSolverNames() {
+  static auto* names = new std::set<std::string>();
+  return *names;
+}
+std::set<std::string>& PythonTriggerNames() {
+  static auto* names = new std::set<std::string>();
+  return *names;
+}
+
+}  // namespace
+
 void BindPlugins(py::module_& m) {
   m.def(
       "register_solver",
       [](const std::string& name, py::function solve, const std::string& description) {
+        CheckPartName(ModuleComponents().solvers, PythonSolverNames(), "solver", name);
         const std::shared_ptr<py::function> kept = Keep(std::move(solve));
         ModuleComponents().solvers.Register(name, description.empty() ? "a solver written in Python" : description,
                                             [name, kept](const std::string&, const registry::SolverContext&) {
@@ -118,6 +205,7 @@ void BindPlugins(py::module_& m) {
   m.def(
       "register_trigger",
       [](const std::string& name, py::function fire, const std::string& description) {
+        CheckPartName(ModuleComponents().triggers, PythonTriggerNames(), "trigger", name);
         const std::shared_ptr<py::function> kept = Keep(std::move(fire));
         ModuleComponents().triggers.Register(name, description.empty() ? "a trigger written in Python" : description,
                                              [name, kept](const std::string&, const registry::TriggerContext&) {

@@ -1,5 +1,6 @@
 // The trials from Python: configs, run, sweep, navigate, replay and simulate, each returning the files the
 // command line writes (the same bytes), which the package reads into DataFrames and can save.
+#include <filesystem>
 #include <map>
 #include <sstream>
 
@@ -22,6 +23,7 @@
 #include "anchorbench/schema/sweep.hpp"
 #include "anchorbench/sim/scenario.hpp"
 #include "config_handle.hpp"
+#include "interruptible.hpp"
 #include "module_parts.hpp"
 
 namespace anchorbench::app {
@@ -31,22 +33,29 @@ const char* BuildRevision();  // generated at build time (cmake/GitRevision.cmak
 namespace anchorbench::python {
 
 ConfigHandle LoadConfigFile(const std::string& path, const std::vector<std::string>& overrides) {
-  ConfigHandle handle{config::ReadConfigDocument(path), {}, path, overrides};
+  ConfigHandle handle{config::ReadConfigDocument(path), {}, path, overrides, config::ConfigFiles(path)};
   handle.experiment = config::LoadConfig(handle.document, overrides, ModuleComponents());
   return handle;
 }
 
 ConfigHandle LoadConfigText(const std::string& text, const std::string& source, const std::vector<std::string>& overrides) {
-  ConfigHandle handle{config::ParseConfigDocument(text, source), {}, source, overrides};
+  ConfigHandle handle{config::ParseConfigDocument(text, source), {}, source, overrides, {}};
   handle.experiment = config::LoadConfig(handle.document, overrides, ModuleComponents());
+  // A dict's `base:` (relative to the working folder) and the files it chains to.
+  if (const YAML::Node base = YAML::Load(text)["base"]; base && base.IsScalar()) {
+    const std::filesystem::path parent = std::filesystem::path(source).parent_path();
+    handle.files = config::ConfigFiles((parent / base.Scalar()).string());
+  }
   return handle;
 }
 
 namespace {
 
-// A result's files by name, in the order the command writes them.
+// A result's files by name, in the order the command writes them, and the files it was made from
+// (which save() never replaces).
 struct Files {
   std::vector<std::pair<std::string, std::string>> texts;
+  std::vector<std::filesystem::path> inputs;
 
   engine::FileWriter Writer() {
     return [this](const std::string& name, const std::function<void(std::ostream&)>& write) {
@@ -68,8 +77,11 @@ struct Files {
   }
   // Whole or absent, as the command line's result folders (io::ResultFolder).
   void Save(const std::filesystem::path& folder, bool overwrite) const {
+    if (folder.empty()) throw schema::InputError("folder: an empty path; name the folder to write");
     io::ResultFolder::Options options;
     options.overwrite = overwrite;
+    options.inputs = inputs;
+    options.overwrite_option = "overwrite=True";
     io::ResultFolder out(folder, options);
     for (const auto& [name, text] : texts) out.Write(name, text);
     out.Commit();
@@ -87,44 +99,50 @@ report::RunInfo InfoOf(const ConfigHandle& config, int threads, std::vector<std:
   return info;
 }
 
-std::vector<engine::ExperimentAttempts> Compute(const engine::Plan& plan, int threads) {
-  engine::LocalExecutor executor(ModuleComponents());
-  py::gil_scoped_release release;  // a Python part takes it back while it runs
-  return engine::RunWholePlan(plan, executor, threads);
+// The plan on this process's threads, the GIL released (a Python part takes it back while it
+// runs), Ctrl-C and `progress` heard (interruptible.hpp).
+std::vector<engine::ExperimentAttempts> Compute(const engine::Plan& plan, int threads, const py::object& progress) {
+  return Interruptible<std::vector<engine::ExperimentAttempts>>(
+      [&](const engine::RunControl& control) {
+        engine::LocalExecutor executor(ModuleComponents(), control.stop);
+        return engine::RunWholePlan(plan, executor, threads, control.progress);
+      },
+      progress);
 }
 
-Files Run(const ConfigHandle& config, int threads) {
+Files Run(const ConfigHandle& config, int threads, const py::object& progress) {
   engine::CheckExperiment(config.experiment, ModuleComponents());
   const int resolved = engine::ResolveThreads(threads);
   const engine::Plan plan({config.experiment});
-  const std::vector<engine::ExperimentAttempts> run = Compute(plan, resolved);
-  Files files;
+  const std::vector<engine::ExperimentAttempts> run = Compute(plan, resolved, progress);
+  Files files{{}, {config.files.begin(), config.files.end()}};
   engine::WriteRunFiles(files.Writer(), config.experiment, run.front(), InfoOf(config, resolved, {"run"}));
   return files;
 }
 
-Files Sweep(const ConfigHandle& config, const std::vector<std::string>& axes_text, int threads) {
+Files Sweep(const ConfigHandle& config, const std::vector<std::string>& axes_text, int threads,
+            const py::object& progress) {
   const std::vector<schema::SweepAxis> axes = schema::SweepAxes(config.experiment.sweep, axes_text);
   if (axes.empty()) throw schema::InputError(config.source + ": nothing to sweep: give axes or a 'sweep' section");
   const std::vector<schema::ExperimentConfig> points =
       engine::SweepPoints(config.document, config.overrides, axes, std::nullopt, ModuleComponents());
   const int resolved = engine::ResolveThreads(threads);
   const engine::Plan plan(points);
-  const std::vector<engine::ExperimentAttempts> run = Compute(plan, resolved);
-  Files files;
+  const std::vector<engine::ExperimentAttempts> run = Compute(plan, resolved, progress);
+  Files files{{}, {config.files.begin(), config.files.end()}};
   engine::WriteSweepFiles(files.Writer(), config.experiment.name, axes, plan, run, InfoOf(config, resolved, {"sweep"}));
   return files;
 }
 
-Files Navigate(const ConfigHandle& config, int threads) {
+Files Navigate(const ConfigHandle& config, int threads, const py::object& progress) {
   engine::CheckNavigation(config.experiment, ModuleComponents());
   const int resolved = engine::ResolveThreads(threads);
-  std::vector<engine::NavigationRecord> records;
-  {
-    py::gil_scoped_release release;
-    records = engine::RunNavigation(config.experiment, ModuleComponents(), resolved);
-  }
-  Files files;
+  const std::vector<engine::NavigationRecord> records = Interruptible<std::vector<engine::NavigationRecord>>(
+      [&](const engine::RunControl& control) {
+        return engine::RunNavigation(config.experiment, ModuleComponents(), resolved, {}, control);
+      },
+      progress);
+  Files files{{}, {config.files.begin(), config.files.end()}};
   engine::WriteNavigationFiles(files.Writer(), config.experiment, records, InfoOf(config, resolved, {"navigate"}));
   return files;
 }
@@ -140,8 +158,15 @@ Files Replay(const std::string& poses, const std::vector<std::string>& ranges, c
   std::optional<std::map<int, schema::AnchorTruth>> truth;
   if (!anchors.empty()) truth = io::LoadAnchors(anchors);
   Files files;
+  files.inputs = {poses};
+  files.inputs.insert(files.inputs.end(), ranges.begin(), ranges.end());
+  if (!anchors.empty()) files.inputs.emplace_back(anchors);
+  if (config) files.inputs.insert(files.inputs.end(), config->files.begin(), config->files.end());
   py::gil_scoped_release release;
   const engine::ReplayLog replay({poses, ranges}, policy, std::move(truth), experiment, ModuleComponents());
+  if (navigate) {
+    engine::CheckErrorBins(replay.survey().t_last_pose_s - replay.survey().t_first_pose_s, *experiment.navigation, poses);
+  }
   const engine::ReplayOutcome outcome = replay.Run();
   engine::WriteReplayFiles(files.Writer(), outcome);  // into C++ strings: no Python object touched
   if (navigate) engine::WriteLogNavigation(files.Writer(), replay, outcome, experiment, engine::ResolveThreads(0));
@@ -151,7 +176,7 @@ Files Replay(const std::string& poses, const std::vector<std::string>& ranges, c
 Files Simulate(const ConfigHandle& config, std::uint64_t realization) {
   const sim::Scenario scenario = sim::GenerateScenario(config.experiment.scenario, config.experiment.seed, realization);
   const io::Recording recording = io::RecordingOf(scenario);
-  Files files;
+  Files files{{}, {config.files.begin(), config.files.end()}};
   engine::FileWriter write = files.Writer();
   write("poses.csv", [&](std::ostream& out) { io::WritePoses(out, recording.poses); });
   write("ranges.csv", [&](std::ostream& out) { io::WriteRanges(out, recording.ranges); });
@@ -177,9 +202,9 @@ void BindTrials(py::module_& m) {
       .def("text", &Files::Text, py::arg("name"))
       .def("save", &Files::Save, py::arg("folder"), py::arg("overwrite") = false,
            "Writes the files into `folder`, whole or not at all; an existing folder only with overwrite=True.");
-  m.def("_run", &Run, py::arg("config"), py::arg("threads"));
-  m.def("_sweep", &Sweep, py::arg("config"), py::arg("axes"), py::arg("threads"));
-  m.def("_navigate", &Navigate, py::arg("config"), py::arg("threads"));
+  m.def("_run", &Run, py::arg("config"), py::arg("threads"), py::arg("progress"));
+  m.def("_sweep", &Sweep, py::arg("config"), py::arg("axes"), py::arg("threads"), py::arg("progress"));
+  m.def("_navigate", &Navigate, py::arg("config"), py::arg("threads"), py::arg("progress"));
   m.def("_replay", &Replay, py::arg("poses"), py::arg("ranges"), py::arg("anchors"), py::arg("config"),
         py::arg("repeated_poses"), py::arg("out_of_order"), py::arg("navigate"));
   m.def("_simulate", &Simulate, py::arg("config"), py::arg("realization"));

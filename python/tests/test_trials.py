@@ -34,7 +34,7 @@ def test_a_dict_config_is_the_same_experiment_as_its_file(small_yaml):
 def test_save_refuses_earlier_results_unless_asked(small_yaml, tmp_path):
     result = ab.run(small_yaml, realizations=1, threads=1)
     result.save(tmp_path / "out")
-    with pytest.raises(ab.InputError, match="add --overwrite"):
+    with pytest.raises(ab.InputError, match=r"add overwrite=True"):
         result.save(tmp_path / "out")
     result.save(tmp_path / "out", overwrite=True)
 

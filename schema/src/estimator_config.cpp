@@ -10,27 +10,27 @@ bool TriggerConfig::IsValid(std::string* why) const {
     if (why) *why = message;
     return false;
   };
-  if (!(pdop_threshold > 0.0)) return fail("pdop_threshold must be > 0");
+  // A DOP threshold of 1e6 already fires on any defined geometry; durations up to 1e7 s.
+  auto dop = [](double v) { return v > 0.0 && v <= 1e6; };
+  if (!dop(pdop_threshold)) return fail("pdop_threshold must be in (0, 1e6]");
   if (sample_count < 1) return fail("sample_count must be >= 1");
-  if (!(timeout_s >= 0.0) || !std::isfinite(timeout_s)) return fail("timeout_s must be >= 0");
+  if (!(timeout_s >= 0.0 && timeout_s <= 1e7)) return fail("timeout_s must be in [0, 1e7]");
   if (evaluate_every < 1) return fail("evaluate_every must be >= 1");
   if (!(evaluate_growth >= 1.0 && evaluate_growth <= 10.0)) return fail("evaluate_growth must be in [1, 10]");
-  if (!(bias_aware_threshold > 0.0)) return fail("bias_aware_threshold must be > 0");
-  if (!(confidence_threshold > 0.0)) return fail("confidence_threshold must be > 0");
+  if (!dop(bias_aware_threshold)) return fail("bias_aware_threshold must be in (0, 1e6]");
+  if (!dop(confidence_threshold)) return fail("confidence_threshold must be in (0, 1e6]");
   if (!(confidence_sigmas >= 0.0) || !(confidence_sigmas <= 10.0)) return fail("confidence_sigmas must be in [0, 10]");
-  if (!(horizontal_threshold > 0.0)) return fail("horizontal_threshold must be > 0");
+  if (!dop(horizontal_threshold)) return fail("horizontal_threshold must be in (0, 1e6]");
   return true;
 }
 
 bool HeightPriorConfig::IsValid(std::string* why) const {
-  if (!enabled) return true;
-  const estimator::HeightPrior prior{z_m + offset_m, sigma_m};
-  if (!prior.IsValid(why)) return false;
-  if (!std::isfinite(offset_m)) {
-    if (why) *why = "height_prior.offset_m must be finite";
+  // Checked whether or not it is enabled: a value a config holds is always within its range.
+  if (!(std::abs(offset_m) <= 1e4) || !(std::abs(z_m) <= 1e4)) {
+    if (why) *why = "z_m and offset_m must be in [-1e4, 1e4]";
     return false;
   }
-  return true;
+  return estimator::HeightPrior{z_m + offset_m, sigma_m}.IsValid(why);
 }
 
 std::optional<estimator::HeightPrior> HeightPriorConfig::For(

@@ -57,18 +57,19 @@ bool TrajectoryOptions::IsValid(std::string* why) const {
     if (why) *why = m;
     return false;
   };
-  auto non_negative = [](double v) { return v >= 0.0 && std::isfinite(v); };
+  // Lengths up to 10 km, periods and durations up to 1e6 s (the epochs are bounded in ScenarioOptions).
+  auto length = [](double v) { return v >= 0.0 && v <= 1e4; };
   if (!(rate_hz > 0.0 && rate_hz <= 1000.0)) return fail("rate_hz must be in (0, 1000]");
-  if (!(speed_mps > 0.0) || !std::isfinite(speed_mps)) return fail("speed_mps must be > 0");
+  if (!(speed_mps > 0.0 && speed_mps <= 1000.0)) return fail("speed_mps must be in (0, 1000]");
   if (!(speed_variation >= 0.0 && speed_variation < 1.0)) return fail("speed_variation must be in [0, 1)");
-  if (!non_negative(height_m)) return fail("height_m must be >= 0");
-  if (!non_negative(lateral_excursion_m)) return fail("lateral_excursion_m must be >= 0");
-  if (!non_negative(vertical_excursion_m)) return fail("vertical_excursion_m must be >= 0");
-  if (!non_negative(planar_vertical_excursion_m)) return fail("planar_vertical_excursion_m must be >= 0");
-  if (!(min_period_s > 0.0) || !std::isfinite(min_period_s)) return fail("min_period_s must be > 0");
-  if (!(max_period_s >= min_period_s) || !std::isfinite(max_period_s)) return fail("max_period_s must be >= min_period_s");
+  if (!length(height_m)) return fail("height_m must be in [0, 1e4]");
+  if (!length(lateral_excursion_m)) return fail("lateral_excursion_m must be in [0, 1e4]");
+  if (!length(vertical_excursion_m)) return fail("vertical_excursion_m must be in [0, 1e4]");
+  if (!length(planar_vertical_excursion_m)) return fail("planar_vertical_excursion_m must be in [0, 1e4]");
+  if (!(min_period_s > 0.0 && min_period_s <= 1e6)) return fail("min_period_s must be in (0, 1e6]");
+  if (!(max_period_s >= min_period_s && max_period_s <= 1e6)) return fail("max_period_s must be in [min_period_s, 1e6]");
   if (!(short_fraction > 0.0 && short_fraction <= 1.0)) return fail("short_fraction must be in (0, 1]");
-  if (!(hall_duration_s > 0.0) || !std::isfinite(hall_duration_s)) return fail("hall_duration_s must be > 0");
+  if (!(hall_duration_s > 0.0 && hall_duration_s <= 1e6)) return fail("hall_duration_s must be in (0, 1e6]");
   for (double fraction : {fraction_straight, fraction_planar, fraction_short}) {
     if (!(fraction >= 0.0 && fraction <= 1.0)) return fail("fraction_straight, fraction_planar and fraction_short must be in [0, 1]");
   }
@@ -76,7 +77,7 @@ bool TrajectoryOptions::IsValid(std::string* why) const {
     return fail("approach_start_m must be >= approach_end_m > 0 (and <= 100)");
   }
   if (!(approach_cone_deg >= 0.0 && approach_cone_deg <= 90.0)) return fail("approach_cone_deg must be in [0, 90]");
-  if (!(approach_duration_s > 0.0) || !std::isfinite(approach_duration_s)) return fail("approach_duration_s must be > 0");
+  if (!(approach_duration_s > 0.0 && approach_duration_s <= 1e6)) return fail("approach_duration_s must be in (0, 1e6]");
   if (!(fraction_straight + fraction_planar + fraction_short <= 1.0)) {
     return fail("fraction_straight, fraction_planar and fraction_short must sum to <= 1");
   }

@@ -72,9 +72,10 @@ class YamlSection {
   void TextMap(std::string_view key, std::vector<std::pair<std::string, std::string>>& entries);
   template <typename Visit>
   void Section(std::string_view key, Visit visit) {
+    // A key without a value (`scenario: ~`) is left unread, so Finish() refuses it as it refuses
+    // `seed: ~`: never a silent reset of a whole section to its defaults.
     YamlSection child = Has(key) ? YamlSection(Get(key), KeyPath(key), file_)
                                  : YamlSection(YAML::Node(YAML::NodeType::Map), KeyPath(key), file_);
-    used_.emplace(key);
     visit(child);
     child.Finish();
   }

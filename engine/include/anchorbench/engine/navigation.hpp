@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "anchorbench/engine/commit.hpp"
+#include "anchorbench/engine/run_control.hpp"
 #include "anchorbench/engine/shard.hpp"
 #include "anchorbench/nav/navigate.hpp"
 #include "anchorbench/registry/components.hpp"
@@ -56,20 +57,27 @@ std::vector<NavigationRecord> NavigateRealization(const schema::RowConfig& row, 
                                                   int realization, const schema::NavigationConfig& navigation,
                                                   const registry::Components& components);
 
-// Refuses (InputError) a config without a `navigation` section, or one CheckExperiment refuses.
+// Refuses (InputError) a config without a `navigation` section, one CheckExperiment refuses, or
+// one whose runs would hold too many error bins (CheckErrorBins).
 void CheckNavigation(const schema::ExperimentConfig& config, const registry::Components& components);
+
+// At most kMaxErrorBins bins of navigation.error_bin_s in a run of `duration_s` (each run keeps
+// one error per bin and method): refused before any work (InputError naming `what`).
+inline constexpr double kMaxErrorBins = 1e5;
+void CheckErrorBins(double duration_s, const schema::NavigationConfig& navigation, const std::string& what);
 
 // Every row and realization (or the units `shard` holds: unit = row * realizations +
 // realization, as navigation_shard.hpp's) on `threads` threads, ordered by row, realization,
 // method: the same for any thread count. Checks the config first (CheckNavigation).
 std::vector<NavigationRecord> RunNavigation(const schema::ExperimentConfig& config,
                                             const registry::Components& components, int threads,
-                                            const Shard& shard = {});
+                                            const Shard& shard = {}, const RunControl& control = {});
 
 // `units` units on `threads` threads (ParallelFor), their records joined in unit order: the same
-// for any thread count.
+// for any thread count. `control` sees every unit done, and may stop the rest.
 std::vector<NavigationRecord> NavigateUnits(int units, int threads,
-                                            const std::function<std::vector<NavigationRecord>(int unit)>& unit);
+                                            const std::function<std::vector<NavigationRecord>(int unit)>& unit,
+                                            const RunControl& control = {});
 
 // navigation.csv, navigation_summary.csv, navigation_error.csv and navigation.md of `records`
 // (whose row indexes `rows`) through `write`; returns navigation.md's text.

@@ -2,7 +2,9 @@
 // A navigation study's shard (anchorbench navigate --shard I/N) and its merge (anchorbench merge).
 // Shard I of N holds the units u = row * realizations + realization with u % N == I; its folder
 // has shard_folder.hpp's shard.csv, config.yaml and axes.txt, and navigation_records.csv: the
-// units' records at round-trip precision, so the merged tables are the unsharded run's bytes.
+// units' records at round-trip precision, so the merged tables are the unsharded run's bytes, each
+// line with a checksum of its fields and the plan's identity (a line edited, torn or of another
+// run is refused by the merge, as a chunk file's is).
 
 #include <filesystem>
 #include <functional>
@@ -25,7 +27,8 @@ void WriteNavigationShard(const std::function<void(const std::string&, const std
                           const std::vector<NavigationRecord>& records);
 
 // Every shard's records joined in unit order: RunNavigation's. Refuses (InputError naming the file
-// and line) a malformed line, a unit its shard does not hold, or a unit no shard has.
+// and line) a malformed line, one that does not match its checksum, a value no run writes, a unit
+// its shard does not hold, or a unit no shard has.
 std::vector<NavigationRecord> ReadNavigationShards(const std::vector<std::filesystem::path>& folders,
                                                    const std::vector<ShardInfo>& infos,
                                                    const schema::ExperimentConfig& config);

@@ -15,8 +15,8 @@ struct HeightPrior {
   double sigma_m = 0.1;
 
   bool IsValid(std::string* why) const {
-    if (std::isfinite(z_world_m) && sigma_m > 0.0 && std::isfinite(sigma_m)) return true;
-    if (why) *why = "height prior: z must be finite and sigma_m > 0";
+    if (std::abs(z_world_m) <= 1e5 && sigma_m > 0.0 && sigma_m <= 1e4) return true;
+    if (why) *why = "sigma_m must be in (0, 1e4] (and the prior's height within 1e5 m)";
     return false;
   }
   // The prior's squared residual in its own units: ((z - z_world_m) / sigma_m)^2.

@@ -4,6 +4,8 @@
 #include <string>
 #include <string_view>
 
+#include "anchorbench/schema/names.hpp"
+
 namespace anchorbench::io {
 
 // Shortest text that reads back to the same double ("inf"/"-inf" for infinities): CSV cells.
@@ -14,6 +16,6 @@ std::string FormatFixed(double value, int decimals);
 std::string FormatOptional(const std::optional<double>& value);
 // The text with control bytes and non-ASCII bytes as \xNN, so a message quoting input stays one
 // printable line.
-std::string Printable(std::string_view text);
+using schema::Printable;
 
 }  // namespace anchorbench::io

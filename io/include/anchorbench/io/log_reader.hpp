@@ -156,6 +156,7 @@ struct LogSurvey {
   std::optional<int> default_tag_id;  // the poses' only tag, for ranges without a tag column
   std::int64_t pose_rows = 0, range_rows = 0;  // data rows read
   std::int64_t reordered_rows = 0;             // rows put back in time order (LogPolicy::kSort)
+  double t_first_pose_s = 0.0, t_last_pose_s = 0.0;  // the span of the poses kept
   std::uint64_t bytes = 0;
   LogDrops drops;
 };

@@ -27,6 +27,7 @@ class ResultFolder {
     std::uintmax_t expected_bytes = 0;
     std::vector<std::filesystem::path> inputs;         // files the run reads
     std::vector<std::filesystem::path> input_folders;  // folders the run reads (merge's shards)
+    std::string overwrite_option = "--overwrite";      // how the caller's front spells it (Python: overwrite=True)
   };
 
   ResultFolder(std::filesystem::path target, const Options& options);
