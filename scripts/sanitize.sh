@@ -9,13 +9,15 @@ cd "$(dirname "$0")/.."
 bash scripts/setup.sh
 fuzz_seconds=${FUZZ_SECONDS:-30}
 CC=clang CXX=clang++ cmake -S . -B build-asan -DCMAKE_BUILD_TYPE=RelWithDebInfo -DANCHORBENCH_SANITIZE=ON \
-  -DANCHORBENCH_FUZZ=ON -DANCHORBENCH_BUILD_BENCHMARKS=OFF -DANCHORBENCH_MPI=OFF >/dev/null
+  -DANCHORBENCH_FUZZ=ON -DANCHORBENCH_BUILD_BENCHMARKS=OFF -DANCHORBENCH_MPI=OFF -DANCHORBENCH_PYTHON=ON >/dev/null
 cmake --build build-asan -j"$(nproc)"
 
 export ASAN_OPTIONS=detect_leaks=1:abort_on_error=1:strict_string_checks=1
 export UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1
 # Every test but those about processes and the file system rather than memory, which run in the
-# Release suite: the fault test (kill -9, tmpfs), resume (kill -9), and Slurm (daemons). Without
+# Release suite: the fault test (kill -9, tmpfs), resume (kill -9), and Slurm (daemons). The pytest
+# suite (the Python API, the bag tool and their property tests) runs on the sanitized module with
+# clang's ASan runtime preloaded into Debian's python3 (python/CMakeLists.txt). Without
 # MPI here (-DANCHORBENCH_MPI=OFF): OpenMPI's own allocations would be reported as leaks; the
 # chunks it carries are the work layer's, tested here.
 ctest --test-dir build-asan --output-on-failure -j"$(nproc)" -E "^(cli\.faults|cli\.resume|scripts\.slurm)$"

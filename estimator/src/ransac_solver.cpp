@@ -32,7 +32,9 @@ bool RansacOptions::IsValid(std::string* why) const {
     return false;
   };
   if (!(success_probability > 0.0 && success_probability < 1.0)) return fail("success_probability must be in (0, 1)");
-  if (subset_size < kMinSamplesLs) return fail("subset_size must be >= " + std::to_string(kMinSamplesLs));
+  if (subset_size < kMinSamplesLs || subset_size > 10000) {
+    return fail("subset_size must be in [" + std::to_string(kMinSamplesLs) + ", 10000]");
+  }
   if (!(outlier_fraction >= 0.0 && outlier_fraction < 1.0)) return fail("outlier_fraction must be in [0, 1)");
   if (!(inlier_threshold_m > 0.0 && inlier_threshold_m <= 1e4)) return fail("inlier_threshold_m must be in (0, 1e4]");
   if (max_subsets < 1 || max_subsets > kMaxIterations) {

@@ -26,16 +26,15 @@ def one_line(error: BaseException) -> None:
 
 
 def numeric_keys():
-    import yaml
+    """Every numeric config key: the docs' Limits table's own list (scripts/config_limits.py)."""
+    import importlib.util
+    from pathlib import Path
 
-    def leaves(d, prefix=""):
-        for key, value in d.items():
-            if isinstance(value, dict):
-                yield from leaves(value, f"{prefix}{key}.")
-            elif isinstance(value, (int, float)) and not isinstance(value, bool):
-                yield f"{prefix}{key}"
-
-    return sorted(leaves(yaml.safe_load(ab.load_config({"navigation": {}}).yaml)))
+    script = Path(__file__).resolve().parents[2] / "scripts" / "config_limits.py"
+    spec = importlib.util.spec_from_file_location("config_limits", script)
+    config_limits = importlib.util.module_from_spec(spec)
+    spec.loader.exec_module(config_limits)
+    return sorted(key for key, _ in config_limits.numeric_keys())
 
 
 KEYS = numeric_keys()

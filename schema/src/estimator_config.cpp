@@ -2,6 +2,8 @@
 
 #include <cmath>
 #include <stdexcept>
+#include <string>
+#include <utility>
 
 namespace anchorbench::schema {
 
@@ -13,9 +15,9 @@ bool TriggerConfig::IsValid(std::string* why) const {
   // A DOP threshold of 1e6 already fires on any defined geometry; durations up to 1e7 s.
   auto dop = [](double v) { return v > 0.0 && v <= 1e6; };
   if (!dop(pdop_threshold)) return fail("pdop_threshold must be in (0, 1e6]");
-  if (sample_count < 1) return fail("sample_count must be >= 1");
+  if (sample_count < 1 || sample_count > 1000000000) return fail("sample_count must be in [1, 1e9]");
   if (!(timeout_s >= 0.0 && timeout_s <= 1e7)) return fail("timeout_s must be in [0, 1e7]");
-  if (evaluate_every < 1) return fail("evaluate_every must be >= 1");
+  if (evaluate_every < 1 || evaluate_every > 1000000) return fail("evaluate_every must be in [1, 1e6]");
   if (!(evaluate_growth >= 1.0 && evaluate_growth <= 10.0)) return fail("evaluate_growth must be in [1, 10]");
   if (!dop(bias_aware_threshold)) return fail("bias_aware_threshold must be in (0, 1e6]");
   if (!dop(confidence_threshold)) return fail("confidence_threshold must be in (0, 1e6]");
@@ -26,9 +28,11 @@ bool TriggerConfig::IsValid(std::string* why) const {
 
 bool HeightPriorConfig::IsValid(std::string* why) const {
   // Checked whether or not it is enabled: a value a config holds is always within its range.
-  if (!(std::abs(offset_m) <= 1e4) || !(std::abs(z_m) <= 1e4)) {
-    if (why) *why = "z_m and offset_m must be in [-1e4, 1e4]";
-    return false;
+  for (const auto& [key, value] : {std::pair{"z_m", z_m}, std::pair{"offset_m", offset_m}}) {
+    if (!(std::abs(value) <= 1e4)) {
+      if (why) *why = std::string(key) + " must be in [-1e4, 1e4]";
+      return false;
+    }
   }
   return estimator::HeightPrior{z_m + offset_m, sigma_m}.IsValid(why);
 }
