@@ -132,16 +132,23 @@ void AddRecordingCommands(CLI::App& cli, CommandLine& c) {
   c.replay_cmd->add_option("--config", c.replay.config, "Config whose 'estimator' section is used (default: defaults)");
   c.replay_cmd->add_option("--trace", c.replay.trace,
                            "Write one row per range: t,tag_id,anchor_id,range,accepted,n_accepted,pdop");
+  c.replay_cmd->add_option("--certificate-trace", c.replay.certificate_trace,
+                           "Write one row per evaluation of a trigger that solves (certified: each test, the region's "
+                           "terms, the evidence, the stability): why an anchor waits (docs/real_data.md)");
   c.replay_cmd->add_option("--out", c.replay.out, "Folder for estimates.csv");
-  c.replay_cmd->add_flag("--overwrite", c.replay.overwrite, "Replace an existing --out folder or --trace file");
+  c.replay_cmd->add_flag("--overwrite", c.replay.overwrite, "Replace an existing --out folder or trace file");
   c.replay_cmd->add_flag("--navigate", c.replay.navigate,
                          "Also run the navigation filter on the log's lowest tag with each trigger's anchors and "
                          "synthetic odometry (the config's 'navigation' section; docs/navigation.md) into --out");
   c.replay_cmd->add_option("--max-range-m", c.replay.policy.max_range_m,
                            "Drop ranges above this as implausible (default 1000)")
       ->check(FiniteNumber(1e-3, 1e7));
+  c.replay_cmd->add_option("--average-poses-within-m", c.replay.policy.average_within_m,
+                           "Two poses of a tag at one time within this are averaged and counted (default 0.05 m; "
+                           "within 1 mm: one pose repeated)")
+      ->check(FiniteNumber(0.0, 10.0));
   c.replay_cmd->add_option("--repeated-poses", c.replay.repeated_poses,
-                           "Two poses of a tag at one time more than 1 mm apart (closer: one pose, counted): error "
+                           "Two poses of a tag at one time farther apart than --average-poses-within-m: error "
                            "(default), first, average")
       ->check(CLI::IsMember({"error", "first", "average"}));
   c.replay_cmd->add_option("--out-of-order", c.replay.out_of_order,

@@ -35,7 +35,7 @@ struct SimulateArgs {
 int SimulateCommand(const SimulateArgs& args, const AppContext& app);
 
 struct ReplayArgs {
-  std::string poses, anchors, config, trace, out;
+  std::string poses, anchors, config, trace, certificate_trace, out;
   std::vector<std::string> ranges;  // one or more files, merged by time
   io::LogPolicy policy;              // its enums set from the two names below
   std::string repeated_poses = "error", out_of_order = "sort";

@@ -9,6 +9,7 @@
 #include "anchorbench/io/recorded_data.hpp"
 #include "anchorbench/io/result_folder.hpp"
 #include "anchorbench/report/replay_report.hpp"
+#include "anchorbench/report/why_not.hpp"
 #include "anchorbench/engine/monte_carlo.hpp"
 #include "anchorbench/engine/navigation_log.hpp"
 #include "anchorbench/engine/replay_log.hpp"
@@ -28,6 +29,20 @@ std::vector<std::filesystem::path> Inputs(const ReplayArgs& args) {
     for (const std::string& file : config::ConfigFiles(args.config)) inputs.emplace_back(file);  // and its bases
   }
   return inputs;
+}
+
+// A trace file beside --out (never inside the folder, which is replaced as a whole), with its header.
+std::unique_ptr<io::AtomicFile> OpenTrace(const std::string& option, const std::string& path, const ReplayArgs& args,
+                                          const io::ResultFolder* out, std::uintmax_t expected_bytes,
+                                          const char* header) {
+  if (path.empty()) return nullptr;
+  if (out && io::IsInside(path, out->target())) {
+    throw schema::InputError(option + " " + path + ": lies inside --out " + args.out +
+                             ", which is replaced as a whole; put the trace beside it");
+  }
+  auto file = std::make_unique<io::AtomicFile>(path, args.overwrite, Inputs(args), expected_bytes);
+  file->stream() << header << '\n';
+  return file;
 }
 
 io::LogPolicy PolicyOf(const ReplayArgs& args) {
@@ -70,19 +85,26 @@ int ReplayCommand(const ReplayArgs& args, const AppContext& app) {
     options.inputs = Inputs(args);
     out = std::make_unique<io::ResultFolder>(args.out, options);
   }
-  std::unique_ptr<io::AtomicFile> trace_file;
+  if (!args.trace.empty() && !args.certificate_trace.empty() &&
+      std::filesystem::weakly_canonical(args.trace) == std::filesystem::weakly_canonical(args.certificate_trace)) {
+    throw schema::InputError("--certificate-trace " + args.certificate_trace + ": is also --trace");
+  }
+  constexpr std::uintmax_t kBytesPerTraceRow = 64, kBytesOfJudgements = 1 << 20;  // a geometric cadence: few
+  const std::unique_ptr<io::AtomicFile> trace_file =
+      OpenTrace("--trace", args.trace, args, out.get(),
+                kBytesPerTraceRow * static_cast<std::uintmax_t>(replay.survey().range_rows), report::kTraceHeader);
+  const std::unique_ptr<io::AtomicFile> certificate_file = OpenTrace(
+      "--certificate-trace", args.certificate_trace, args, out.get(), kBytesOfJudgements, report::kJudgementColumns);
   engine::TraceSink trace;
-  if (!args.trace.empty()) {
-    if (out && io::IsInside(args.trace, out->target())) {
-      throw schema::InputError("--trace " + args.trace + ": lies inside --out " + args.out +
-                           ", which is replaced as a whole; put the trace beside it");
-    }
-    constexpr std::uintmax_t kBytesPerTraceRow = 64;
-    trace_file = std::make_unique<io::AtomicFile>(args.trace, args.overwrite, Inputs(args),
-                                                  kBytesPerTraceRow * static_cast<std::uintmax_t>(replay.survey().range_rows));
-    trace_file->stream() << report::kTraceHeader << '\n';
+  if (trace_file) {
     trace = [&](const io::RangeRecord& r, const estimator::FeedResult& fed) {
       report::WriteTraceRow(trace_file->stream(), r, fed);
+    };
+  }
+  engine::JudgementSink judged;
+  if (certificate_file) {
+    judged = [&](int anchor_id, std::size_t trigger, const estimator::Judgement& judgement) {
+      report::WriteJudgementRow(certificate_file->stream(), anchor_id, config.estimator.triggers[trigger], judgement);
     };
   }
 
@@ -91,12 +113,13 @@ int ReplayCommand(const ReplayArgs& args, const AppContext& app) {
   const engine::ReplayOutcome outcome = replay.Run(trace, [&](std::uint64_t done, std::uint64_t total) {
     engine::ThrowIfStopped(app.stop);  // every 65,536 rows
     progress.Update(static_cast<long long>(done), static_cast<long long>(total));
-  });
+  }, judged);
   if (progress.elapsed_s() > 1.0) progress.Finish(static_cast<long long>(replay.survey().bytes));
 
   if (!args.quiet) report::PrintReplaySummary(std::cerr, outcome.summary);
   report::PrintEstimates(std::cout, outcome.result.attempts);
   if (trace_file) trace_file->Commit();
+  if (certificate_file) certificate_file->Commit();
   if (out) {
     const engine::FileWriter write = [&](const std::string& name, const std::function<void(std::ostream&)>& file) {
       out->Write(name, file);

@@ -60,7 +60,19 @@ expect_error "unknown trigger" "key 'estimator.triggers': unknown trigger 'pdop_
   --trace "$dir/trace.csv" --out "$dir/out" >/dev/null || { echo "FAIL: replay"; failures=$((failures + 1)); }
 [ "$(head -1 "$dir/trace.csv")" = "t,tag_id,anchor_id,range,accepted,n_accepted,pdop" ] || { echo "FAIL: trace header"; failures=$((failures + 1)); }
 [ "$(($(wc -l <"$dir/trace.csv")))" -eq "$(($(wc -l <"$dir/sim/ranges.csv")))" ] || { echo "FAIL: one trace row per range"; failures=$((failures + 1)); }
-[ "$(head -1 "$dir/out/estimates.csv")" = "anchor_id,method,initialized,t_init,n_used,pdop_est,pdop_true,x,y,z,bias,err_m,status,err_xy,err_z,bias_aware_hdop,bias_aware_vdop,scale" ] || { echo "FAIL: estimates header"; failures=$((failures + 1)); }
+# The certificate's trace: one row per evaluation, each naming the test that held the anchor back
+# (or "fired"), one "fired" row per certified anchor in estimates.csv.
+"$bin" replay --quiet --poses "$dir/sim/poses.csv" --ranges "$dir/sim/ranges.csv" --certificate-trace "$dir/cert.csv" \
+  --out "$dir/out_cert" >/dev/null || { echo "FAIL: replay --certificate-trace"; failures=$((failures + 1)); }
+[ "$(head -1 "$dir/cert.csv" | cut -d, -f1-7)" = "t,anchor_id,method,samples,blocked_by,value,limit" ] || { echo "FAIL: certificate trace header"; failures=$((failures + 1)); }
+bad_tests=$(tail -n +2 "$dir/cert.csv" | cut -d, -f5 | grep -cvE '^(solve|region|region_ends|mirror|alternative|doubling|stability|fired)$' || true)
+[ "$bad_tests" -eq 0 ] || { echo "FAIL: certificate trace names $bad_tests unknown tests"; failures=$((failures + 1)); }
+fired=$(tail -n +2 "$dir/cert.csv" | grep -c ',certified,[0-9]*,fired,' || true)
+certified=$(grep -c ',certified,1,' "$dir/out_cert/estimates.csv" || true)
+[ "$fired" -eq "$certified" ] || { echo "FAIL: $fired fired rows, $certified certified anchors"; failures=$((failures + 1)); }
+expect_error "certificate trace is the trace" "is also --trace" "$bin" replay --poses "$dir/sim/poses.csv" --ranges "$dir/sim/ranges.csv" \
+  --trace "$dir/same.csv" --certificate-trace "$dir/same.csv"
+[ "$(head -1 "$dir/out/estimates.csv")" = "anchor_id,method,initialized,t_init,n_used,pdop_est,pdop_true,x,y,z,bias,err_m,status,err_xy,err_z,bias_aware_hdop,bias_aware_vdop,scale,blocked_by,blocked_value,blocked_limit,t_first,t_oracle,latency" ] || { echo "FAIL: estimates header"; failures=$((failures + 1)); }
 grep -qi nan "$dir/out/estimates.csv" && { echo "FAIL: NaN in estimates"; failures=$((failures + 1)); }
 ls "$dir"/*.tmp.* "$dir"/out/*.tmp.* >/dev/null 2>&1 && { echo "FAIL: temporary files left"; failures=$((failures + 1)); }
 "$bin" replay --help >/dev/null || { echo "FAIL: replay --help"; failures=$((failures + 1)); }

@@ -196,6 +196,7 @@ void Estimator(V& v, schema::EstimatorConfig& o, const registry::Components& com
     s.Number("accuracy_m", o.certificate.accuracy_m);
     s.Number("confidence", o.certificate.confidence);
     s.Number("evaluate_growth", o.certificate.evaluate_growth);
+    s.Number("stable_since", o.certificate.stable_since);
     Covariance(s, o.certificate.covariance);
     s.Check(o.certificate);
   });

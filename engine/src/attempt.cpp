@@ -32,6 +32,7 @@ schema::Attempt AttemptOf(const estimator::AnchorInitializer& initializer, const
     a.solve = failed->solve;  // triggered, but every solve failed
     a.t_failed_solve_s = failed->t_s;
   }
+  if (!a.initialized) a.why_not = initializer.why_not();
   if (a.solve) {
     a.status = std::string(estimator::ToString(a.solve->status));
   } else if (const std::optional<estimator::SolveStatus> refusal = initializer.trigger_refusal()) {
@@ -42,6 +43,13 @@ schema::Attempt AttemptOf(const estimator::AnchorInitializer& initializer, const
   // The initializer's buffer is exactly the data of the solve (online triggers stop buffering at init).
   if (truth) a.evaluation = eval::Evaluate(initializer.p_world_tag(), a.initialized ? &*a.solve : nullptr, *truth);
   return a;
+}
+
+void AddOracleLatency(const eval::OracleLatency& oracle, schema::Attempt& attempt) {
+  if (!attempt.evaluation) return;
+  attempt.evaluation->t_first_s = oracle.t_first_s;
+  attempt.evaluation->t_oracle_s = oracle.t_oracle_s;
+  attempt.evaluation->latency_ratio = eval::LatencyRatio(oracle, attempt.initialized ? attempt.t_init_s : std::nullopt);
 }
 
 }  // namespace anchorbench::engine

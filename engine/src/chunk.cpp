@@ -130,8 +130,8 @@ void CheckUnits(const Plan& plan, int chunk, const std::vector<schema::Attempt>&
 // The summaries' fields of an attempt, fixed size (what ParseAttempts reads from a line).
 struct Record {
   std::int32_t row, realization, anchor_id, method;  // method: index into the row's triggers
-  std::uint8_t initialized, has_error, has_nees, padding[5];
-  double t_init_s, error_m, nees_position, compute_s;
+  std::uint8_t initialized, has_error, has_nees, has_oracle, has_latency, padding[3];
+  double t_init_s, error_m, nees_position, compute_s, t_oracle_s, latency_ratio;
 };
 
 }  // namespace
@@ -162,6 +162,10 @@ std::string ChunkRecords(const Plan& plan, int chunk, const ChunkResult& result)
       r.error_m = a.evaluation->error_m.value_or(0.0);
       r.has_nees = a.evaluation->nees_position.has_value();
       r.nees_position = a.evaluation->nees_position.value_or(0.0);
+      r.has_oracle = a.evaluation->t_oracle_s.has_value();
+      r.t_oracle_s = a.evaluation->t_oracle_s.value_or(0.0);
+      r.has_latency = a.evaluation->latency_ratio.has_value();
+      r.latency_ratio = a.evaluation->latency_ratio.value_or(0.0);
     }
     r.compute_s = a.compute_s;
     std::memcpy(records.data() + i * sizeof(Record), &r, sizeof(Record));
@@ -188,12 +192,14 @@ ChunkResult FromRecords(const Plan& plan, int chunk, std::string_view text, std:
     }
     a.method = rows[static_cast<std::size_t>(r.row)].estimator.triggers[static_cast<std::size_t>(r.method)];
     a.initialized = r.initialized != 0;
-    if (a.initialized) {
+    if (a.initialized || r.has_oracle) a.evaluation.emplace();
+    if (a.initialized) {  // as ParseAttempts reads a line
       a.t_init_s = r.t_init_s;
-      a.evaluation.emplace();
       if (r.has_error) a.evaluation->error_m = r.error_m;
       if (r.has_nees) a.evaluation->nees_position = r.nees_position;
+      if (r.has_latency) a.evaluation->latency_ratio = r.latency_ratio;
     }
+    if (r.has_oracle) a.evaluation->t_oracle_s = r.t_oracle_s;
     a.compute_s = r.compute_s;
   }
   CheckUnits(plan, chunk, result.attempts, source, [&](std::size_t i) { return source + ": record " + std::to_string(i); });

@@ -14,6 +14,7 @@
 #include "anchorbench/engine/executor.hpp"
 #include "anchorbench/engine/run_plan.hpp"
 #include "anchorbench/estimator/front_end.hpp"
+#include "anchorbench/eval/oracle_latency.hpp"
 #include "anchorbench/schema/input_error.hpp"
 #include "anchorbench/sim/scenario.hpp"
 
@@ -62,6 +63,33 @@ std::vector<schema::Attempt> RunTrigger(const schema::RowConfig& row, const std:
     attempts.back().compute_s = compute_s / static_cast<double>(anchor_ids.size());
   }
   return attempts;
+}
+
+// The oracle's time of every anchor (eval/oracle_latency.hpp): one more pass with the row's filter
+// and solver, judged against the truth.
+std::map<int, eval::OracleLatency> OracleLatencies(const schema::RowConfig& row, std::uint64_t seed, int realization,
+                                                   const registry::Components& components,
+                                                   const std::map<int, schema::AnchorTruth>& truth,
+                                                   const std::vector<estimator::RangeSample>& samples, double t_end_s) {
+  std::map<int, std::shared_ptr<eval::OracleLog>> logs;
+  estimator::FrontEnd front_end([&](int anchor_id) {
+    std::vector<estimator::AnchorInitializer> chain;
+    const schema::AnchorTruth* known = TruthOf(&truth, anchor_id);
+    if (!known) return chain;
+    auto& log = logs[anchor_id] = std::make_shared<eval::OracleLog>();
+    chain.push_back(eval::MakeOracleChain(components, anchor_id, row.estimator,
+                                          SolverSeed(seed, static_cast<std::uint64_t>(realization), anchor_id),
+                                          known->p_world_anchor, log));
+    return chain;
+  });
+  for (const estimator::RangeSample& sample : samples) front_end.AddSample(sample);
+  front_end.Finish(t_end_s);
+  std::map<int, eval::OracleLatency> latencies;
+  for (const auto& [anchor_id, log] : logs) {
+    latencies[anchor_id] = eval::OracleOf(front_end.chains(anchor_id).front(), *log, row.estimator.certificate.accuracy_m,
+                                          truth.at(anchor_id).p_world_anchor, t_end_s);
+  }
+  return latencies;
 }
 
 }  // namespace
@@ -129,6 +157,8 @@ std::vector<schema::Attempt> RunRealization(const schema::RowConfig& row, int ro
   for (const std::string& trigger : row.estimator.triggers) {
     by_trigger.push_back(RunTrigger(row, trigger, seed, realization, components, truth, samples, t_end_s));
   }
+  const std::map<int, eval::OracleLatency> oracle =
+      OracleLatencies(row, seed, realization, components, truth, samples, t_end_s);
   // Anchor by anchor, triggers in list order.
   std::vector<schema::Attempt> attempts;
   const double sigma_m = row.scenario.ranging.sigma_range_m;
@@ -137,6 +167,7 @@ std::vector<schema::Attempt> RunRealization(const schema::RowConfig& row, int ro
       schema::Attempt& attempt = trigger_attempts[a];
       attempt.row = row_index;
       attempt.realization = realization;
+      if (const auto found = oracle.find(attempt.anchor_id); found != oracle.end()) AddOracleLatency(found->second, attempt);
       if (attempt.evaluation && attempt.evaluation->bias_aware_dop) {
         attempt.crlb_m = sigma_m * *attempt.evaluation->bias_aware_dop;
       }

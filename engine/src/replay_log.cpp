@@ -17,7 +17,8 @@ ReplayLog::ReplayLog(io::LogFiles files, io::LogPolicy policy, std::optional<std
   CheckReplayable(survey_.anchor_ids, truth_ ? &*truth_ : nullptr, config_.estimator, components_);
 }
 
-ReplayOutcome ReplayLog::Run(const TraceSink& trace, const io::ByteProgress& progress) const {
+ReplayOutcome ReplayLog::Run(const TraceSink& trace, const io::ByteProgress& progress,
+                             const JudgementSink& judged) const {
   ReplayOutcome outcome;
   outcome.summary = {files_, policy_, survey_.pose_rows, survey_.range_rows, {}, {}, survey_.reordered_rows};
   io::RecordedLog log(files_, policy_, survey_.default_tag_id, outcome.summary.drops);
@@ -27,7 +28,7 @@ ReplayOutcome ReplayLog::Run(const TraceSink& trace, const io::ByteProgress& pro
     return log.Next(kind, pose, range);
   };
   outcome.result = Replay(source, files_.ranges, truth_ ? &*truth_ : nullptr, config_.estimator, components_,
-                          config_.seed, trace);
+                          config_.seed, trace, judged);
   outcome.summary.drops.Add(outcome.result.drops);
   outcome.summary.samples_by_anchor = outcome.result.samples_by_anchor;
   return outcome;

@@ -17,6 +17,8 @@ bool InitializerOptions::IsValid(std::string* why) const {
   }
   // Bounded so that the retry size (an integer) cannot overflow.
   if (!(retry_growth > 1.0 && retry_growth <= 100.0)) return fail("retry_growth must be in (1, 100]");
+  // At most 1e7 samples (360 MB) a chain: memory stays bounded whatever the config says.
+  if (max_buffered_samples > 10000000) return fail("max_buffered_samples must be <= 1e7");
   if (max_buffered_samples / 2 < min_samples) {
     return fail("max_buffered_samples must be >= 2 min_samples (a thinned buffer keeps half)");
   }
@@ -157,6 +159,28 @@ std::optional<InitEvent> AnchorInitializer::CompletePendingSolve(const PendingWo
     queued_.pop_front();
   }
   return std::nullopt;
+}
+
+std::optional<Judgement> AnchorInitializer::why_not() const {
+  if (initialized_ || n_admitted_ == 0) return std::nullopt;
+  auto own = [this](std::string_view test, double limit) {
+    Judgement j;
+    j.samples = range_m_.size();
+    j.blocked_by = test;
+    j.value = static_cast<double>(n_admitted_);
+    j.limit = limit;
+    return j;
+  };
+  if (n_admitted_ < static_cast<std::size_t>(options_.min_samples)) return own("samples", options_.min_samples);
+  if (n_admitted_ < next_attempt_size_) return own("retry", static_cast<double>(next_attempt_size_));
+  return trigger_->why_not();
+}
+
+std::optional<Judgement> AnchorInitializer::TakeJudgement() {
+  const std::size_t evaluations = trigger_->evaluations();
+  if (evaluations == judgements_taken_) return std::nullopt;
+  judgements_taken_ = evaluations;
+  return trigger_->why_not();
 }
 
 std::optional<InitEvent> AnchorInitializer::Finish(double t_s) {

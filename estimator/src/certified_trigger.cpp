@@ -59,6 +59,10 @@ bool CertificateOptions::IsValid(std::string* why) const {
     if (why) *why = "evaluate_growth must be in (1, 10]";
     return false;
   }
+  if (!(stable_since >= 0.1 && stable_since <= 0.95)) {
+    if (why) *why = "stable_since must be in [0.1, 0.95]";
+    return false;
+  }
   if (!(confidence >= 0.5 && confidence <= 0.9999)) {
     if (why) *why = "confidence must be in [0.5, 0.9999]";
     return false;
@@ -138,6 +142,8 @@ CertifiedTrigger::Verdict CertifiedTrigger::RuleOutAlternatives(std::span<const 
   const double scale_m = ResidualScale(p_world_tag, range_m, estimate.p_world_anchor, estimate.bias_m);
   ++tests_;
   const double threshold = mirror_.min_evidence + 2.0 * std::log(static_cast<double>(tests_));
+  judgement_.evidence_needed = threshold;
+  judgement_.evidence = kInf;  // none farther than D: nothing to rule out
   for (const Alternative& start : Alternatives(p_world_tag, range_m, estimate, axes)) {
     Alternative fit = start;
     const SolveResult refined = refine_.Solve(p_world_tag, range_m, start.p_world_anchor, start.bias_m, height_prior_);
@@ -159,6 +165,8 @@ CertifiedTrigger::Verdict CertifiedTrigger::RuleOutAlternatives(std::span<const 
     const bool separated =
         height_prior_ || Separation(p_world_tag, estimate.p_world_anchor, estimate.bias_m, fit.p_world_anchor,
                                     fit.bias_m, scale_m) >= mirror_.min_separation;
+    // Too close to tell counts as no evidence at all.
+    judgement_.evidence = std::min(judgement_.evidence, separated ? evidence : 0.0);
     if (!separated || !(evidence >= threshold)) return start.mirror ? Verdict::kMirror : Verdict::kOtherMinimum;
   }
   return Verdict::kRuledOut;
@@ -177,7 +185,7 @@ std::vector<int> CertifiedTrigger::EstimatedTags(std::span<const int> tag_id, st
 
 double CertifiedTrigger::LargestVariance(std::span<const Eigen::Vector3d> p_world_tag, std::span<const int> tag_id,
                                          const std::vector<int>& tags, const Eigen::Vector3d& point,
-                                         double noise_variance) const {
+                                         double noise_variance, double travel_bias_m) const {
   // The noise part: the (p_A, gamma) block of the information's inverse, with each tag's offset
   // among the unknowns where they are estimated (tag_biases.hpp).
   const Eigen::MatrixXd information =
@@ -190,7 +198,6 @@ double CertifiedTrigger::LargestVariance(std::span<const Eigen::Vector3d> p_worl
     if (ldlt.info() != Eigen::Success) return kInf;
     noise = ldlt.solve(Eigen::MatrixXd::Identity(information.rows(), information.cols())).topLeftCorner<4, 4>();
   }
-  const double travel_bias_m = travel_bias_ ? travel_bias_(std::sqrt(noise_variance)) : 0.0;
   const Eigen::Matrix4d p =
       noise_variance * noise + ModelErrorCovariance(p_world_tag, tag_id, point, covariance_, travel_bias_m);
   const Eigen::Matrix3d position = p.topLeftCorner<3, 3>();
@@ -198,12 +205,11 @@ double CertifiedTrigger::LargestVariance(std::span<const Eigen::Vector3d> p_worl
   return Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d>(position, Eigen::EigenvaluesOnly).eigenvalues().maxCoeff();
 }
 
-bool CertifiedTrigger::RegionWithinTarget(const TriggerInput& in, const SolveResult& estimate,
-                                          const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d>& axes) const {
+double CertifiedTrigger::RegionFromEnds(const TriggerInput& in, const SolveResult& estimate,
+                                      const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d>& axes) const {
   const std::span<const Eigen::Vector3d> p_world_tag = in.p_world_tag;
   const std::span<const double> range_m = in.range_m;
   const double limit = options_.accuracy_m * options_.accuracy_m / region_chi2_;  // of the largest variance
-  if (!(axes.eigenvalues().maxCoeff() <= limit)) return false;
   // From the ends of the region's axes, with the estimate's noise (floored at the model error)
   // scaled for its correlation.
   const double scale_m = std::max(ResidualScale(p_world_tag, range_m, estimate.p_world_anchor, estimate.bias_m),
@@ -211,45 +217,131 @@ bool CertifiedTrigger::RegionWithinTarget(const TriggerInput& in, const SolveRes
   const double factor =
       covariance_.correlated_noise ? CorrelationFactor(p_world_tag, range_m, estimate.p_world_anchor, estimate.bias_m) : 1.0;
   const std::vector<int> tags = EstimatedTags(in.tag_id, p_world_tag.size());
+  const double travel_bias_m =
+      travel_bias_ ? travel_bias_(DifferenceScale(p_world_tag, range_m, in.tag_id, estimate.p_world_anchor, estimate.bias_m))
+                   : 0.0;
+  double worst = 0.0;
   for (int i = 0; i < 3; ++i) {
     const Eigen::Vector3d half_axis =
         std::sqrt(region_chi2_ * std::max(axes.eigenvalues()(i), 0.0)) * axes.eigenvectors().col(i);
     for (const double side : {-1.0, 1.0}) {
       const Eigen::Vector3d end = estimate.p_world_anchor + side * half_axis;
-      if (!(LargestVariance(p_world_tag, in.tag_id, tags, end, factor * scale_m * scale_m) <= limit)) return false;
+      const double variance = LargestVariance(p_world_tag, in.tag_id, tags, end, factor * scale_m * scale_m, travel_bias_m);
+      if (!(variance <= limit)) return std::sqrt(region_chi2_ * variance);  // the first end beyond D decides
+      worst = std::max(worst, variance);
     }
   }
-  return true;
+  return std::sqrt(region_chi2_ * worst);
+}
+
+void CertifiedTrigger::ShareRegion(const TriggerInput& in, const SolveResult& noise_only, double correlation_factor,
+                                   const Eigen::Vector3d& axis, double largest_variance) {
+  // Along the region's longest axis v, each term's v^T P v. The noise part's tags' offsets are
+  // what the joint information with them adds to the one-bias information's inverse.
+  const double noise = axis.dot(noise_only.covariance.topLeftCorner<3, 3>() * axis);
+  double tags_part = 0.0;
+  const std::vector<int> tags = EstimatedTags(in.tag_id, in.p_world_tag.size());
+  if (tags.size() > 1) {
+    const double scale_m = ResidualScale(in.p_world_tag, in.range_m, noise_only.p_world_anchor, noise_only.bias_m);
+    Eigen::Matrix4d one_bias;
+    const Eigen::MatrixXd information = TagInformation(in.p_world_tag, {}, {0}, noise_only.p_world_anchor);
+    if (internal::InvertNormalMatrix(information.topLeftCorner<4, 4>(), &one_bias)) {
+      tags_part = std::clamp(noise - scale_m * scale_m * axis.dot(one_bias.topLeftCorner<3, 3>() * axis), 0.0, noise);
+    }
+  }
+  const double travel_bias_m =
+      covariance_.travel_bias && travel_bias_
+          ? travel_bias_(DifferenceScale(in.p_world_tag, in.range_m, in.tag_id, noise_only.p_world_anchor, noise_only.bias_m))
+          : 0.0;
+  const ModelErrorTerms terms =
+      ModelErrorCovarianceTerms(in.p_world_tag, in.tag_id, noise_only.p_world_anchor, covariance_, travel_bias_m);
+  const double parts[] = {noise - tags_part, (correlation_factor - 1.0) * noise, axis.dot(terms.model.topLeftCorner<3, 3>() * axis),
+                          axis.dot(terms.travel.topLeftCorner<3, 3>() * axis), axis.dot(terms.links.topLeftCorner<3, 3>() * axis),
+                          correlation_factor * tags_part};
+  const double total = std::max(parts[0] + parts[1] + parts[2] + parts[3] + parts[4] + parts[5], 1e-300);
+  judgement_.share_noise = parts[0] / total;
+  judgement_.share_correlation = parts[1] / total;
+  judgement_.share_model_error = parts[2] / total;
+  judgement_.share_travel_bias = parts[3] / total;
+  judgement_.share_link_offsets = parts[4] / total;
+  judgement_.share_tag_offsets = parts[5] / total;
+  judgement_.region_m = std::sqrt(region_chi2_ * largest_variance);
 }
 
 bool CertifiedTrigger::Evaluate(const TriggerInput& in) {
+  const bool certified = Judge(in);
+  // A structural refusal (a flat path's mirror, a line's failed solve or unbounded region) that
+  // keeps coming back will not move with a few more samples: from the kStructuralRepeats-th on, ask
+  // later each time (SolveCadence::BackOff), until an estimate gets past the mirror. A finite
+  // region shrinks with data: it neither counts nor resets.
+  const std::string_view test = judgement_.blocked_by;
+  if (test == "solve" || test == "mirror" || (test == "region" && !std::isfinite(judgement_.value))) {
+    if (++structural_refusals_ >= kStructuralRepeats) cadence_.BackOff();
+  } else if (test != "region" && test != "region_ends") {
+    structural_refusals_ = 0;
+    cadence_.Resume();
+  }
+  return certified;
+}
+
+bool CertifiedTrigger::Judge(const TriggerInput& in) {
+  ++evaluations_;
+  judgement_ = Judgement{};
+  judgement_.t_s = in.t_s;
+  judgement_.samples = in.range_m.size();
+  const double d_m = options_.accuracy_m;
+  auto blocked = [this](std::string_view test, double value, double limit) {
+    judgement_.blocked_by = test;
+    judgement_.value = value;
+    judgement_.limit = limit;
+    return false;
+  };
   // Every test below on the ranges as the solve fitted them: less each tag's offset.
   TriggerInput fitted = in;
   SolveResult estimate =
       SolveWithTagBiases(*solver_, in.p_world_tag, in.range_m, in.tag_id, tag_biases_, nullptr, &corrected_m_);
-  if (!Succeeded(estimate.status)) return false;
+  if (!Succeeded(estimate.status)) return blocked("solve", Judgement::kNone, Judgement::kNone);
   fitted.range_m = corrected_m_;
+  const SolveResult noise_only = estimate;
   MakeCredible(fitted.p_world_tag, fitted.range_m, fitted.tag_id, covariance_, travel_bias_, &estimate);
-  // 0. Stable since half the data: every estimate from the last evaluation at or before N/2 on
-  // within D of this one. An estimate that slides along a trade-off valley as data come (a wall
-  // anchor seen from the room, range against bias) moves by more than D over a doubling.
+  // 0. Stable since a share of the data (stable_since; half: a doubling): every estimate from the
+  // last evaluation at or before that share of N on within D of this one. An estimate that slides
+  // along a trade-off valley as data come (a wall anchor seen from the room, range against bias)
+  // moves by more than D over the window.
   history_.push_back({in.range_m.size(), estimate.p_world_anchor});
   std::size_t first = 0;
-  while (first + 1 < history_.size() && 2 * history_[first + 1].samples <= in.range_m.size()) ++first;
+  const double since = options_.stable_since * static_cast<double>(in.range_m.size());
+  while (first + 1 < history_.size() && static_cast<double>(history_[first + 1].samples) <= since) ++first;
   history_.erase(history_.begin(), history_.begin() + static_cast<std::ptrdiff_t>(first));
-  const bool doubled = 2 * history_.front().samples <= in.range_m.size();
-  const bool stable = doubled && std::all_of(history_.begin(), history_.end(), [&](const Evaluated& e) {
-                        return (e.p_world_anchor - estimate.p_world_anchor).norm() <= options_.accuracy_m;
-                      });
+  const bool doubled = static_cast<double>(history_.front().samples) <= since;
+  double spread_m = 0.0;
+  for (const Evaluated& e : history_) spread_m = std::max(spread_m, (e.p_world_anchor - estimate.p_world_anchor).norm());
+  judgement_.stability_m = spread_m;
   // The cheap test first (the region), then the alternatives' fits (whose verdict says why an
   // estimate is refused: a mirror is height_unobservable), then the stability.
   const Eigen::Matrix3d covariance = estimate.covariance.topLeftCorner<3, 3>();
-  if (!covariance.allFinite()) return false;
+  if (!covariance.allFinite()) return blocked("region", kInf, d_m);
   const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> axes(covariance);
-  if (!RegionWithinTarget(fitted, estimate, axes)) return false;
+  const double correlation_factor =
+      covariance_.correlated_noise
+          ? CorrelationFactor(fitted.p_world_tag, fitted.range_m, noise_only.p_world_anchor, noise_only.bias_m)
+          : 1.0;
+  ShareRegion(fitted, noise_only, correlation_factor, axes.eigenvectors().col(2), axes.eigenvalues()(2));
+  const double limit = d_m * d_m / region_chi2_;  // of the largest variance
+  if (!(axes.eigenvalues().maxCoeff() <= limit)) return blocked("region", judgement_.region_m, d_m);
+  const double from_ends_m = RegionFromEnds(fitted, estimate, axes);
+  if (!(from_ends_m <= d_m)) return blocked("region_ends", from_ends_m, d_m);
   const Verdict verdict = RuleOutAlternatives(fitted.p_world_tag, fitted.range_m, estimate, axes.eigenvectors());
   refusal_ = verdict == Verdict::kMirror ? std::optional(SolveStatus::kHeightUnobservable) : std::nullopt;
-  return verdict == Verdict::kRuledOut && stable;
+  if (verdict == Verdict::kMirror) return blocked("mirror", judgement_.evidence, judgement_.evidence_needed);
+  if (verdict == Verdict::kOtherMinimum) return blocked("alternative", judgement_.evidence, judgement_.evidence_needed);
+  if (!doubled) {
+    return blocked("doubling", static_cast<double>(in.range_m.size()),
+                   static_cast<double>(history_.front().samples) / options_.stable_since);
+  }
+  if (!(spread_m <= d_m)) return blocked("stability", spread_m, d_m);
+  judgement_.blocked_by = {};
+  return true;
 }
 
 }  // namespace anchorbench::estimator

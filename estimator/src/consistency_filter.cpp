@@ -36,16 +36,16 @@ bool ConsistencyFilter::Accept(int tag_id, const Eigen::Vector3d& p_world_tag, d
   return true;
 }
 
-double ConsistencyFilter::TravelBias(double residual_scale_m) const {
-  // g(tau / s), linear between the measured points (consistency_filter.hpp), 0 beyond 8.
-  constexpr double kRatio[] = {0.0, 0.43, 1.0, 2.15, 3.05, 5.0, 8.0, 12.0};
-  constexpr double kBias[] = {0.70, 0.70, 0.59, 0.165, 0.05, 0.015, 0.01, 0.0};
-  if (!(residual_scale_m > 0.0) || !std::isfinite(residual_scale_m)) return 0.0;
-  const double ratio = options_.tau_m / residual_scale_m;
+double ConsistencyFilter::TravelBias(double difference_scale_m) const {
+  // g(tau / q), linear between the measured points (consistency_filter.hpp), 0 beyond 12.
+  constexpr double kRatio[] = {0.0, 0.5, 0.92, 1.52, 2.0, 2.4, 3.2, 5.0, 8.0, 12.0};
+  constexpr double kBias[] = {1.25, 1.25, 1.2, 0.85, 0.43, 0.2, 0.05, 0.02, 0.015, 0.0};
+  if (!(difference_scale_m > 0.0) || !std::isfinite(difference_scale_m)) return 0.0;
+  const double ratio = options_.tau_m / difference_scale_m;
   for (std::size_t i = 1; i < std::size(kRatio); ++i) {
     if (ratio <= kRatio[i]) {
       const double w = (ratio - kRatio[i - 1]) / (kRatio[i] - kRatio[i - 1]);
-      return ((1.0 - w) * kBias[i - 1] + w * kBias[i]) * residual_scale_m;
+      return ((1.0 - w) * kBias[i - 1] + w * kBias[i]) * difference_scale_m;
     }
   }
   return 0.0;

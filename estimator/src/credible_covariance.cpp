@@ -78,9 +78,19 @@ void Harmonics(const Eigen::Vector3d& u, int degree, double* out) {
   out[14] = a * x * (x * x - 3.0 * y * y);
 }
 
-Eigen::Matrix4d ModelErrorCovariance(std::span<const Eigen::Vector3d> p_world_tag, std::span<const int> tag_id,
-                                     const Eigen::Vector3d& p_world_anchor, const CovarianceOptions& options,
-                                     double travel_bias_m) {
+namespace {
+
+// The added terms' range errors projected on the solve, J^T E E^T J for each kind, and A^-1.
+struct ProjectedTerms {
+  bool any = false;
+  Eigen::Matrix4d a_inverse = Eigen::Matrix4d::Zero();
+  Eigen::Matrix4d model = Eigen::Matrix4d::Zero(), travel = Eigen::Matrix4d::Zero(), links = Eigen::Matrix4d::Zero();
+  Eigen::Matrix4d total = Eigen::Matrix4d::Zero();  // the three, summed in the order the reported covariance always has
+};
+
+ProjectedTerms Project(std::span<const Eigen::Vector3d> p_world_tag, std::span<const int> tag_id,
+                       const Eigen::Vector3d& p_world_anchor, const CovarianceOptions& options, double travel_bias_m) {
+  ProjectedTerms out;
   const int harmonics = options.model_error_m > 0.0 ? HarmonicCount(options.model_error_degree) : 0;
   const bool travel = options.travel_bias && travel_bias_m != 0.0;
   // The tags in the data, a handful at most (a robot's); one tag's offset is the bias itself.
@@ -91,7 +101,7 @@ Eigen::Matrix4d ModelErrorCovariance(std::span<const Eigen::Vector3d> p_world_ta
     }
   }
   const bool links = tags.size() >= 2;
-  if (harmonics == 0 && !travel && !links) return Eigen::Matrix4d::Zero();
+  if (harmonics == 0 && !travel && !links) return out;
   std::vector<Eigen::Vector4d> jt_links(links ? tags.size() : 0, Eigen::Vector4d::Zero());
   Eigen::Matrix4d a = Eigen::Matrix4d::Zero();
   Eigen::Matrix<double, 4, kMaxHarmonics> jt_harmonics = Eigen::Matrix<double, 4, kMaxHarmonics>::Zero();
@@ -108,16 +118,44 @@ Eigen::Matrix4d ModelErrorCovariance(std::span<const Eigen::Vector3d> p_world_ta
     if (travel) jt_travel += row.j * RangeRateSign(p_world_tag, p_world_anchor, k);
     if (links) jt_links[static_cast<std::size_t>(std::find(tags.begin(), tags.end(), tag_id[k]) - tags.begin())] += row.j;
   }
-  Eigen::Matrix4d a_inverse;
-  if (!internal::InvertNormalMatrix(a, &a_inverse)) return Eigen::Matrix4d::Zero();
-  Eigen::Matrix4d sum = Eigen::Matrix4d::Zero();
+  if (!internal::InvertNormalMatrix(a, &out.a_inverse)) return out;
+  out.any = true;
   if (harmonics > 0) {  // equal variances: the RMS over the sphere is model_error_m
     const double variance = options.model_error_m * options.model_error_m / harmonics;
-    sum.noalias() += variance * jt_harmonics.leftCols(harmonics) * jt_harmonics.leftCols(harmonics).transpose();
+    out.model.noalias() = variance * jt_harmonics.leftCols(harmonics) * jt_harmonics.leftCols(harmonics).transpose();
+    out.total.noalias() += variance * jt_harmonics.leftCols(harmonics) * jt_harmonics.leftCols(harmonics).transpose();
   }
-  if (travel) sum.noalias() += travel_bias_m * travel_bias_m * jt_travel * jt_travel.transpose();
-  for (const Eigen::Vector4d& jt : jt_links) sum.noalias() += options.link_offset_m * options.link_offset_m * jt * jt.transpose();
-  return a_inverse * sum * a_inverse;
+  if (travel) {
+    out.travel.noalias() = travel_bias_m * travel_bias_m * jt_travel * jt_travel.transpose();
+    out.total.noalias() += travel_bias_m * travel_bias_m * jt_travel * jt_travel.transpose();
+  }
+  for (const Eigen::Vector4d& jt : jt_links) {
+    out.links.noalias() += options.link_offset_m * options.link_offset_m * jt * jt.transpose();
+    out.total.noalias() += options.link_offset_m * options.link_offset_m * jt * jt.transpose();
+  }
+  return out;
+}
+
+}  // namespace
+
+Eigen::Matrix4d ModelErrorCovariance(std::span<const Eigen::Vector3d> p_world_tag, std::span<const int> tag_id,
+                                     const Eigen::Vector3d& p_world_anchor, const CovarianceOptions& options,
+                                     double travel_bias_m) {
+  const ProjectedTerms t = Project(p_world_tag, tag_id, p_world_anchor, options, travel_bias_m);
+  if (!t.any) return Eigen::Matrix4d::Zero();
+  return t.a_inverse * t.total * t.a_inverse;
+}
+
+ModelErrorTerms ModelErrorCovarianceTerms(std::span<const Eigen::Vector3d> p_world_tag, std::span<const int> tag_id,
+                                          const Eigen::Vector3d& p_world_anchor, const CovarianceOptions& options,
+                                          double travel_bias_m) {
+  const ProjectedTerms t = Project(p_world_tag, tag_id, p_world_anchor, options, travel_bias_m);
+  ModelErrorTerms terms;
+  if (!t.any) return terms;
+  terms.model = t.a_inverse * t.model * t.a_inverse;
+  terms.travel = t.a_inverse * t.travel * t.a_inverse;
+  terms.links = t.a_inverse * t.links * t.a_inverse;
+  return terms;
 }
 
 double CorrelationFactor(std::span<const Eigen::Vector3d> p_world_tag, std::span<const double> range_m,
@@ -164,6 +202,31 @@ double ResidualScale(std::span<const Eigen::Vector3d> p_world_tag, std::span<con
   return std::sqrt(squares / static_cast<double>(range_m.size() - 4));
 }
 
+double DifferenceScale(std::span<const Eigen::Vector3d> p_world_tag, std::span<const double> range_m,
+                       std::span<const int> tag_id, const Eigen::Vector3d& p_world_anchor, double bias_m) {
+  struct Last {
+    int tag_id;
+    double residual_m;
+  };
+  std::vector<Last> last;  // one per tag: a handful at most
+  double squares = 0.0;
+  std::size_t count = 0;
+  const bool tagged = tag_id.size() == range_m.size();
+  for (std::size_t k = 0; k < range_m.size(); ++k) {
+    const int tag = tagged ? tag_id[k] : 0;
+    const double r = (p_world_tag[k] - p_world_anchor).norm() + bias_m - range_m[k];
+    const auto it = std::find_if(last.begin(), last.end(), [tag](const Last& l) { return l.tag_id == tag; });
+    if (it == last.end()) {
+      last.push_back({tag, r});
+      continue;
+    }
+    squares += (r - it->residual_m) * (r - it->residual_m);
+    ++count;
+    it->residual_m = r;
+  }
+  return count > 0 ? std::sqrt(squares / (2.0 * static_cast<double>(count))) : 0.0;
+}
+
 void MakeCredible(std::span<const Eigen::Vector3d> p_world_tag, std::span<const double> range_m,
                   std::span<const int> tag_id, const CovarianceOptions& options, const TravelBias& travel_bias,
                   SolveResult* solve) {
@@ -173,7 +236,7 @@ void MakeCredible(std::span<const Eigen::Vector3d> p_world_tag, std::span<const 
   }
   const double travel_bias_m =
       options.travel_bias && travel_bias
-          ? travel_bias(ResidualScale(p_world_tag, range_m, solve->p_world_anchor, solve->bias_m))
+          ? travel_bias(DifferenceScale(p_world_tag, range_m, tag_id, solve->p_world_anchor, solve->bias_m))
           : 0.0;
   solve->covariance += ModelErrorCovariance(p_world_tag, tag_id, solve->p_world_anchor, options, travel_bias_m);
 }

@@ -33,7 +33,24 @@ bool FrontEnd::AddAnchor(int anchor_id) {
 }
 
 void FrontEnd::Emit(int anchor_id, std::size_t chain, const InitEvent& event) {
-  events_.push_back({anchor_id, chain, event});
+  FrontEndEvent initialized;
+  initialized.anchor_id = anchor_id;
+  initialized.chain = chain;
+  initialized.init = event;
+  events_.push_back(std::move(initialized));
+}
+
+void FrontEnd::EmitJudgement(int anchor_id, std::size_t chain, AnchorInitializer& initializer) {
+  if (!options_.report_judgements) return;
+  if (std::optional<Judgement> judged = initializer.TakeJudgement()) {
+    FrontEndEvent judged_event;
+    judged_event.anchor_id = anchor_id;
+    judged_event.chain = chain;
+    judged_event.init.anchor_id = anchor_id;
+    judged_event.kind = FrontEndEvent::Kind::kJudged;
+    judged_event.judgement = *judged;
+    events_.push_back(std::move(judged_event));
+  }
 }
 
 void FrontEnd::Drop(const WaitingRange& range, DroppedRange::Reason reason) {
@@ -56,6 +73,7 @@ void FrontEnd::Feed(const RangeSample& sample) {
   for (std::size_t c = 0; c < chains.size(); ++c) {
     const bool was_pending = chains[c].solve_pending();
     const FeedResult fed = chains[c].Feed(sample);
+    EmitJudgement(sample.anchor_id, c, chains[c]);
     if (fed.event) Emit(sample.anchor_id, c, *fed.event);
     if (fed.solve_pending && !was_pending) pending_.emplace_back(sample.anchor_id, c);
     if (c == 0 && observer_) observer_(sample, fed);
@@ -111,9 +129,9 @@ std::optional<FrontEnd::PendingSolve> FrontEnd::TakePendingSolve() {
 }
 
 void FrontEnd::CompletePendingSolve(const PendingSolve& solve, const PendingWork& work) {
-  if (std::optional<InitEvent> event = solve.initializer->CompletePendingSolve(work)) {
-    Emit(solve.anchor_id, solve.chain, *event);
-  }
+  std::optional<InitEvent> event = solve.initializer->CompletePendingSolve(work);
+  EmitJudgement(solve.anchor_id, solve.chain, *solve.initializer);
+  if (event) Emit(solve.anchor_id, solve.chain, *event);
   // The catch-up on the samples queued meanwhile fired again: due once more, behind the others.
   if (solve.initializer->solve_pending()) pending_.emplace_back(solve.anchor_id, solve.chain);
 }
@@ -150,7 +168,9 @@ void FrontEnd::Finish(double t_end_s) {
   RunPendingSolves();
   for (auto& [anchor_id, chains] : anchors_) {
     for (std::size_t c = 0; c < chains.size(); ++c) {
-      if (std::optional<InitEvent> event = chains[c].Finish(t_end_s)) Emit(anchor_id, c, *event);
+      std::optional<InitEvent> event = chains[c].Finish(t_end_s);
+      EmitJudgement(anchor_id, c, chains[c]);
+      if (event) Emit(anchor_id, c, *event);
     }
   }
 }

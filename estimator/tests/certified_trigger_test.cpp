@@ -5,6 +5,7 @@
 
 #include <cmath>
 #include <memory>
+#include <string>
 #include <vector>
 
 #include <gtest/gtest.h>
@@ -98,6 +99,101 @@ TEST(CertifiedTrigger, RefusesAFlatPathAsHeightUnobservable) {
 TEST(CertifiedTrigger, RefusesALineOfTags) {
   AnchorInitializer initializer = Certified();
   EXPECT_FALSE(FeedUntilInit(initializer, Samples(Line, 80.0, 0.05, 3)));
+}
+
+// Why it waits: every evaluation names the test that holds the anchor back, with its numbers; the
+// region's terms are shares of its largest variance.
+TEST(CertifiedTrigger, SaysWhichTestHoldsTheAnchorBack) {
+  AnchorInitializer flat = Certified();
+  EXPECT_FALSE(FeedUntilInit(flat, Samples(FlatFloor, 120.0, 0.05, 2)));
+  const std::optional<Judgement> refused = flat.why_not();
+  ASSERT_TRUE(refused);
+  EXPECT_EQ(refused->blocked_by, "mirror");
+  EXPECT_LT(refused->value, refused->limit);  // the mirror's evidence, short of the threshold
+  const std::vector<RangeSample> good = Samples(Wandering, 120.0, 0.05, 1);
+  AnchorInitializer early = Certified();
+  for (std::size_t k = 0; k < 60; ++k) early.Feed(good[k]);
+  const std::optional<Judgement> waiting = early.why_not();
+  ASSERT_TRUE(waiting);
+  EXPECT_FALSE(waiting->blocked_by.empty());
+  if (waiting->blocked_by == "region") {
+    EXPECT_GT(waiting->value, waiting->limit);
+    EXPECT_NEAR(waiting->share_noise + waiting->share_correlation + waiting->share_model_error +
+                    waiting->share_travel_bias + waiting->share_link_offsets + waiting->share_tag_offsets,
+                1.0, 1e-9);
+  }
+  AnchorInitializer fired = Certified();
+  ASSERT_TRUE(FeedUntilInit(fired, good));
+  EXPECT_FALSE(fired.why_not());  // nothing holds an initialized anchor back
+}
+
+// The stability window: a shorter one (a larger share) certifies no later.
+TEST(CertifiedTrigger, AShorterStabilityWindowFiresNoLater) {
+  const std::vector<RangeSample> samples = Samples(Wandering, 120.0, 0.05, 4);
+  CertificateOptions doubling, third;
+  doubling.stable_since = 0.5;
+  third.stable_since = 0.7;
+  AnchorInitializer a = Certified(doubling), b = Certified(third);
+  const std::optional<InitEvent> after_doubling = FeedUntilInit(a, samples), after_third = FeedUntilInit(b, samples);
+  ASSERT_TRUE(after_doubling && after_third);
+  EXPECT_LE(after_third->n_used, after_doubling->n_used);
+  CertificateOptions bad;
+  bad.stable_since = 1.0;
+  std::string why;
+  EXPECT_FALSE(bad.IsValid(&why));
+  EXPECT_NE(why.find("stable_since"), std::string::npos);
+}
+
+// A verdict that repeats is asked again later each time; Resume() restores the cadence, and a fixed
+// cadence (growth 1) stays fixed.
+TEST(SolveCadence, BacksOffARepeatedVerdict) {
+  auto due_at = [](SolveCadence& cadence, std::size_t from) -> double {
+    TriggerInput in;
+    in.eligible = true;
+    for (std::size_t n = from;; ++n) {
+      in.n_admitted = n;
+      if (cadence.Due(in)) return static_cast<double>(n);
+    }
+  };
+  SolveCadence cadence(10, 1.1);
+  EXPECT_EQ(due_at(cadence, 100), 100);
+  EXPECT_NEAR(due_at(cadence, 101), 110, 1);  // 1.1 x (rounding up)
+  cadence.BackOff();
+  const double n1 = due_at(cadence, 112);
+  EXPECT_NEAR(n1, 1.2 * 111, 1.5);  // 1.2 x
+  cadence.BackOff();
+  cadence.BackOff();
+  const double n2 = due_at(cadence, static_cast<std::size_t>(n1) + 1);
+  EXPECT_NEAR(n2, 1.8 * n1, 1.5);  // 1.8 x
+  cadence.Resume();
+  EXPECT_NEAR(due_at(cadence, static_cast<std::size_t>(n2) + 1), 1.1 * n2, 1.5);  // 1.1 x again
+  SolveCadence fixed(10, 1.0);
+  fixed.BackOff();
+  EXPECT_EQ(due_at(fixed, 50), 50);
+  EXPECT_EQ(due_at(fixed, 51), 60);
+}
+
+// The travel bias's scale: the white part of the residuals. A slow bias widens the residuals but
+// not their consecutive differences, which is all the consistency check truncates.
+TEST(DifferenceScale, SeesTheWhiteNoiseNotASlowBias) {
+  auto rng = testing::TestStream(5);
+  std::vector<Eigen::Vector3d> p;
+  std::vector<double> white, slow;
+  std::vector<int> tags;
+  for (int k = 0; k < 2000; ++k) {
+    p.push_back(Wandering(0.1 * k));
+    const double d = (p.back() - kAnchor).norm() + 0.1;
+    const double e = 0.05 * rng.Normal();
+    white.push_back(d + e);
+    slow.push_back(d + e + 0.3 * std::sin(0.05 * k));  // a 12 s period, 0.3 m
+    tags.push_back(k % 2);
+  }
+  EXPECT_NEAR(DifferenceScale(p, white, tags, kAnchor, 0.1), 0.05, 0.005);
+  EXPECT_NEAR(DifferenceScale(p, slow, tags, kAnchor, 0.1), 0.05, 0.005);
+  EXPECT_GT(ResidualScale(p, slow, kAnchor, 0.1), 0.2);
+  // The filter's bias on it: small at tau = 4 q, large where tau is the white noise's own size.
+  EXPECT_LT(ConsistencyFilter().TravelBias(0.05), 0.003);
+  EXPECT_GT(ConsistencyFilter().TravelBias(0.2), 0.15);
 }
 
 // A 3% scale error: the fifth unknown recovers it where the geometry pins it, and the anchor with it.

@@ -176,12 +176,16 @@ void PoseStream::Resolve() {
               "tag " + std::to_string(row.tag_id) + " repeats its pose of line " + std::to_string(first.line));
       continue;
     }
+    const double apart_m = (row.p_world_tag - first.p_world_tag).norm();
     const std::string conflict = "tag " + std::to_string(row.tag_id) + " has another pose at t=" +
                                  FormatNumber(row.t_s) + ": " + PositionText(row.p_world_tag) + " here, " +
                                  PositionText(first.p_world_tag) + " at line " + std::to_string(first.line);
-    switch (policy_.repeated_poses) {
+    const LogPolicy::RepeatedPoses policy =
+        apart_m <= policy_.average_within_m ? LogPolicy::RepeatedPoses::kAverage : policy_.repeated_poses;
+    switch (policy) {
       case LogPolicy::RepeatedPoses::kError:
-        csv_.FailAt(row.line, conflict + "; --repeated-poses first or average accepts it");
+        csv_.FailAt(row.line, conflict + " (" + FormatNumber(apart_m) + " m apart, beyond --average-poses-within-m " +
+                                  FormatNumber(policy_.average_within_m) + "); --repeated-poses first or average accepts it");
       case LogPolicy::RepeatedPoses::kFirst: Dropped(Drop::kConflictingPose, row, conflict); break;
       case LogPolicy::RepeatedPoses::kAverage:
         Dropped(Drop::kAveragedPose, row, conflict);

@@ -109,8 +109,8 @@ TEST(LogReader, RepeatedPosesAreDroppedAndConflictsFollowThePolicy) {
 
   const std::string conflicting = "t,tag_id,x,y,z\n0,1,0,0,0\n0,2,5,5,5\n0,1,2,0,0\n1,1,1,1,1\n";
   EXPECT_EQ(ErrorOf([&] { Poses(conflicting, LogPolicy{}, drops); }),
-            "p.csv:4: tag 1 has another pose at t=0: (2, 0, 0) here, (0, 0, 0) at line 2; --repeated-poses first or "
-            "average accepts it");
+            "p.csv:4: tag 1 has another pose at t=0: (2, 0, 0) here, (0, 0, 0) at line 2 (2 m apart, beyond "
+            "--average-poses-within-m 0.05); --repeated-poses first or average accepts it");
   LogPolicy first;
   first.repeated_poses = LogPolicy::RepeatedPoses::kFirst;
   LogDrops first_drops;
@@ -126,6 +126,20 @@ TEST(LogReader, RepeatedPosesAreDroppedAndConflictsFollowThePolicy) {
   ASSERT_EQ(kept_average.size(), 3u);
   EXPECT_EQ(kept_average[0].p_world_tag, Eigen::Vector3d(1, 0, 0));
   EXPECT_EQ(Tally(average_drops, Drop::kAveragedPose, 1).count, 1);
+}
+
+// Two stamps of one pose a few centimetres apart (a tracker and a recorder each writing it) are
+// averaged and counted by default; the bound is a setting.
+TEST(LogReader, PosesWithinFiveCentimetresAtOneTimeAreAveragedByDefault) {
+  const std::string close = "t,tag_id,x,y,z\n0,1,0,0,0\n0,1,0.04,0,0\n1,1,1,0,0\n";
+  LogDrops drops;
+  const std::vector<PoseRecord> kept = Poses(close, LogPolicy{}, drops);
+  ASSERT_EQ(kept.size(), 2u);
+  EXPECT_DOUBLE_EQ(kept[0].p_world_tag.x(), 0.02);
+  EXPECT_EQ(Tally(drops, Drop::kAveragedPose, 1).count, 1);
+  LogPolicy tight;
+  tight.average_within_m = 0.01;
+  EXPECT_NE(ErrorOf([&] { Poses(close, tight, drops); }).find("beyond --average-poses-within-m 0.01"), std::string::npos);
 }
 
 TEST(LogReader, OutOfOrderRowsAreAnErrorOrDroppedOrSortedWithinTheWindow) {

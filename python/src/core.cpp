@@ -35,6 +35,31 @@ struct Event {
   estimator::InitEvent init;
 };
 
+// A trigger's judgement as a dict: the test that holds the anchor back and by how much, and for
+// the certificate its region's terms, the evidence and the stability (None where there is none).
+py::dict JudgementDict(int anchor_id, const std::string& trigger, const estimator::Judgement& j) {
+  const auto value = [](double v) -> py::object { return std::isnan(v) ? py::object(py::none()) : py::float_(v); };
+  py::dict d;
+  d["anchor_id"] = anchor_id;
+  d["trigger"] = trigger;
+  d["t_s"] = value(j.t_s);
+  d["samples"] = j.samples;
+  d["blocked_by"] = std::string(j.blocked_by);
+  d["value"] = value(j.value);
+  d["limit"] = value(j.limit);
+  d["region_m"] = value(j.region_m);
+  d["share_noise"] = value(j.share_noise);
+  d["share_correlation"] = value(j.share_correlation);
+  d["share_model_error"] = value(j.share_model_error);
+  d["share_travel_bias"] = value(j.share_travel_bias);
+  d["share_link_offsets"] = value(j.share_link_offsets);
+  d["share_tag_offsets"] = value(j.share_tag_offsets);
+  d["evidence"] = value(j.evidence);
+  d["evidence_needed"] = value(j.evidence_needed);
+  d["stability_m"] = value(j.stability_m);
+  return d;
+}
+
 estimator::SolveResult Solve(const Doubles& p_world_tag, const Doubles& range_m, const std::string& solver,
                              const ConfigHandle* config) {
   const std::span<const Eigen::Vector3d> p = Points(p_world_tag, "p_world_tag");
@@ -178,6 +203,30 @@ class PyFrontEnd {
     return out;
   }
   const std::vector<std::string>& triggers() const { return estimator_.triggers; }
+  // Why each anchor's triggers have not fired yet: one record per (anchor, trigger) still waiting.
+  py::list WhyNot() const {
+    struct Waiting {
+      int anchor_id;
+      std::size_t chain;
+      estimator::Judgement judgement;
+    };
+    const std::vector<Waiting> waiting = [this] {
+      py::gil_scoped_release release;
+      return front_end_.Inspect([](const estimator::FrontEnd& front_end) {
+        std::vector<Waiting> out;
+        for (const int anchor_id : front_end.anchor_ids()) {
+          const std::vector<estimator::AnchorInitializer>& chains = front_end.chains(anchor_id);
+          for (std::size_t c = 0; c < chains.size(); ++c) {
+            if (const std::optional<estimator::Judgement> j = chains[c].why_not()) out.push_back({anchor_id, c, *j});
+          }
+        }
+        return out;
+      });
+    }();
+    py::list out;
+    for (const Waiting& w : waiting) out.append(JudgementDict(w.anchor_id, estimator_.triggers.at(w.chain), w.judgement));
+    return out;
+  }
   py::dict Counters() const {
     const estimator::FrontEndCounters c = [this] {
       py::gil_scoped_release release;
@@ -255,6 +304,10 @@ void BindFrontEnd(py::module_& m) {
       .def("take_events_array", &PyFrontEnd::TakeEventsArray,
            "the events as a structured array (anchor_id, chain, t_s, n_used, pdop_closest_point, x, y, z, bias_m, status)")
       .def_property_readonly("triggers", &PyFrontEnd::triggers, "the chains' triggers, by chain index")
+      .def("why_not", &PyFrontEnd::WhyNot,
+           "why each anchor's triggers wait: one dict per (anchor, trigger) not yet fired, with the test that "
+           "holds it back (blocked_by), its value and limit, and for certified the region's terms, the evidence "
+           "and the stability (docs/python.md)")
       .def_property_readonly("counters", &PyFrontEnd::Counters);
 }
 

@@ -72,3 +72,24 @@ def test_poses_and_ranges_meet_in_the_front_end():
     (event,) = front_end.take_events()
     assert event.anchor_id == 3 and event.solve.succeeded
     assert np.linalg.norm(event.solve.p_world_anchor - [2.0, -1.0, 4.0]) < 0.2
+
+
+def test_why_not_says_which_test_holds_each_waiting_anchor_back():
+    p, d = box_samples([2.0, -1.0, 4.0], n=600)
+    t = np.arange(len(d)) * 0.1
+    front_end = ab.FrontEnd({"estimator": {"triggers": ["pdop_closest_point", "certified"]}})
+    n = 25  # a few samples: nothing certified yet
+    front_end.add_samples(t[:n], np.zeros(n, dtype=np.int32), np.full(n, 7, dtype=np.int32), d[:n], p[:n])
+    waiting = {w["trigger"]: w for w in front_end.why_not()}
+    assert set(waiting) == {"pdop_closest_point", "certified"}
+    assert waiting["pdop_closest_point"]["blocked_by"] in ("samples", "pdop")
+    certified = waiting["certified"]
+    assert certified["anchor_id"] == 7 and certified["blocked_by"]
+    assert certified["value"] is None or certified["limit"] is not None
+    if certified["blocked_by"] == "region":
+        shares = [certified[k] for k in certified if k.startswith("share_")]
+        assert abs(sum(shares) - 1.0) < 1e-9
+    front_end.add_samples(t[n:], np.zeros(len(t) - n, dtype=np.int32), np.full(len(t) - n, 7, dtype=np.int32), d[n:],
+                          p[n:])
+    fired = {e.trigger for e in front_end.take_events()}
+    assert {w["trigger"] for w in front_end.why_not()}.isdisjoint(fired)  # nothing holds a fired trigger back

@@ -122,14 +122,14 @@ void RegisterBuiltinTriggers(TriggerRegistry& registry) {
                     "closest-point DOP with a bias column < trigger.bias_aware_threshold, O(1) (ours)",
                     [](const std::string&, const Context& c) {
                       return std::make_unique<estimator::ClosestPointDopTrigger>(
-                          &estimator::ClosestPointPdop::BiasAwareValue, c.options.bias_aware_threshold);
+                          &estimator::ClosestPointPdop::BiasAwareValue, c.options.bias_aware_threshold, "dop4");
                     });
   registry.Register("hdop_closest_point",
                     "closest-point DOP of x-y alone < trigger.horizontal_threshold, O(1): for a height prior on a "
                     "flat path (ours)",
                     [](const std::string&, const Context& c) {
                       return std::make_unique<estimator::ClosestPointDopTrigger>(
-                          &estimator::ClosestPointPdop::HorizontalValue, c.options.horizontal_threshold);
+                          &estimator::ClosestPointPdop::HorizontalValue, c.options.horizontal_threshold, "hdop");
                     });
   registry.Register("dop4_confidence",
                     "worst bias-aware DOP over the trigger.confidence_sigmas region of the solver's estimate < "

@@ -18,6 +18,7 @@ AttemptsFile ParseAttempts(const std::string& text, const std::string& source,
   const int row = csv.Column({"row"}), realization = csv.Column({"realization"}), anchor = csv.Column({"anchor_id"});
   const int method = csv.Column({"method"}), initialized = csv.Column({"initialized"}), t_init = csv.Column({"t_init"});
   const int error = csv.Column({"err_m"}), nees = csv.Column({"nees_pos"});
+  const int t_oracle = csv.Column({"t_oracle"}), latency = csv.Column({"latency"});
   const int compute_s = csv.Column({"compute_s"});
   if (compute_s != csv.columns() - 1 || compute_s == 0) {
     throw schema::InputError(source + ":1: compute_s must be the last column");
@@ -31,12 +32,14 @@ AttemptsFile ParseAttempts(const std::string& text, const std::string& source,
     a.anchor_id = csv.Integer(anchor);
     a.method = std::string(csv.Text(method));
     a.initialized = csv.Integer(initialized) == 1;
+    if (a.initialized || !csv.Empty(t_oracle)) a.evaluation.emplace();
     if (a.initialized) {
       a.t_init_s = csv.Number(t_init);
-      a.evaluation.emplace();
       a.evaluation->error_m = csv.Number(error);
       if (!csv.Empty(nees)) a.evaluation->nees_position = csv.Number(nees);
+      if (!csv.Empty(latency)) a.evaluation->latency_ratio = csv.Number(latency);
     }
+    if (!csv.Empty(t_oracle)) a.evaluation->t_oracle_s = csv.Number(t_oracle);
     a.compute_s = csv.Number(compute_s);
     // The line as written, without compute_s (the last field: the header has more than one).
     std::string_view line = csv.record_text();

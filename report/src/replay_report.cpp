@@ -6,6 +6,7 @@
 #include <string>
 
 #include "anchorbench/io/format.hpp"
+#include "anchorbench/report/why_not.hpp"
 
 namespace anchorbench::report {
 namespace {
@@ -16,7 +17,8 @@ using io::FormatOptional;
 
 constexpr const char* kEstimateColumns[] = {"anchor_id", "method", "initialized", "t_init", "n_used", "pdop_est",
                                             "pdop_true", "x", "y", "z", "bias", "err_m", "status", "err_xy", "err_z",
-                                            "bias_aware_hdop", "bias_aware_vdop", "scale"};
+                                            "bias_aware_hdop", "bias_aware_vdop", "scale", "blocked_by",
+                                            "blocked_value", "blocked_limit", "t_first", "t_oracle", "latency"};
 
 // Three decimals for a terminal, or the shortest text where that would be a wall of digits.
 std::string ForTerminal(double value) { return std::abs(value) < 1e9 ? FormatFixed(value, 3) : FormatNumber(value); }
@@ -29,6 +31,14 @@ std::optional<double> ErrorXy(const schema::Attempt& a) {
 std::optional<double> ErrorZ(const schema::Attempt& a) {
   if (!a.evaluation || !a.evaluation->error_xyz_m) return std::nullopt;
   return std::abs(a.evaluation->error_xyz_m->z());
+}
+
+// One of WhyNotFields' three cells.
+std::string WhyNotCell(const schema::Attempt& a, int cell) {
+  const std::string fields = WhyNotFields(a.why_not);
+  std::size_t start = 0;
+  for (int c = 0; c < cell; ++c) start = fields.find(',', start) + 1;
+  return fields.substr(start, fields.find(',', start) - start);
 }
 
 // The columns of estimates.csv for one attempt, as text (empty where not applicable).
@@ -52,7 +62,12 @@ std::vector<std::string> EstimateFields(const schema::Attempt& a) {
           ErrorZ(a) ? FormatNumber(*ErrorZ(a)) : "",
           a.evaluation ? FormatOptional(a.evaluation->bias_aware_hdop) : "",
           a.evaluation ? FormatOptional(a.evaluation->bias_aware_vdop) : "",
-          has_estimate && a.solve->range_scale_sigma > 0.0 ? FormatNumber(a.solve->range_scale) : ""};
+          has_estimate && a.solve->range_scale_sigma > 0.0 ? FormatNumber(a.solve->range_scale) : "",
+          // why it waits: three fields, split here into three cells
+          WhyNotCell(a, 0), WhyNotCell(a, 1), WhyNotCell(a, 2),
+          a.evaluation ? FormatOptional(a.evaluation->t_first_s) : "",
+          a.evaluation ? FormatOptional(a.evaluation->t_oracle_s) : "",
+          a.evaluation ? FormatOptional(a.evaluation->latency_ratio) : ""};
 }
 
 }  // namespace

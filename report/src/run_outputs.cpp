@@ -5,6 +5,7 @@
 #include <sstream>
 
 #include "anchorbench/io/format.hpp"
+#include "anchorbench/report/why_not.hpp"
 #include "anchorbench/report/paper_cells.hpp"
 
 namespace anchorbench::report {
@@ -107,7 +108,8 @@ void WriteAttemptLine(std::ostream& out, const Attempt& a, const std::vector<Row
       << FormatOptional(e.bias_error_m) << ',' << FormatOptional(a.solve ? std::optional(a.solve->alpha) : std::nullopt)
       << ',' << a.status << ',' << FormatOptional(e.bias_aware_dop) << ',' << FormatOptional(e.nees_position) << ','
       << FormatOptional(e.nees) << ',' << FormatOptional(e.bias_aware_hdop) << ','
-      << FormatOptional(e.bias_aware_vdop);
+      << FormatOptional(e.bias_aware_vdop) << ',' << WhyNotFields(a.why_not) << ',' << FormatOptional(e.t_first_s) << ','
+      << FormatOptional(e.t_oracle_s) << ',' << FormatOptional(e.latency_ratio);
 }
 
 }  // namespace
@@ -139,7 +141,8 @@ std::string SummaryCsvFields(const MethodSummary& s, const std::vector<RowConfig
       << FormatOptional(s.ratio_hi);
   const eval::Credibility& c = s.position_credibility;
   out << ',' << FormatOptional(c.anees) << ',' << FormatOptional(c.bound_lo) << ',' << FormatOptional(c.bound_hi) << ','
-      << FormatOptional(c.above_95_pct) << ',' << FormatOptional(s.med_lo) << ',' << FormatOptional(s.med_hi);
+      << FormatOptional(c.above_95_pct) << ',' << FormatOptional(s.med_lo) << ',' << FormatOptional(s.med_hi) << ','
+      << s.oracle_n << ',' << s.latency_n << ',' << FormatOptional(s.latency_med) << ',' << FormatOptional(s.latency_p90);
   return out.str();
 }
 

@@ -31,10 +31,12 @@ double MedianInPlace(std::vector<double>& values) {
 MethodSummary SummarizeOne(const std::vector<const Attempt*>& attempts, const std::vector<RealizationSums>& sums,
                            int bootstrap_resamples, sim::RandomStream rng) {
   MethodSummary s;
-  std::vector<double> errors, times, nees;
+  std::vector<double> errors, times, nees, latencies;
   for (const Attempt* a : attempts) {
     ++s.attempts;
     s.compute_s += a->compute_s;
+    if (a->evaluation && a->evaluation->t_oracle_s) ++s.oracle_n;
+    if (a->initialized && a->evaluation->latency_ratio) latencies.push_back(*a->evaluation->latency_ratio);
     if (!a->initialized) continue;
     ++s.init;
     errors.push_back(*a->evaluation->error_m);
@@ -42,6 +44,9 @@ MethodSummary SummarizeOne(const std::vector<const Attempt*>& attempts, const st
     s.gt1m += *a->evaluation->error_m > 1.0;
     if (a->evaluation->nees_position) nees.push_back(*a->evaluation->nees_position);
   }
+  s.latency_n = static_cast<int>(latencies.size());
+  s.latency_med = Percentile(latencies, 0.5);
+  s.latency_p90 = Percentile(latencies, 0.9);
   if (s.init == 0) return s;
   s.position_credibility = eval::CredibilityOf(nees, 3);
   double total = 0.0, total_time = 0.0;

@@ -6,6 +6,7 @@
 #include <string>
 
 #include "anchorbench/estimator/anchor_initializer.hpp"
+#include "anchorbench/eval/oracle_latency.hpp"
 #include "anchorbench/schema/attempt.hpp"
 #include "anchorbench/schema/random_streams.hpp"
 
@@ -19,6 +20,9 @@ schema::Attempt AttemptOf(const estimator::AnchorInitializer& initializer, const
 // The seed of anchor `anchor_id`'s random parts (RANSAC) in realization `realization`: drawn from
 // the stream (seed, realization, schema::kSolverStream, anchor id), so it repeats for any thread count.
 std::uint64_t SolverSeed(std::uint64_t seed, std::uint64_t realization, int anchor_id);
+
+// The anchor's oracle time into an evaluated attempt, with the attempt's latency against it.
+void AddOracleLatency(const eval::OracleLatency& oracle, schema::Attempt& attempt);
 
 // The truth of one anchor, or nullptr.
 const schema::AnchorTruth* TruthOf(const std::map<int, schema::AnchorTruth>* truth, int anchor_id);

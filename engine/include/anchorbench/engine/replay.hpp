@@ -26,6 +26,9 @@ struct ReplayResult {
 
 // Sees every range handed to the initializers, with the first trigger's view of it.
 using TraceSink = std::function<void(const io::RangeRecord&, const estimator::FeedResult&)>;
+// Sees every evaluation of a trigger that solves (the certificate's tests, and why it waits), in
+// the order they ran: the anchor, the trigger's index in the config's list, its judgement.
+using JudgementSink = std::function<void(int anchor_id, std::size_t trigger, const estimator::Judgement&)>;
 // The next row of a log in time order (a pose before a range of the same time); false at the end.
 using LogSource = std::function<bool(io::RecordedLog::Kind&, io::PoseRecord&, io::RangeRecord&)>;
 
@@ -36,12 +39,14 @@ using LogSource = std::function<bool(io::RecordedLog::Kind&, io::PoseRecord&, io
 // schema::InputError if a trigger cannot run (pdop_true without the truth).
 ReplayResult Replay(const LogSource& log, const std::vector<std::string>& range_sources,
                     const std::map<int, schema::AnchorTruth>* truth, const schema::EstimatorConfig& config,
-                    const registry::Components& components, std::uint64_t seed, const TraceSink& trace = nullptr);
+                    const registry::Components& components, std::uint64_t seed, const TraceSink& trace = nullptr,
+                    const JudgementSink& judged = nullptr);
 
 // The same on a log in memory: poses in any order (stably sorted by time), ranges in time order.
 ReplayResult Replay(const std::vector<io::PoseRecord>& poses, const std::vector<io::RangeRecord>& ranges,
                     const std::map<int, schema::AnchorTruth>* truth, const schema::EstimatorConfig& config,
-                    const registry::Components& components, std::uint64_t seed, const TraceSink& trace = nullptr);
+                    const registry::Components& components, std::uint64_t seed, const TraceSink& trace = nullptr,
+                    const JudgementSink& judged = nullptr);
 
 // Builds every anchor's initializers once, without data, so that what Replay would refuse (a
 // trigger that needs the truth it lacks) is refused before any output exists. Throws InputError.

@@ -39,7 +39,8 @@ class ReplayLog {
 
   // The second pass, one row at a time into the front end; `trace` sees every range handed to
   // the initializers.
-  ReplayOutcome Run(const TraceSink& trace = nullptr, const io::ByteProgress& progress = nullptr) const;
+  ReplayOutcome Run(const TraceSink& trace = nullptr, const io::ByteProgress& progress = nullptr,
+                    const JudgementSink& judged = nullptr) const;
 
  private:
   io::LogFiles files_;

@@ -137,6 +137,14 @@ class AnchorInitializer {
   const std::optional<InitEvent>& last_failed_solve() const { return last_failed_solve_; }
   // The trigger's reason for not firing, where it has one (InitTrigger::refusal).
   std::optional<SolveStatus> trigger_refusal() const { return trigger_->refusal(); }
+  // Why the anchor is not initialized yet: too few samples ("samples": n against min_samples),
+  // waiting for more data after a failed solve ("retry": n against the size of the next attempt),
+  // else the trigger's own test (InitTrigger::why_not). Nothing once initialized, or for a trigger
+  // without a test.
+  std::optional<Judgement> why_not() const;
+  // The judgement of an evaluation of the trigger that has run since the last call, if one has
+  // (a trigger that solves judges on its cadence: one evaluation per pending solve).
+  std::optional<Judgement> TakeJudgement();
   // Accepted samples left out of the buffer by its cap, and samples lost because the queue behind
   // a deferred solve reached the cap (the solve was not run in time).
   long samples_not_buffered() const { return samples_not_buffered_; }
@@ -175,6 +183,7 @@ class AnchorInitializer {
   std::deque<Accepted> queued_;  // accepted while a deferred solve was pending
   long samples_not_buffered_ = 0;
   long samples_dropped_while_pending_ = 0;
+  std::size_t judgements_taken_ = 0;  // the trigger's evaluations already handed out
 };
 
 // The paper's chain with typed options: the consistency check (Sec. III-B), the closest-point

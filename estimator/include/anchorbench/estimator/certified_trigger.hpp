@@ -23,7 +23,11 @@ struct CertificateOptions {
   double confidence = 0.99;  // of the region that must lie within D
   // Its own geometric cadence (with trigger.evaluate_every), whatever the other solving triggers
   // use: a run then costs N g / (g - 1) samples' worth of solves, not O(N^2 / every).
-  double evaluate_growth = 1.25;
+  double evaluate_growth = 1.1;
+  // Test 0's window: every estimate since this share of the data (from the last evaluation at or
+  // before stable_since N) within D. 0.5: a doubling of the data; larger waits less after the
+  // estimate settles (the latency to the oracle is at least 1 / stable_since) and sees less drift.
+  double stable_since = 0.7;
   // The covariance the certificate judges: its own, so that it stays honest where the reported
   // one is configured as the paper's (estimator.covariance).
   CovarianceOptions covariance;
@@ -39,8 +43,8 @@ double ChiSquare3Quantile(double confidence);
 // refit, every anchor position farther than D from the estimate. On its cadence it solves (the
 // anchor's solver) and judges the estimate four ways, all without the truth (tested as 2-3, 1, 0:
 // the cheap region first, and a mirror's verdict before the stability, so a refusal says why):
-// 0. It must be stable: every estimate since half the data (from the last evaluation at or before
-//    N/2) within D of it; an estimate that slides along a trade-off valley, or flips between basins,
+// 0. It must be stable: every estimate since a share of the data (stable_since; from the last
+//    evaluation at or before that share of N) within D of it; an estimate that slides along a trade-off valley, or flips between basins,
 //    is no certificate.
 // 1. The mirror through the tags' plane must be ruled out: the fit is refined (L2 LM) from the
 //    estimate's reflection, and the estimate must beat that fit by the mirror check's min_evidence
@@ -61,7 +65,8 @@ double ChiSquare3Quantile(double confidence);
 //    bias along a narrow cone of directions, or a line of tags, shows.
 // A line of tags or too narrow a cone leaves P singular or large: the trigger waits. Cost per
 // evaluation: one solve, one mirror test and 7 O(N) passes; on a geometric cadence
-// (evaluate_growth > 1) a whole run costs O(N).
+// (evaluate_growth > 1) a whole run costs O(N), and a refusal that repeats (the mirror of a flat
+// path, a line's singular region) backs the cadence off (SolveCadence::BackOff).
 class CertifiedTrigger : public InitTrigger {
  public:
   // `solver_options` give the L2 refinement of the mirror test its tolerances and the height prior;
@@ -72,6 +77,9 @@ class CertifiedTrigger : public InitTrigger {
   bool Fire(const TriggerInput& in) override { return cadence_.Due(in); }
   bool Evaluate(const TriggerInput& in) override;
   std::optional<SolveStatus> refusal() const override { return refusal_; }
+  // The last evaluation's tests (Judgement): which one held the anchor back and by how much.
+  std::optional<Judgement> why_not() const override { return evaluations_ ? std::optional(judgement_) : std::nullopt; }
+  std::size_t evaluations() const override { return evaluations_; }
 
  private:
   struct Alternative {
@@ -80,23 +88,30 @@ class CertifiedTrigger : public InitTrigger {
     bool mirror;
   };
   enum class Verdict { kRuledOut, kMirror, kOtherMinimum };
+  // The four tests on one evaluation; Evaluate adds the cadence's back-off.
+  bool Judge(const TriggerInput& in);
   // Where other minima of the fit may lie: the mirror, and 3 D along the covariance's axes and
   // towards and away from the tags' centroid (with the bias that fits best there).
   std::vector<Alternative> Alternatives(std::span<const Eigen::Vector3d> p_world_tag, std::span<const double> range_m,
                                         const SolveResult& estimate, const Eigen::Matrix3d& axes) const;
   // Each alternative refined (L2 LM); one that ends farther than D away must fit worse than the
-  // estimate by the evidence threshold, and predict ranges that differ enough to tell.
+  // estimate by the evidence threshold, and predict ranges that differ enough to tell. The weakest
+  // alternative's evidence and the threshold go to the judgement.
   Verdict RuleOutAlternatives(std::span<const Eigen::Vector3d> p_world_tag, std::span<const double> range_m,
                               const SolveResult& estimate, const Eigen::Matrix3d& axes);
-  // 2. and 3.: the region, and the covariance from the ends of its axes, within D.
-  bool RegionWithinTarget(const TriggerInput& in, const SolveResult& estimate,
-                          const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d>& axes) const;
+  // 3.: the largest radius of the region seen from the ends of its axes (+inf where singular).
+  double RegionFromEnds(const TriggerInput& in, const SolveResult& estimate,
+                        const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d>& axes) const;
+  // The judgement's account of the region: each term's share of the largest variance.
+  void ShareRegion(const TriggerInput& in, const SolveResult& noise_only, double correlation_factor,
+                   const Eigen::Vector3d& axis, double largest_variance);
   // The tags whose offsets are among the unknowns ({0}: one bias for all).
   std::vector<int> EstimatedTags(std::span<const int> tag_id, std::size_t samples) const;
   // The largest variance of the covariance seen from `point`, with `tags` as EstimatedTags gave
-  // them; +infinity where it is singular.
+  // them and the estimate's travel bias; +infinity where it is singular.
   double LargestVariance(std::span<const Eigen::Vector3d> p_world_tag, std::span<const int> tag_id,
-                         const std::vector<int>& tags, const Eigen::Vector3d& point, double noise_variance) const;
+                         const std::vector<int>& tags, const Eigen::Vector3d& point, double noise_variance,
+                         double travel_bias_m) const;
 
   std::shared_ptr<const Solver> solver_;  // the anchor's
   NlsSolver refine_;                      // L2, for the mirror's basin
@@ -109,12 +124,16 @@ class CertifiedTrigger : public InitTrigger {
   SolveCadence cadence_;
   double region_chi2_;
   std::optional<SolveStatus> refusal_;
+  Judgement judgement_;
+  std::size_t evaluations_ = 0;
   struct Evaluated {
     std::size_t samples;
     Eigen::Vector3d p_world_anchor;
   };
   std::vector<Evaluated> history_;           // the evaluations since the last at or before half the data
   int tests_ = 0;                            // of the alternatives, for the threshold's 2 ln(k)
+  static constexpr int kStructuralRepeats = 3;
+  int structural_refusals_ = 0;              // since an estimate last got past the mirror
   std::vector<double> corrected_m_;          // the ranges less each tag's offset (scratch)
 };
 

@@ -33,12 +33,15 @@ class ConsistencyFilter : public OutlierFilter {
 
   // The check truncates the range differences on one side: while the tag approaches, a range far
   // below its reference fails (|d_k - d_prev| > ||dp|| + tau), while it recedes one far above does.
-  // Accepted ranges therefore read long on the way in and short on the way out, by g(tau / s) s,
-  // s the accepted ranges' residual scale: measured by simulating the check alone on straight
-  // passes at 0.3-6 m/s, 3-8 m off the anchor (scripts/filter_travel_bias.py; the largest over
-  // speeds and passes, rounded up): 0.70 s at tau = 0.43 s, 0.59 at 1, 0.165 at 2.15, 0.05 at
-  // 3.05, 0.015 at 5, 0.01 at 8.
-  double TravelBias(double residual_scale_m) const override;
+  // Accepted ranges therefore read long on the way in and short on the way out, by g(tau / q) q,
+  // q the scale of the differences the check judges: the RMS of consecutive accepted residuals'
+  // differences (one tag's), over sqrt(2) (DifferenceScale). Not the residuals' own scale: a slow
+  // bias (an antenna pattern, multipath) widens the residuals but cancels in the differences, so
+  // the check never truncates it. Measured by simulating the check alone on straight passes at
+  // 0.3-6 m/s, 3-8 m off the anchor (scripts/filter_travel_bias.py; the largest over speeds and
+  // passes, rounded up): 1.25 q at tau <= 0.5 q, 1.2 at 0.92, 0.85 at 1.52, 0.43 at 2.0, 0.2 at
+  // 2.4, 0.05 at 3.2, 0.02 at 5, 0.015 at 8.
+  double TravelBias(double difference_scale_m) const override;
 
  private:
   struct Reference {

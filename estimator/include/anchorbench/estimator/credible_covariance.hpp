@@ -20,8 +20,10 @@ namespace anchorbench::estimator {
 //   can see it); higher degrees are amplified where the geometry is thin.
 // - the travel bias of the consistency check (Sec. III-B): it truncates the noise of the range
 //   differences on one side, so accepted ranges read short while the tag recedes and long while
-//   it approaches, by beta = g(tau / sigma) sigma (ConsistencyFilter::TravelBias), which moves an
-//   anchor along the direction of travel (12 mm at tau = 2 sigma = 0.2 m on Table I's passes).
+//   it approaches, by beta = g(tau / q) q (ConsistencyFilter::TravelBias), which moves an anchor
+//   along the direction of travel (12 mm at tau = 2 sigma = 0.2 m on Table I's passes). q is the
+//   scale of consecutive residual differences (DifferenceScale): the check truncates white noise,
+//   never a slow bias, which cancels in the differences.
 // - per-link offsets: a multi-tag robot's tags range to an anchor with offsets of their own (0.1-0.3
 //   m on public recordings) that one bias cannot absorb; with two or more tags in the data, each
 //   tag's samples share a constant error of sigma link_offset_m.
@@ -57,6 +59,17 @@ Eigen::Matrix4d ModelErrorCovariance(std::span<const Eigen::Vector3d> p_world_ta
                                      const Eigen::Vector3d& p_world_anchor, const CovarianceOptions& options,
                                      double travel_bias_m);
 
+// The same split by kind (they sum to ModelErrorCovariance up to rounding): for the certificate's
+// account of what its region is made of.
+struct ModelErrorTerms {
+  Eigen::Matrix4d model = Eigen::Matrix4d::Zero();
+  Eigen::Matrix4d travel = Eigen::Matrix4d::Zero();
+  Eigen::Matrix4d links = Eigen::Matrix4d::Zero();
+};
+ModelErrorTerms ModelErrorCovarianceTerms(std::span<const Eigen::Vector3d> p_world_tag, std::span<const int> tag_id,
+                                          const Eigen::Vector3d& p_world_anchor, const CovarianceOptions& options,
+                                          double travel_bias_m);
+
 // f above, from the range residuals of an estimate in time order.
 double CorrelationFactor(std::span<const Eigen::Vector3d> p_world_tag, std::span<const double> range_m,
                          const Eigen::Vector3d& p_world_anchor, double bias_m);
@@ -66,8 +79,13 @@ double CorrelationFactor(std::span<const Eigen::Vector3d> p_world_tag, std::span
 double ResidualScale(std::span<const Eigen::Vector3d> p_world_tag, std::span<const double> range_m,
                      const Eigen::Vector3d& p_world_anchor, double bias_m);
 
-// The filter's travel bias for a residual scale (OutlierFilter::TravelBias; none: 0).
-using TravelBias = std::function<double(double residual_scale_m)>;
+// The scale the consistency check's truncation acts on: the RMS of the differences of consecutive
+// residuals of one tag (pooled over the tags), over sqrt(2); 0 with fewer than two of a tag.
+double DifferenceScale(std::span<const Eigen::Vector3d> p_world_tag, std::span<const double> range_m,
+                       std::span<const int> tag_id, const Eigen::Vector3d& p_world_anchor, double bias_m);
+
+// The filter's travel bias for a difference scale (OutlierFilter::TravelBias; none: 0).
+using TravelBias = std::function<double(double difference_scale_m)>;
 
 // A successful solve's covariance made credible: f P_solver + the model error's part.
 void MakeCredible(std::span<const Eigen::Vector3d> p_world_tag, std::span<const double> range_m,

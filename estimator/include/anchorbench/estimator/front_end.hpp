@@ -25,13 +25,20 @@ struct FrontEndOptions {
   // Solves run when the caller calls RunPendingSolves() instead of inside AddRange/AddSample
   // (same results; see AnchorInitializer::SetDeferSolves).
   bool defer_solves = false;
+  // Every evaluation of a trigger that solves (the certificate's among them) is also an event:
+  // why the anchor is not initialized yet, as it was judged (a live "why not yet").
+  bool report_judgements = false;
 };
 
-// An initialization (or a fixed-window solve at the end) of one anchor by one of its chains.
+// An initialization (or a fixed-window solve at the end) of one anchor by one of its chains; with
+// FrontEndOptions::report_judgements, also each evaluation of a trigger that solves.
 struct FrontEndEvent {
+  enum class Kind { kInitialized, kJudged };
   int anchor_id = 0;
   std::size_t chain = 0;  // index in the factory's list (e.g. the trigger)
-  InitEvent init;         // when, on how many samples, the estimate with covariance and status, the PDOP
+  InitEvent init;         // kInitialized: when, on how many samples, the estimate with covariance and status, the PDOP
+  Kind kind = Kind::kInitialized;
+  Judgement judgement;    // kJudged: the trigger's tests as it judged them
 };
 
 // A range the front end could not hand to the initializers, and why.
@@ -141,6 +148,7 @@ class FrontEnd {
   void Feed(const RangeSample& sample);
   void ReleaseWaiting();
   void Emit(int anchor_id, std::size_t chain, const InitEvent& event);
+  void EmitJudgement(int anchor_id, std::size_t chain, AnchorInitializer& initializer);
   void Drop(const WaitingRange& range, DroppedRange::Reason reason);
 
   ChainFactory factory_;

@@ -1,8 +1,10 @@
 #pragma once
 
 #include <cstddef>
+#include <limits>
 #include <optional>
 #include <span>
+#include <string_view>
 
 #include <Eigen/Core>
 
@@ -28,6 +30,27 @@ struct TriggerInput {
   // Whether the initializer would solve if the trigger fired now (min_samples reached, not waiting
   // for more data after a failed solve). Costly triggers evaluate only then; all may update state.
   bool eligible = false;
+};
+
+// Why a trigger has not fired: the test that holds the anchor back, its number and the limit that
+// number must meet ("pdop" 1.7 against 1.0). The certified trigger fills the rest from each of its
+// evaluations: its region's radius and each term's share of it, the weakest alternative's evidence,
+// the stability spread (docs/method.md#why-not-yet). NaN where a number does not apply.
+struct Judgement {
+  static constexpr double kNone = std::numeric_limits<double>::quiet_NaN();
+  double t_s = kNone;          // of the sample judged
+  std::size_t samples = 0;     // buffered samples judged
+  std::string_view blocked_by;  // the test, a static name; empty: it fired
+  double value = kNone;        // the test's number
+  double limit = kNone;        // what it must reach (at most, or at least: the test's own sense)
+  // The certificate's region: the radius of its confidence region (m) and each term's share of
+  // the largest variance (they sum to 1): the noise, the correlation factor's inflation of it, the
+  // model error, the consistency check's travel bias, the links' and the tags' offsets.
+  double region_m = kNone;
+  double share_noise = kNone, share_correlation = kNone, share_model_error = kNone, share_travel_bias = kNone,
+         share_link_offsets = kNone, share_tag_offsets = kNone;
+  double evidence = kNone, evidence_needed = kNone;  // the weakest alternative's fit evidence, and the threshold
+  double stability_m = kNone;                        // the largest move of the estimate since half the data
 };
 
 // When to initialize an anchor (Sec. III-C): one interface, so the paper's comparisons (closest-
@@ -60,6 +83,12 @@ class InitTrigger {
   // Why it has not fired, where it can say more than "not triggered" (the certified trigger: the
   // mirror of its last estimate could not be ruled out, kHeightUnobservable).
   virtual std::optional<SolveStatus> refusal() const { return std::nullopt; }
+
+  // Why it has not fired yet, as of the last sample or evaluation it judged; nothing where it has
+  // no test of its own (a fixed window, a count). A trigger that solves counts its evaluations, so
+  // that each one can be reported (AnchorInitializer::TakeJudgements).
+  virtual std::optional<Judgement> why_not() const { return std::nullopt; }
+  virtual std::size_t evaluations() const { return 0; }
 };
 
 }  // namespace anchorbench::estimator

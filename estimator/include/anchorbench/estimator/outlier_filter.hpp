@@ -22,9 +22,10 @@ class OutlierFilter {
   virtual std::shared_ptr<const Solver> AtSolve(std::shared_ptr<const Solver> solver) const { return solver; }
 
   // The bias the online stage leaves in the accepted ranges along the direction of travel, in
-  // metres, for ranges whose residual scale is `residual_scale_m` (credible_covariance.hpp); 0 for
+  // metres, for ranges whose consecutive differences have scale `difference_scale_m`
+  // (DifferenceScale in credible_covariance.hpp); 0 for
   // a filter that does not select on range differences.
-  virtual double TravelBias(double /*residual_scale_m*/) const { return 0.0; }
+  virtual double TravelBias(double /*difference_scale_m*/) const { return 0.0; }
 };
 
 // The do-nothing baseline (`none`): every sample accepted, the solver unchanged.

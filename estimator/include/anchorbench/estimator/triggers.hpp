@@ -1,5 +1,6 @@
 #pragma once
 
+#include <algorithm>
 #include <cstddef>
 #include <memory>
 #include <string>
@@ -14,10 +15,29 @@ namespace anchorbench::estimator {
 class ClosestPointPdopTrigger : public InitTrigger {
  public:
   explicit ClosestPointPdopTrigger(double threshold) : threshold_(threshold) {}
-  bool Fire(const TriggerInput& in) override { return in.eligible && in.pdop < threshold_; }
+  bool Fire(const TriggerInput& in) override {
+    last_ = {in.t_s, in.range_m.size(), in.pdop};
+    return in.eligible && in.pdop < threshold_;
+  }
+  std::optional<Judgement> why_not() const override { return last_.Judged("pdop", threshold_); }
 
  private:
   double threshold_;
+  struct Last {
+    double t_s = Judgement::kNone;
+    std::size_t samples = 0;
+    double value = Judgement::kNone;
+    std::optional<Judgement> Judged(std::string_view test, double limit) const {
+      if (samples == 0) return std::nullopt;
+      Judgement j;
+      j.t_s = t_s;
+      j.samples = samples;
+      j.blocked_by = test;
+      j.value = value;
+      j.limit = limit;
+      return j;
+    }
+  } last_;
 };
 
 // When a trigger that solves for an estimate evaluates: at the first eligible sample, then once
@@ -28,17 +48,25 @@ class SolveCadence {
   SolveCadence(int every, double growth) : every_(static_cast<std::size_t>(every)), growth_(growth) {}
   bool Due(const TriggerInput& in) {
     if (!in.eligible) return false;
+    const double growth = 1.0 + (growth_ - 1.0) * static_cast<double>(1 << back_off_);
     if (evaluated_at_ != 0 && (in.n_admitted < evaluated_at_ + every_ ||
-                               static_cast<double>(in.n_admitted) < growth_ * static_cast<double>(evaluated_at_))) {
+                               static_cast<double>(in.n_admitted) < growth * static_cast<double>(evaluated_at_))) {
       return false;
     }
     evaluated_at_ = in.n_admitted;
     return true;
   }
+  // A verdict that repeats (a flat path's mirror, a line's singular region) is asked again later
+  // each time: growth - 1 doubles per repeat, up to kMaxBackOff doublings (x32); Resume() undoes it. A
+  // refusal then costs O(N) with a smaller constant, and a fixed cadence (growth 1) stays fixed.
+  void BackOff() { back_off_ = std::min(back_off_ + 1, kMaxBackOff); }
+  void Resume() { back_off_ = 0; }
 
  private:
+  static constexpr int kMaxBackOff = 5;
   std::size_t every_;
   double growth_;
+  int back_off_ = 0;
   std::size_t evaluated_at_ = 0;  // sample count of the last evaluation (0: none yet)
 };
 
@@ -66,16 +94,32 @@ class EstimatePdopTrigger : public InitTrigger {
 class ClosestPointDopTrigger : public InitTrigger {
  public:
   using Value = double (ClosestPointPdop::*)() const;
-  ClosestPointDopTrigger(Value value, double threshold) : value_(value), threshold_(threshold) {}
+  ClosestPointDopTrigger(Value value, double threshold, std::string_view test = "dop")
+      : value_(value), threshold_(threshold), test_(test) {}
   bool Fire(const TriggerInput& in) override {
     dop_.Add(in.sample_p_world_tag, in.sample_range_m);
+    last_t_s_ = in.t_s;
+    last_samples_ = in.range_m.size();
     return in.eligible && (dop_.*value_)() < threshold_;
+  }
+  std::optional<Judgement> why_not() const override {
+    if (last_samples_ == 0) return std::nullopt;
+    Judgement j;
+    j.t_s = last_t_s_;
+    j.samples = last_samples_;
+    j.blocked_by = test_;
+    j.value = (dop_.*value_)();
+    j.limit = threshold_;
+    return j;
   }
 
  private:
   ClosestPointPdop dop_;
   Value value_;
   double threshold_;
+  std::string_view test_;
+  double last_t_s_ = Judgement::kNone;
+  std::size_t last_samples_ = 0;
 };
 
 // Ours, after a prototype described in issue 13: the estimate that looks well conditioned from

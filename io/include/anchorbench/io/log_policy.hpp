@@ -15,8 +15,13 @@ struct LogPolicy {
   // Ranges above this are dropped as implausible (a UWB link reaches a few hundred metres).
   double max_range_m = 1000.0;
   // Two pose rows of one tag at one time: within this distance they are one pose repeated (the
-  // first kept, the others counted as repeated_pose); farther apart, the policy below decides.
+  // first kept, the others counted as repeated_pose); within average_within_m they are one pose
+  // measured twice (a tracker and a recorder each stamping it: averaged, counted as averaged_pose);
+  // farther apart, the policy below decides. 5 cm (ours): above the millimetres of motion capture
+  // and the centimetres of a VIO's jitter at one time stamp, below what a tag moves between two
+  // 10 Hz poses at walking speed.
   double repeated_pose_tolerance_m = 0.001;
+  double average_within_m = 0.05;
   enum class RepeatedPoses { kError, kFirst, kAverage };
   RepeatedPoses repeated_poses = RepeatedPoses::kError;
   // A row older than one read before it (within one file). By default (ours, for real logs)

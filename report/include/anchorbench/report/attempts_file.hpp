@@ -13,7 +13,7 @@
 namespace anchorbench::report {
 
 // Each attempt with what the summaries use (row, realization, method, initialized, t_init, error,
-// position NEES, compute_s) and its line as written.
+// position NEES, the oracle's time and the latency, compute_s) and its line as written.
 struct AttemptsFile {
   std::vector<schema::Attempt> attempts;
   std::vector<std::string> lines;

@@ -14,10 +14,13 @@ namespace anchorbench::report {
 
 // attempts.csv: one row per attempt, columns
 // row,realization,anchor_id,method,initialized,t_init,n_used,pdop_est,pdop_true,crlb_m,err_m,
-// err_x,err_y,err_z,bias_err,alpha,status,bias_aware_dop (empty where not applicable; never NaN).
+// err_x,err_y,err_z,bias_err,alpha,status,bias_aware_dop,..., then why an attempt that did not
+// initialize waits (blocked_by, its value and limit) and the oracle's time (t_first, t_oracle,
+// latency = (t_init - t_first) / (t_oracle - t_first)); empty where not applicable, never NaN.
 constexpr const char* kAttemptsColumns =
     "row,realization,anchor_id,method,initialized,t_init,n_used,pdop_est,pdop_true,crlb_m,err_m,err_x,err_y,err_z,"
-    "bias_err,alpha,status,bias_aware_dop,nees_pos,nees,bias_aware_hdop,bias_aware_vdop";
+    "bias_err,alpha,status,bias_aware_dop,nees_pos,nees,bias_aware_hdop,bias_aware_vdop,blocked_by,blocked_value,"
+    "blocked_limit,t_first,t_oracle,latency";
 void WriteAttempts(std::ostream& out, const std::vector<schema::Attempt>& attempts,
                    const std::vector<schema::RowConfig>& rows);
 // One attempt's line of attempts.csv, without its line break.
@@ -29,7 +32,7 @@ void WriteAttemptLines(std::ostream& out, const std::vector<std::string>& lines)
 // position credibility, med_lo,med_hi, then the initialization times and, where rows carry the paper's values, those.
 constexpr const char* kSummaryColumns =
     "row,method,avg_m,med_m,init,gt1m,ratio_pct,avg_lo,avg_hi,ratio_lo,ratio_hi,anees_pos,anees_lo,anees_hi,"
-    "nees_gt95_pct,med_lo,med_hi";
+    "nees_gt95_pct,med_lo,med_hi,oracle_n,latency_n,latency_med,latency_p90";
 std::string SummaryCsvFields(const MethodSummary& summary, const std::vector<schema::RowConfig>& rows);
 void WriteSummaryCsv(std::ostream& out, const std::vector<MethodSummary>& summaries,
                      const std::vector<schema::RowConfig>& rows);

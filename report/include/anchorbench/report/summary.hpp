@@ -32,6 +32,11 @@ struct MethodSummary {
   std::optional<double> avg_lo, avg_hi, ratio_lo, ratio_hi, med_lo, med_hi;
   // The credibility of the initialized attempts' position covariances (3-dof NEES; docs/method.md).
   eval::Credibility position_credibility;
+  // Against the oracle (eval/oracle_latency.hpp): the attempts whose anchor the oracle certifies at
+  // all, the initialized ones of those with a latency, and its median and 90th percentile.
+  int oracle_n = 0;
+  int latency_n = 0;
+  std::optional<double> latency_med, latency_p90;
   double compute_s = 0.0;  // summed Attempt::compute_s (timing files only)
 };
 

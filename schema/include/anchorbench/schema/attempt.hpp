@@ -5,6 +5,7 @@
 
 #include <Eigen/Core>
 
+#include "anchorbench/estimator/init_trigger.hpp"
 #include "anchorbench/estimator/solve_result.hpp"
 
 namespace anchorbench::schema {
@@ -32,6 +33,12 @@ struct AttemptEvaluation {
   // not positive definite (e.g. a solver that reports none).
   std::optional<double> nees_position;
   std::optional<double> nees;
+  // The oracle's time (eval/oracle_latency.hpp), the same for every trigger of an anchor: its first
+  // accepted sample, the earliest time after which the running fit stays within D (none: never
+  // on all of the data), and this attempt's (t_init - t_first) / (t_oracle - t_first).
+  std::optional<double> t_first_s;
+  std::optional<double> t_oracle_s;
+  std::optional<double> latency_ratio;
 };
 
 // One anchor with one trigger (a `method`) in one realization of one row: what happened, and how
@@ -51,6 +58,9 @@ struct Attempt {
   std::optional<estimator::SolveResult> solve;  // absent if the solver never ran
   std::string status;                           // the solver's, or not_triggered / no_data
   std::optional<AttemptEvaluation> evaluation;  // where the truth is known
+  // Not initialized: the test that held it back at the end (AnchorInitializer::why_not). Written
+  // to the attempts' files as text; not read back.
+  std::optional<estimator::Judgement> why_not;
   std::optional<double> crlb_m;  // sigma_d times the bias-aware DOP (simulations, where sigma_d is known)
   // Wall time of this trigger's pass over all of the realization's samples (filter, PDOP,
   // trigger, solves) divided by the number of anchors. Varies from run to run, so it goes to
