@@ -1,10 +1,10 @@
 #!/usr/bin/env bash
-# Installs what is missing, then configures and builds (Release, with the Python module) in build/: everything, or only
+# Installs what is missing, then configures and builds (Release, with the Python module and the ROS node) in build/: everything, or only
 # the targets given as arguments (e.g. `bash scripts/build.sh anchorbench`).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 bash scripts/setup.sh
-cmake -S . -B build -DCMAKE_BUILD_TYPE=Release -DANCHORBENCH_PYTHON=ON >/dev/null
+cmake -S . -B build -DCMAKE_BUILD_TYPE=Release -DANCHORBENCH_PYTHON=ON -DANCHORBENCH_ROS=ON >/dev/null
 if [ $# -gt 0 ]; then
   cmake --build build -j"$(nproc)" --target "$@"
 else

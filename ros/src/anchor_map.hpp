@@ -1,0 +1,84 @@
+#pragma once
+// What the ROS node knows of every anchor, without ROS: the live front end with the config's
+// chains, the one trigger whose initializations the robot uses, each anchor's estimate or what it
+// waits for, and the anchors as files (docs/ros.md). Any thread may call it.
+//
+// This header is C++17 with std and Eigen only: ROS 1's message headers do not compile as C++20
+// (std::allocator<void>::rebind), so the node's ROS side sees the core through it alone.
+
+#include <chrono>
+#include <cstddef>
+#include <memory>
+#include <optional>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include <Eigen/Core>
+#include <Eigen/Geometry>
+
+namespace anchorbench::ros_node {
+
+// A setting the node cannot run with: one line naming it (the config's file and key, or the
+// parameter).
+class BadSetting : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+struct AnchorState {
+  int anchor_id = 0;
+  bool initialized = false;
+  // Initialized: the estimate, its position covariance, when and on how many samples.
+  Eigen::Vector3d p_world_anchor = Eigen::Vector3d::Zero();
+  Eigen::Matrix3d covariance = Eigen::Matrix3d::Zero();
+  double bias_m = 0.0;
+  double t_init_s = 0.0;
+  int n_used = 0;
+  std::string status;
+  std::string waiting_for;  // not initialized: the test that holds it back, with its numbers
+  long samples = 0;         // buffered by the published trigger's chain
+};
+
+class AnchorMap {
+ public:
+  using Clock = std::chrono::steady_clock;
+  // The CLI's config (a YAML path, empty: the defaults) with KEY=VALUE overrides, and the trigger
+  // whose initializations are published (empty: certified where the config lists it, else the
+  // first online one). Throws BadSetting.
+  AnchorMap(const std::string& config_path, const std::vector<std::string>& overrides, const std::string& trigger);
+  ~AnchorMap();
+
+  void AddPose(double t_s, int tag_id, const Eigen::Vector3d& p_world_tag);
+  void AddRange(double t_s, int tag_id, int anchor_id, double range_m);
+  // Runs due solves (at most max_count, none after deadline) and returns the anchors the published
+  // trigger initialized since the last call.
+  std::vector<AnchorState> Step(std::size_t max_count, Clock::time_point deadline);
+  // Every anchor seen, ascending: initialized or what it waits for.
+  std::vector<AnchorState> States() const;
+  void Reset();
+  bool Reset(int anchor_id);  // false: no such anchor
+  const std::string& trigger() const;
+  std::size_t pending_solves() const;
+
+ private:
+  struct Impl;
+  std::unique_ptr<Impl> impl_;
+};
+
+// anchors.csv (anchor_id,x,y,z,bias, as replay --anchors reads it, plus t_init,n_used and the
+// position covariance's diagonal) and the same as YAML, of the initialized anchors.
+std::string AnchorsCsv(const std::vector<AnchorState>& anchors);
+std::string AnchorsYaml(const std::vector<AnchorState>& anchors, const std::string& frame_id);
+
+// The 99% ellipsoid of a 3x3 covariance: its axes' full lengths (m) and orientation.
+struct Ellipsoid {
+  Eigen::Vector3d diameters_m = Eigen::Vector3d::Zero();
+  Eigen::Quaterniond orientation = Eigen::Quaterniond::Identity();
+};
+Ellipsoid EllipsoidOf(const Eigen::Matrix3d& covariance, double confidence = 0.99);
+
+// The anchor id a range message names in its frame_id: the trailing digits ("anchor_12", "12").
+std::optional<int> AnchorIdFromFrame(const std::string& frame_id);
+
+}  // namespace anchorbench::ros_node

@@ -1,0 +1,265 @@
+// anchorbench_ros: the online front end on a robot (docs/ros.md). Tag poses and UWB ranges in, each
+// anchor's estimate out once the configured trigger initializes it, with what every other anchor
+// waits for. Solves run on a worker thread with a time budget; callbacks only add samples.
+#include <atomic>
+#include <chrono>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <memory>
+#include <string>
+#include <thread>
+#include <vector>
+
+#include <diagnostic_msgs/DiagnosticArray.h>
+#include <geometry_msgs/PoseStamped.h>
+#include <geometry_msgs/PoseWithCovarianceStamped.h>
+#include <geometry_msgs/TransformStamped.h>
+#include <nav_msgs/Odometry.h>
+#include <ros/ros.h>
+#include <sensor_msgs/Range.h>
+#include <std_msgs/Int32.h>
+#include <std_srvs/Empty.h>
+#include <std_srvs/Trigger.h>
+#include <visualization_msgs/MarkerArray.h>
+
+#include "anchor_map.hpp"
+#include "settings.hpp"
+
+namespace anchorbench::ros_node {
+namespace {
+
+Eigen::Vector3d Position(const geometry_msgs::Point& p) { return {p.x, p.y, p.z}; }
+Eigen::Vector3d Position(const geometry_msgs::Vector3& p) { return {p.x, p.y, p.z}; }
+Eigen::Quaterniond Orientation(const geometry_msgs::Quaternion& q) {
+  const Eigen::Quaterniond r(q.w, q.x, q.y, q.z);
+  return r.norm() > 0.5 ? r.normalized() : Eigen::Quaterniond::Identity();  // an unset quaternion: no rotation
+}
+
+class Node {
+ public:
+  Node(ros::NodeHandle& nh, ros::NodeHandle& private_nh, NodeSettings settings)
+      : settings_(std::move(settings)), map_(settings_.config, settings_.overrides, settings_.trigger) {
+    for (const TagSettings& tag : settings_.tags) Subscribe(nh, tag);
+    markers_ = private_nh.advertise<visualization_msgs::MarkerArray>("markers", 1, true);
+    diagnostics_ = nh.advertise<diagnostic_msgs::DiagnosticArray>("/diagnostics", 10);
+    reset_ = private_nh.advertiseService("reset", &Node::OnReset, this);
+    save_ = private_nh.advertiseService("save", &Node::OnSave, this);
+    reset_anchor_ = private_nh.subscribe("reset_anchor", 10, &Node::OnResetAnchor, this);
+    private_nh_ = private_nh;
+    diagnostics_timer_ =
+        nh.createWallTimer(ros::WallDuration(1.0 / settings_.diagnostics_rate_hz), [this](const ros::WallTimerEvent&) {
+          PublishDiagnostics();
+        });
+    worker_ = std::thread([this] { SolveLoop(); });
+    ROS_INFO("anchorbench_ros: publishing the '%s' trigger's anchors for %zu tag(s)", map_.trigger().c_str(),
+             settings_.tags.size());
+  }
+  ~Node() {
+    stop_ = true;
+    if (worker_.joinable()) worker_.join();
+  }
+
+ private:
+  void Subscribe(ros::NodeHandle& nh, const TagSettings& tag) {
+    const int id = tag.id;
+    const Eigen::Vector3d offset = tag.offset_m;
+    auto add = [this, id, offset](const ros::Time& stamp, const Eigen::Vector3d& p, const Eigen::Quaterniond& q) {
+      map_.AddPose(stamp.toSec(), id, p + q * offset);  // the antenna, at its body-frame offset
+    };
+    if (tag.pose_type == "PoseStamped") {
+      subscribers_.push_back(nh.subscribe<geometry_msgs::PoseStamped>(
+          tag.pose_topic, 1000, [add](const geometry_msgs::PoseStamped::ConstPtr& m) {
+            add(m->header.stamp, Position(m->pose.position), Orientation(m->pose.orientation));
+          }));
+    } else if (tag.pose_type == "PoseWithCovarianceStamped") {
+      subscribers_.push_back(nh.subscribe<geometry_msgs::PoseWithCovarianceStamped>(
+          tag.pose_topic, 1000, [add](const geometry_msgs::PoseWithCovarianceStamped::ConstPtr& m) {
+            add(m->header.stamp, Position(m->pose.pose.position), Orientation(m->pose.pose.orientation));
+          }));
+    } else if (tag.pose_type == "TransformStamped") {
+      subscribers_.push_back(nh.subscribe<geometry_msgs::TransformStamped>(
+          tag.pose_topic, 1000, [add](const geometry_msgs::TransformStamped::ConstPtr& m) {
+            add(m->header.stamp, Position(m->transform.translation), Orientation(m->transform.rotation));
+          }));
+    } else {  // Odometry (settings.cpp refuses any other name)
+      subscribers_.push_back(nh.subscribe<nav_msgs::Odometry>(
+          tag.pose_topic, 1000, [add](const nav_msgs::Odometry::ConstPtr& m) {
+            add(m->header.stamp, Position(m->pose.pose.position), Orientation(m->pose.pose.orientation));
+          }));
+    }
+    subscribers_.push_back(
+        nh.subscribe<sensor_msgs::Range>(tag.range_topic, 1000, [this, id](const sensor_msgs::Range::ConstPtr& m) {
+          const std::optional<int> anchor_id = AnchorIdFromFrame(m->header.frame_id);
+          if (!anchor_id) {
+            ROS_WARN_THROTTLE(5.0, "anchorbench_ros: a range's frame_id '%s' names no anchor id (trailing digits)",
+                              m->header.frame_id.c_str());
+            return;
+          }
+          map_.AddRange(m->header.stamp.toSec(), id, *anchor_id, m->range);
+        }));
+  }
+
+  // Solves off the callbacks: a few at a time within a budget, then the new anchors out.
+  void SolveLoop() {
+    const auto period = std::chrono::duration<double>(1.0 / settings_.solve_rate_hz);
+    while (!stop_ && ros::ok()) {
+      const auto start = AnchorMap::Clock::now();
+      const auto budget = std::chrono::duration_cast<AnchorMap::Clock::duration>(
+          std::chrono::duration<double>(settings_.solve_budget_s));
+      const std::vector<AnchorState> fresh = map_.Step(settings_.max_solves_per_step, start + budget);
+      for (const AnchorState& anchor : fresh) PublishAnchor(anchor);
+      if (!fresh.empty()) PublishMarkers();
+      std::this_thread::sleep_until(start + std::chrono::duration_cast<AnchorMap::Clock::duration>(period));
+    }
+  }
+
+  void PublishAnchor(const AnchorState& anchor) {
+    auto found = anchor_publishers_.find(anchor.anchor_id);
+    if (found == anchor_publishers_.end()) {
+      found = anchor_publishers_
+                  .emplace(anchor.anchor_id, private_nh_.advertise<geometry_msgs::PoseWithCovarianceStamped>(
+                                                 "anchor_" + std::to_string(anchor.anchor_id), 1, true))
+                  .first;
+    }
+    geometry_msgs::PoseWithCovarianceStamped message;
+    message.header.stamp = ros::Time(anchor.t_init_s);
+    message.header.frame_id = settings_.frame_id;
+    const AnchorState& s = anchor;
+    message.pose.pose.position.x = s.p_world_anchor.x();
+    message.pose.pose.position.y = s.p_world_anchor.y();
+    message.pose.pose.position.z = s.p_world_anchor.z();
+    message.pose.pose.orientation.w = 1.0;
+    for (int i = 0; i < 3; ++i) {
+      for (int j = 0; j < 3; ++j) message.pose.covariance[static_cast<std::size_t>(6 * i + j)] = s.covariance(i, j);
+    }
+    for (int i = 3; i < 6; ++i) message.pose.covariance[static_cast<std::size_t>(7 * i)] = -1.0;  // no orientation
+    found->second.publish(message);
+    ROS_INFO("anchorbench_ros: anchor %d at (%.3f, %.3f, %.3f), bias %.3f m, %d samples", anchor.anchor_id,
+             s.p_world_anchor.x(), s.p_world_anchor.y(), s.p_world_anchor.z(), s.bias_m, anchor.n_used);
+  }
+
+  void PublishMarkers() {
+    visualization_msgs::MarkerArray array;
+    for (const AnchorState& anchor : map_.States()) {
+      if (!anchor.initialized) continue;
+      visualization_msgs::Marker m;
+      m.header.frame_id = settings_.frame_id;
+      m.header.stamp = ros::Time::now();
+      m.ns = "anchorbench";
+      m.id = anchor.anchor_id;
+      m.type = visualization_msgs::Marker::SPHERE;  // the 99% ellipsoid around the estimate
+      const AnchorState& s = anchor;
+      m.pose.position.x = s.p_world_anchor.x();
+      m.pose.position.y = s.p_world_anchor.y();
+      m.pose.position.z = s.p_world_anchor.z();
+      const Ellipsoid e = EllipsoidOf(s.covariance);
+      m.pose.orientation.w = e.orientation.w();
+      m.pose.orientation.x = e.orientation.x();
+      m.pose.orientation.y = e.orientation.y();
+      m.pose.orientation.z = e.orientation.z();
+      m.scale.x = std::max(e.diameters_m.x(), 0.05);
+      m.scale.y = std::max(e.diameters_m.y(), 0.05);
+      m.scale.z = std::max(e.diameters_m.z(), 0.05);
+      m.color.g = 0.8f;
+      m.color.a = 0.5f;
+      array.markers.push_back(m);
+    }
+    markers_.publish(array);
+  }
+
+  void PublishDiagnostics() {
+    diagnostic_msgs::DiagnosticArray array;
+    array.header.stamp = ros::Time::now();
+    for (const AnchorState& anchor : map_.States()) {
+      diagnostic_msgs::DiagnosticStatus status;
+      status.name = "anchorbench: anchor " + std::to_string(anchor.anchor_id);
+      status.hardware_id = "uwb_anchor_" + std::to_string(anchor.anchor_id);
+      status.level = anchor.initialized ? diagnostic_msgs::DiagnosticStatus::OK : diagnostic_msgs::DiagnosticStatus::WARN;
+      status.message = anchor.initialized ? "initialized" : "waiting: " + anchor.waiting_for;
+      auto value = [&status](const std::string& key, const std::string& text) {
+        diagnostic_msgs::KeyValue kv;
+        kv.key = key;
+        kv.value = text;
+        status.values.push_back(kv);
+      };
+      value("trigger", map_.trigger());
+      value("samples", std::to_string(anchor.initialized ? anchor.n_used : anchor.samples));
+      if (anchor.initialized) {
+        value("bias_m", std::to_string(anchor.bias_m));
+        value("t_init_s", std::to_string(anchor.t_init_s));
+        value("status", anchor.status);
+      } else {
+        value("waiting_for", anchor.waiting_for);
+      }
+      array.status.push_back(status);
+    }
+    diagnostics_.publish(array);
+  }
+
+  bool OnReset(std_srvs::Empty::Request&, std_srvs::Empty::Response&) {
+    map_.Reset();
+    PublishMarkers();
+    ROS_INFO("anchorbench_ros: every anchor starts over");
+    return true;
+  }
+  void OnResetAnchor(const std_msgs::Int32::ConstPtr& message) {
+    if (!map_.Reset(message->data)) ROS_WARN("anchorbench_ros: reset_anchor %d: no such anchor", message->data);
+    PublishMarkers();
+  }
+  bool OnSave(std_srvs::Trigger::Request&, std_srvs::Trigger::Response& response) {
+    const std::vector<AnchorState> states = map_.States();
+    try {
+      WriteWhole(settings_.save_dir / "anchors.csv", AnchorsCsv(states));
+      WriteWhole(settings_.save_dir / "anchors.yaml", AnchorsYaml(states, settings_.frame_id));
+      response.success = true;
+      response.message = "wrote " + (settings_.save_dir / "anchors.csv").string() + " and anchors.yaml";
+    } catch (const std::exception& e) {
+      response.success = false;
+      response.message = e.what();
+    }
+    return true;
+  }
+
+  // A file whole or not at all: written beside, then renamed over.
+  static void WriteWhole(const std::filesystem::path& path, const std::string& text) {
+    std::filesystem::create_directories(path.parent_path());
+    const std::filesystem::path partial = path.string() + ".partial";
+    {
+      std::ofstream out(partial, std::ios::binary | std::ios::trunc);
+      out << text;
+      out.flush();
+      if (!out) throw std::runtime_error(partial.string() + ": cannot write");
+    }
+    std::filesystem::rename(partial, path);
+  }
+
+  NodeSettings settings_;
+  AnchorMap map_;
+  ros::NodeHandle private_nh_;
+  std::vector<ros::Subscriber> subscribers_;
+  ros::Subscriber reset_anchor_;
+  ros::Publisher markers_, diagnostics_;
+  std::map<int, ros::Publisher> anchor_publishers_;
+  ros::ServiceServer reset_, save_;
+  ros::WallTimer diagnostics_timer_;
+  std::atomic<bool> stop_{false};
+  std::thread worker_;
+};
+
+}  // namespace
+}  // namespace anchorbench::ros_node
+
+int main(int argc, char** argv) {
+  ros::init(argc, argv, "anchorbench");
+  ros::NodeHandle nh, private_nh("~");
+  using namespace anchorbench;
+  try {
+    ros_node::Node node(nh, private_nh, ros_node::ReadSettings(private_nh));
+    ros::spin();
+  } catch (const ros_node::BadSetting& e) {
+    ROS_FATAL("anchorbench_ros: %s", e.what());
+    return 2;
+  }
+  return 0;
+}

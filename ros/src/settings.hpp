@@ -1,0 +1,38 @@
+#pragma once
+// The node's ROS parameters (docs/ros.md), read and checked once at start: a bad one is one
+// error naming it, before anything is subscribed.
+
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include <Eigen/Core>
+#include <ros/node_handle.h>
+
+namespace anchorbench::ros_node {
+
+struct TagSettings {
+  int id = 0;
+  std::string pose_topic;              // the body's pose
+  std::string pose_type = "PoseStamped";  // PoseStamped, PoseWithCovarianceStamped, TransformStamped, Odometry
+  Eigen::Vector3d offset_m = Eigen::Vector3d::Zero();  // the antenna in the body frame
+  std::string range_topic;             // sensor_msgs/Range, the anchor id in header.frame_id
+};
+
+struct NodeSettings {
+  std::string config;                  // the CLI's YAML (empty: the defaults)
+  std::vector<std::string> overrides;  // KEY=VALUE, as --set
+  std::string trigger;                 // published (empty: certified if listed, else the first online)
+  std::string frame_id = "world";
+  std::filesystem::path save_dir = ".";
+  double solve_rate_hz = 20.0;         // the solve worker's steps
+  double solve_budget_s = 0.02;        // no solve starts later than this into a step
+  int max_solves_per_step = 8;
+  double diagnostics_rate_hz = 1.0;
+  std::vector<TagSettings> tags;
+};
+
+// Throws BadSetting naming the parameter.
+NodeSettings ReadSettings(const ros::NodeHandle& private_nh);
+
+}  // namespace anchorbench::ros_node

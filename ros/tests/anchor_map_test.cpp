@@ -1,0 +1,95 @@
+// The node's logic without ROS: the published trigger's anchors from poses and ranges, what the
+// others wait for, reset, the saved files, the rviz ellipsoid and the anchor id of a frame.
+#include "anchor_map.hpp"
+
+#include <cmath>
+#include <random>
+
+#include <gtest/gtest.h>
+
+
+namespace anchorbench::ros_node {
+namespace {
+
+const Eigen::Vector3d kAnchors[] = {{3.0, 4.0, 2.5}, {-4.0, 1.0, 3.0}, {40.0, 40.0, 2.0}};  // the last out of reach
+
+// A tag that wanders around the first two anchors, up and down, at 10 Hz: poses and ranges (the far
+// anchor ranged too, from a distance no geometry resolves in a minute).
+void Feed(AnchorMap& map, double seconds) {
+  std::mt19937 rng(3);
+  std::normal_distribution<double> noise(0.0, 0.05);
+  for (int k = 0; 0.1 * k <= seconds; ++k) {
+    const double t = 0.1 * k;
+    const Eigen::Vector3d p(5.0 * std::cos(0.21 * t), 4.0 * std::sin(0.17 * t), 1.0 + 1.2 * std::sin(0.11 * t));
+    map.AddPose(t, 0, p);
+    for (int a = 0; a < 3; ++a) map.AddRange(t, 0, a, (p - kAnchors[a]).norm() + 0.1 + noise(rng));
+  }
+}
+
+std::vector<AnchorState> RunSolves(AnchorMap& map) {
+  std::vector<AnchorState> all;
+  for (;;) {
+    std::vector<AnchorState> fresh = map.Step(1000, AnchorMap::Clock::time_point::max());
+    if (fresh.empty() && map.pending_solves() == 0) return all;
+    all.insert(all.end(), fresh.begin(), fresh.end());
+  }
+}
+
+TEST(AnchorMap, PublishesTheCertifiedAnchorsAndSaysWhatTheOthersWaitFor) {
+  AnchorMap map("", {}, "");
+  EXPECT_EQ(map.trigger(), "certified");  // the defaults list it
+  Feed(map, 120.0);
+  const std::vector<AnchorState> fresh = RunSolves(map);
+  ASSERT_EQ(fresh.size(), 2u);
+  for (const AnchorState& anchor : fresh) {
+    EXPECT_LT((anchor.p_world_anchor - kAnchors[anchor.anchor_id]).norm(), 0.75);
+  }
+  const std::vector<AnchorState> states = map.States();
+  ASSERT_EQ(states.size(), 3u);
+  EXPECT_TRUE(states[0].initialized && states[1].initialized);
+  EXPECT_FALSE(states[2].initialized);
+  EXPECT_FALSE(states[2].waiting_for.empty());
+  EXPECT_GT(states[2].samples, 0);
+
+  const std::string csv = AnchorsCsv(states);
+  EXPECT_EQ(csv.substr(0, csv.find('\n')), "anchor_id,x,y,z,bias,t_init,n_used,var_x,var_y,var_z");
+  EXPECT_EQ(std::count(csv.begin(), csv.end(), '\n'), 3);  // the header and the two initialized
+  EXPECT_NE(AnchorsYaml(states, "map").find("frame_id: \"map\""), std::string::npos);
+
+  EXPECT_TRUE(map.Reset(0));
+  EXPECT_FALSE(map.Reset(99));
+  EXPECT_FALSE(map.States()[0].initialized);
+  map.Reset();
+  for (const AnchorState& state : map.States()) EXPECT_FALSE(state.initialized);
+}
+
+TEST(AnchorMap, RefusesAnOfflineOrUnknownTrigger) {
+  EXPECT_THROW(AnchorMap("", {}, "fixed_window"), BadSetting);
+  EXPECT_THROW(AnchorMap("", {}, "no_such_trigger"), BadSetting);
+  EXPECT_THROW(AnchorMap("", {}, "pdop_true"), BadSetting);  // needs the truth
+  EXPECT_THROW(AnchorMap("", {"estimator.bogus=1"}, ""), BadSetting);
+  EXPECT_EQ(AnchorMap("", {}, "pdop_closest_point").trigger(), "pdop_closest_point");
+}
+
+TEST(Ellipsoid, HasTheConfidenceRegionsAxes) {
+  const Eigen::Matrix3d covariance = Eigen::Vector3d(0.04, 0.01, 0.0025).asDiagonal();
+  const Ellipsoid e = EllipsoidOf(covariance);
+  const double k = std::sqrt(11.3449);  // chi2_3(0.99)
+  Eigen::Vector3d sorted = e.diameters_m;
+  std::sort(sorted.data(), sorted.data() + 3);
+  EXPECT_NEAR(sorted(0), 2 * k * 0.05, 1e-3);
+  EXPECT_NEAR(sorted(2), 2 * k * 0.2, 1e-3);
+  EXPECT_NEAR(e.orientation.norm(), 1.0, 1e-12);
+}
+
+TEST(AnchorIdFromFrame, ReadsTheTrailingDigits) {
+  EXPECT_EQ(AnchorIdFromFrame("anchor_12"), 12);
+  EXPECT_EQ(AnchorIdFromFrame("7"), 7);
+  EXPECT_EQ(AnchorIdFromFrame("uwb/a3"), 3);
+  EXPECT_FALSE(AnchorIdFromFrame("anchor"));
+  EXPECT_FALSE(AnchorIdFromFrame(""));
+  EXPECT_FALSE(AnchorIdFromFrame("a12345678901"));
+}
+
+}  // namespace
+}  // namespace anchorbench::ros_node
