@@ -179,6 +179,7 @@ void Estimator(V& v, schema::EstimatorConfig& o, const registry::Components& com
   v.Name("solver", o.solver, [&](const std::string& name, std::string* why) { return components.solvers.Knows(name, why); });
   v.NameList("triggers", o.triggers,
              [&](const std::string& name, std::string* why) { return components.triggers.Knows(name, why); });
+  v.Flag("oracle_latency", o.oracle_latency);
   v.Section("filter", [&](auto& s) { Filter(s, o.filter, components); });
   v.Section("initializer", [&](auto& s) { Initializer(s, o.initializer); });
   v.Section("trigger", [&](auto& s) { Trigger(s, o.trigger); });

@@ -64,6 +64,7 @@ std::vector<PaperCell> CalibrationRuns::Cells(std::vector<std::string> assignmen
   // certified in Table I) would cost without changing a cell.
   assignments.push_back(std::string("estimator.triggers=[") + schema::kFixedWindowTrigger + "," +
                         schema::kPaperTrigger + "]");
+  assignments.push_back("estimator.oracle_latency=false");  // nor does the oracle's pass
   const schema::ExperimentConfig config = Experiment(assignments);
   CheckExperiment(config, components_);
   const std::vector<schema::RowConfig> rows = schema::RowsOf(config);

@@ -158,7 +158,8 @@ std::vector<schema::Attempt> RunRealization(const schema::RowConfig& row, int ro
     by_trigger.push_back(RunTrigger(row, trigger, seed, realization, components, truth, samples, t_end_s));
   }
   const std::map<int, eval::OracleLatency> oracle =
-      OracleLatencies(row, seed, realization, components, truth, samples, t_end_s);
+      row.estimator.oracle_latency ? OracleLatencies(row, seed, realization, components, truth, samples, t_end_s)
+                                   : std::map<int, eval::OracleLatency>{};
   // Anchor by anchor, triggers in list order.
   std::vector<schema::Attempt> attempts;
   const double sigma_m = row.scenario.ranging.sigma_range_m;

@@ -55,7 +55,8 @@ ReplayResult Replay(const LogSource& log, const std::vector<std::string>& range_
   std::map<int, std::shared_ptr<eval::OracleLog>> oracle_logs;
   estimator::FrontEndOptions options;
   options.report_judgements = static_cast<bool>(judged);
-  estimator::FrontEnd front_end(ChainsFor(truth, config, components, seed, &oracle_logs), options);
+  estimator::FrontEnd front_end(
+      ChainsFor(truth, config, components, seed, config.oracle_latency ? &oracle_logs : nullptr), options);
   // Initializations are kept for the end; judgements go to `judged` as they come (the oracle's
   // chain, after the config's, is not reported).
   std::map<std::pair<int, std::size_t>, estimator::InitEvent> events;

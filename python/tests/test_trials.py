@@ -109,3 +109,20 @@ def test_replay_with_navigate_gives_the_command_lines_navigation_tables(small_ya
     for name in NAVIGATION_FILES + ["estimates.csv"]:
         assert replayed.text(name) == (tmp_path / "cli" / name).read_text(), name
     assert len(replayed.navigation) == 3 * 5  # draws x (3 triggers, the true anchors, none)
+
+
+def test_the_oracle_times_each_anchor_where_the_truth_is_known_and_can_be_turned_off(small_yaml):
+    table = ab.run(str(small_yaml), realizations=2)
+    attempts = table.attempts
+    assert {"t_first", "t_oracle", "latency", "blocked_by"} <= set(attempts.columns)
+    certifiable = attempts.dropna(subset=["t_oracle"])
+    assert len(certifiable) > 0
+    assert (certifiable["t_oracle"] >= certifiable["t_first"]).all()
+    fired = certifiable[(certifiable["initialized"] == 1) & certifiable["latency"].notna()]
+    assert (fired["latency"] > 0).all()
+    waiting = attempts[(attempts["initialized"] == 0) & (attempts["method"] != "fixed_window")]
+    assert waiting["blocked_by"].notna().all()  # every waiting online trigger names its test
+    off = ab.run(str(small_yaml), realizations=2, overrides=["estimator.oracle_latency=false"]).attempts
+    assert off["t_oracle"].isna().all() and off["latency"].isna().all()
+    same = ["row", "realization", "anchor_id", "method", "initialized", "t_init", "err_m"]
+    assert off[same].equals(attempts[same])  # the oracle only judges: the attempts are the same

@@ -79,6 +79,10 @@ struct EstimatorConfig {
   estimator::AnchorSolverOptions solver_options;                         // estimator.ls, estimator.nls
   HeightPriorConfig height_prior;                                        // estimator.height_prior
   estimator::CertificateOptions certificate;                             // estimator.certificate
+  // Evaluation, not estimation: where the truth is known, one more pass per realization (or replay)
+  // finds each anchor's oracle time (eval/oracle_latency.hpp; ~10 solves of each anchor's data).
+  // calibrate turns it off: its cells do not use it.
+  bool oracle_latency = true;                                            // estimator.oracle_latency
 
   bool IsValid(std::string* why) const;
 };
