@@ -70,6 +70,17 @@ bad_tests=$(tail -n +2 "$dir/cert.csv" | cut -d, -f5 | grep -cvE '^(solve|region
 fired=$(tail -n +2 "$dir/cert.csv" | grep -c ',certified,[0-9]*,fired,' || true)
 certified=$(grep -c ',certified,1,' "$dir/out_cert/estimates.csv" || true)
 [ "$fired" -eq "$certified" ] || { echo "FAIL: $fired fired rows, $certified certified anchors"; failures=$((failures + 1)); }
+printf 'anchor_id,x,y,z\n900,0,0,0\n901,1,1,1\n' >"$dir/other_site.csv"
+expect_error "anchors of another site" "none of its 2 (ids 900 to 901) is an anchor the log ranges" "$bin" replay \
+  --poses "$dir/sim/poses.csv" --ranges "$dir/sim/ranges.csv" --anchors "$dir/other_site.csv"
+# The terminal table keeps its columns apart with epoch times (1.69e9 s): as many fields per row as
+# the header has.
+awk -F, -v CONVFMT=%.3f 'NR == 1 { print; next } { $1 = $1 + 1691181966; print }' OFS=, "$dir/sim/poses.csv" >"$dir/epoch_poses.csv"
+awk -F, -v CONVFMT=%.3f 'NR == 1 { print; next } { $1 = $1 + 1691181966; print }' OFS=, "$dir/sim/ranges.csv" >"$dir/epoch_ranges.csv"
+"$bin" replay --quiet --poses "$dir/epoch_poses.csv" --ranges "$dir/epoch_ranges.csv" >"$dir/epoch_table.txt" ||
+  { echo "FAIL: replay of the epoch log"; failures=$((failures + 1)); }
+awk 'NR == 1 { n = NF; next } NF != n { bad++ } END { exit bad > 0 }' "$dir/epoch_table.txt" ||
+  { echo "FAIL: the terminal table runs columns together"; cat "$dir/epoch_table.txt"; failures=$((failures + 1)); }
 expect_error "certificate trace is the trace" "is also --trace" "$bin" replay --poses "$dir/sim/poses.csv" --ranges "$dir/sim/ranges.csv" \
   --trace "$dir/same.csv" --certificate-trace "$dir/same.csv"
 [ "$(head -1 "$dir/out/estimates.csv")" = "anchor_id,method,initialized,t_init,n_used,pdop_est,pdop_true,x,y,z,bias,err_m,status,err_xy,err_z,bias_aware_hdop,bias_aware_vdop,scale,blocked_by,blocked_value,blocked_limit,t_first,t_oracle,latency" ] || { echo "FAIL: estimates header"; failures=$((failures + 1)); }

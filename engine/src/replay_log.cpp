@@ -2,6 +2,7 @@
 
 #include "anchorbench/io/recorded_data.hpp"
 #include "anchorbench/report/replay_report.hpp"
+#include "anchorbench/schema/input_error.hpp"
 
 namespace anchorbench::engine {
 
@@ -15,6 +16,23 @@ ReplayLog::ReplayLog(io::LogFiles files, io::LogPolicy policy, std::optional<std
       components_(components),
       survey_(io::SurveyLog(files_, policy_, progress)) {
   CheckReplayable(survey_.anchor_ids, truth_ ? &*truth_ : nullptr, config_.estimator, components_);
+  CheckAnchorsMatch();
+}
+
+void ReplayLog::CheckAnchorsMatch() const {
+  // A survey that names none of the ranged anchors is another site's (or another numbering): every
+  // error would be empty. Some surveyed anchors missing from the log, or the reverse, is normal.
+  if (!truth_ || truth_->empty() || survey_.anchor_ids.empty()) return;
+  for (const int anchor_id : survey_.anchor_ids) {
+    if (truth_->contains(anchor_id)) return;
+  }
+  auto ids = [](auto first, auto last, std::size_t count) {
+    return std::to_string(count) + " (ids " + std::to_string(first) + " to " + std::to_string(last) + ")";
+  };
+  throw schema::InputError("--anchors: none of its " +
+                           ids(truth_->begin()->first, truth_->rbegin()->first, truth_->size()) +
+                           " is an anchor the log ranges, " +
+                           ids(*survey_.anchor_ids.begin(), *survey_.anchor_ids.rbegin(), survey_.anchor_ids.size()));
 }
 
 ReplayOutcome ReplayLog::Run(const TraceSink& trace, const io::ByteProgress& progress,

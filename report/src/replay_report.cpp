@@ -86,7 +86,13 @@ void PrintEstimates(std::ostream& out, const std::vector<schema::Attempt>& attem
   // The terminal shows the columns up to err_z; the DOP split is in estimates.csv.
   constexpr int kWidth[] = {10, 20, 12, 10, 8, 10, 10, 10, 10, 10, 10, 10, 21, 10, 10};
   static_assert(std::size(kWidth) <= std::size(kEstimateColumns));
-  for (std::size_t i = 0; i < std::size(kWidth); ++i) out << std::setw(kWidth[i]) << kEstimateColumns[i];
+  // Each cell right-aligned in its width less one, after one space: a wider value (an epoch time)
+  // pushes the row right but never runs into its neighbour.
+  const auto cell = [&out, &kWidth](std::size_t i, const std::string& text) {
+    if (i > 0) out << ' ';
+    out << std::setw(kWidth[i] - 1) << text;
+  };
+  for (std::size_t i = 0; i < std::size(kWidth); ++i) cell(i, kEstimateColumns[i]);
   out << '\n';
   for (const schema::Attempt& a : attempts) {
     std::vector<std::string> fields = EstimateFields(a);
@@ -103,7 +109,7 @@ void PrintEstimates(std::ostream& out, const std::vector<schema::Attempt>& attem
     if (a.evaluation && a.evaluation->error_m) fields[11] = ForTerminal(*a.evaluation->error_m);
     if (ErrorXy(a)) fields[13] = ForTerminal(*ErrorXy(a));
     if (ErrorZ(a)) fields[14] = ForTerminal(*ErrorZ(a));
-    for (std::size_t i = 0; i < std::size(kWidth); ++i) out << std::setw(kWidth[i]) << (fields[i].empty() ? "-" : fields[i]);
+    for (std::size_t i = 0; i < std::size(kWidth); ++i) cell(i, fields[i].empty() ? "-" : fields[i]);
     out << '\n';
   }
 }

@@ -26,8 +26,9 @@ struct ReplayOutcome {
 
 class ReplayLog {
  public:
-  // The first pass: throws InputError for a malformed file, a row the policy refuses, or a
-  // trigger that cannot run on this log (pdop_true without `truth`). `progress` sees bytes read.
+  // The first pass: throws InputError for a malformed file, a row the policy refuses, a trigger
+  // that cannot run on this log (pdop_true without `truth`), or a `truth` that names none of the
+  // anchors ranged. `progress` sees bytes read.
   ReplayLog(io::LogFiles files, io::LogPolicy policy, std::optional<std::map<int, schema::AnchorTruth>> truth,
             const schema::ExperimentConfig& config, const registry::Components& components,
             const io::ByteProgress& progress = nullptr);
@@ -43,6 +44,9 @@ class ReplayLog {
                     const JudgementSink& judged = nullptr) const;
 
  private:
+  // Refuses a survey (--anchors) that names none of the anchors the log ranges.
+  void CheckAnchorsMatch() const;
+
   io::LogFiles files_;
   io::LogPolicy policy_;
   std::optional<std::map<int, schema::AnchorTruth>> truth_;
