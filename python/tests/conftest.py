@@ -35,7 +35,10 @@ def cli():
         pytest.skip("ANCHORBENCH_CLI does not name the anchorbench executable")
 
     def run(*args, check=True):
-        return subprocess.run([binary, *map(str, args)], capture_output=True, text=True, check=check)
+        # Not the ASan runtime the sanitizer job preloads into python3: the sanitized CLI carries its
+        # own, and two runtimes in one process refuse to start.
+        env = {k: v for k, v in os.environ.items() if k != "LD_PRELOAD"}
+        return subprocess.run([binary, *map(str, args)], capture_output=True, text=True, check=check, env=env)
 
     return run
 
