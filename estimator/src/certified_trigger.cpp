@@ -206,7 +206,8 @@ double CertifiedTrigger::LargestVariance(std::span<const Eigen::Vector3d> p_worl
 }
 
 double CertifiedTrigger::RegionFromEnds(const TriggerInput& in, const SolveResult& estimate,
-                                      const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d>& axes) const {
+                                      const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d>& axes,
+                                      double correlation_factor, double travel_bias_m) const {
   const std::span<const Eigen::Vector3d> p_world_tag = in.p_world_tag;
   const std::span<const double> range_m = in.range_m;
   const double limit = options_.accuracy_m * options_.accuracy_m / region_chi2_;  // of the largest variance
@@ -214,19 +215,15 @@ double CertifiedTrigger::RegionFromEnds(const TriggerInput& in, const SolveResul
   // scaled for its correlation.
   const double scale_m = std::max(ResidualScale(p_world_tag, range_m, estimate.p_world_anchor, estimate.bias_m),
                                   covariance_.model_error_m);
-  const double factor =
-      covariance_.correlated_noise ? CorrelationFactor(p_world_tag, range_m, estimate.p_world_anchor, estimate.bias_m) : 1.0;
   const std::vector<int> tags = EstimatedTags(in.tag_id, p_world_tag.size());
-  const double travel_bias_m =
-      travel_bias_ ? travel_bias_(DifferenceScale(p_world_tag, range_m, in.tag_id, estimate.p_world_anchor, estimate.bias_m))
-                   : 0.0;
   double worst = 0.0;
   for (int i = 0; i < 3; ++i) {
     const Eigen::Vector3d half_axis =
         std::sqrt(region_chi2_ * std::max(axes.eigenvalues()(i), 0.0)) * axes.eigenvectors().col(i);
     for (const double side : {-1.0, 1.0}) {
       const Eigen::Vector3d end = estimate.p_world_anchor + side * half_axis;
-      const double variance = LargestVariance(p_world_tag, in.tag_id, tags, end, factor * scale_m * scale_m, travel_bias_m);
+      const double variance = LargestVariance(p_world_tag, in.tag_id, tags, end, correlation_factor * scale_m * scale_m,
+                                              travel_bias_m);
       if (!(variance <= limit)) return std::sqrt(region_chi2_ * variance);  // the first end beyond D decides
       worst = std::max(worst, variance);
     }
@@ -235,7 +232,7 @@ double CertifiedTrigger::RegionFromEnds(const TriggerInput& in, const SolveResul
 }
 
 void CertifiedTrigger::ShareRegion(const TriggerInput& in, const SolveResult& noise_only, double correlation_factor,
-                                   const Eigen::Vector3d& axis, double largest_variance) {
+                                   double travel_bias_m, const Eigen::Vector3d& axis, double largest_variance) {
   // Along the region's longest axis v, each term's v^T P v. The noise part's tags' offsets are
   // what the joint information with them adds to the one-bias information's inverse.
   const double noise = axis.dot(noise_only.covariance.topLeftCorner<3, 3>() * axis);
@@ -249,10 +246,6 @@ void CertifiedTrigger::ShareRegion(const TriggerInput& in, const SolveResult& no
       tags_part = std::clamp(noise - scale_m * scale_m * axis.dot(one_bias.topLeftCorner<3, 3>() * axis), 0.0, noise);
     }
   }
-  const double travel_bias_m =
-      covariance_.travel_bias && travel_bias_
-          ? travel_bias_(DifferenceScale(in.p_world_tag, in.range_m, in.tag_id, noise_only.p_world_anchor, noise_only.bias_m))
-          : 0.0;
   const ModelErrorTerms terms =
       ModelErrorCovarianceTerms(in.p_world_tag, in.tag_id, noise_only.p_world_anchor, covariance_, travel_bias_m);
   const double parts[] = {noise - tags_part, (correlation_factor - 1.0) * noise, axis.dot(terms.model.topLeftCorner<3, 3>() * axis),
@@ -326,10 +319,15 @@ bool CertifiedTrigger::Judge(const TriggerInput& in) {
       covariance_.correlated_noise
           ? CorrelationFactor(fitted.p_world_tag, fitted.range_m, noise_only.p_world_anchor, noise_only.bias_m)
           : 1.0;
-  ShareRegion(fitted, noise_only, correlation_factor, axes.eigenvectors().col(2), axes.eigenvalues()(2));
+  // The consistency check's travel bias at the estimate (MakeCredible moved its covariance only).
+  const double travel_bias_m =
+      travel_bias_ ? travel_bias_(DifferenceScale(fitted.p_world_tag, fitted.range_m, fitted.tag_id,
+                                                  noise_only.p_world_anchor, noise_only.bias_m))
+                   : 0.0;
+  ShareRegion(fitted, noise_only, correlation_factor, travel_bias_m, axes.eigenvectors().col(2), axes.eigenvalues()(2));
   const double limit = d_m * d_m / region_chi2_;  // of the largest variance
   if (!(axes.eigenvalues().maxCoeff() <= limit)) return blocked("region", judgement_.region_m, d_m);
-  const double from_ends_m = RegionFromEnds(fitted, estimate, axes);
+  const double from_ends_m = RegionFromEnds(fitted, estimate, axes, correlation_factor, travel_bias_m);
   if (!(from_ends_m <= d_m)) return blocked("region_ends", from_ends_m, d_m);
   const Verdict verdict = RuleOutAlternatives(fitted.p_world_tag, fitted.range_m, estimate, axes.eigenvectors());
   refusal_ = verdict == Verdict::kMirror ? std::optional(SolveStatus::kHeightUnobservable) : std::nullopt;

@@ -45,18 +45,21 @@ py::dict JudgementDict(int anchor_id, const std::string& trigger, const estimato
   d["t_s"] = value(j.t_s);
   d["samples"] = j.samples;
   d["blocked_by"] = std::string(j.blocked_by);
-  d["value"] = value(j.value);
-  d["limit"] = value(j.limit);
-  d["region_m"] = value(j.region_m);
-  d["share_noise"] = value(j.share_noise);
-  d["share_correlation"] = value(j.share_correlation);
-  d["share_model_error"] = value(j.share_model_error);
-  d["share_travel_bias"] = value(j.share_travel_bias);
-  d["share_link_offsets"] = value(j.share_link_offsets);
-  d["share_tag_offsets"] = value(j.share_tag_offsets);
-  d["evidence"] = value(j.evidence);
-  d["evidence_needed"] = value(j.evidence_needed);
-  d["stability_m"] = value(j.stability_m);
+  using J = estimator::Judgement;
+  constexpr std::pair<const char*, double J::*> kNumbers[] = {
+      {"value", &J::value},
+      {"limit", &J::limit},
+      {"region_m", &J::region_m},
+      {"share_noise", &J::share_noise},
+      {"share_correlation", &J::share_correlation},
+      {"share_model_error", &J::share_model_error},
+      {"share_travel_bias", &J::share_travel_bias},
+      {"share_link_offsets", &J::share_link_offsets},
+      {"share_tag_offsets", &J::share_tag_offsets},
+      {"evidence", &J::evidence},
+      {"evidence_needed", &J::evidence_needed},
+      {"stability_m", &J::stability_m}};
+  for (const auto& [key, member] : kNumbers) d[key] = value(j.*member);
   return d;
 }
 

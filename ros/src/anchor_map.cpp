@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cctype>
 #include <cmath>
+#include <filesystem>
 #include <sstream>
 
 #include <Eigen/Eigenvalues>
@@ -11,6 +12,7 @@
 #include <mutex>
 
 #include "anchorbench/config/load_config.hpp"
+#include "anchorbench/io/atomic_file.hpp"
 #include "anchorbench/estimator/certified_trigger.hpp"
 #include "anchorbench/estimator/live_front_end.hpp"
 #include "anchorbench/io/format.hpp"
@@ -204,6 +206,17 @@ std::string AnchorsYaml(const std::vector<AnchorState>& anchors, const std::stri
         << ", n_used: " << a.n_used << "}\n";
   }
   return out.str();
+}
+
+void SaveAnchors(const std::string& folder, const std::vector<AnchorState>& anchors, const std::string& frame_id) {
+  std::filesystem::create_directories(folder);
+  const std::pair<const char*, std::string> files[] = {{"anchors.csv", AnchorsCsv(anchors)},
+                                                       {"anchors.yaml", AnchorsYaml(anchors, frame_id)}};
+  for (const auto& [name, text] : files) {
+    io::AtomicFile file(std::filesystem::path(folder) / name, /*overwrite=*/true);
+    file.stream() << text;
+    file.Commit();
+  }
 }
 
 Ellipsoid EllipsoidOf(const Eigen::Matrix3d& covariance, double confidence) {

@@ -70,6 +70,9 @@ class AnchorMap {
 // position covariance's diagonal) and the same as YAML, of the initialized anchors.
 std::string AnchorsCsv(const std::vector<AnchorState>& anchors);
 std::string AnchorsYaml(const std::vector<AnchorState>& anchors, const std::string& frame_id);
+// Both into `folder` (made if missing), each file whole or not at all (io::AtomicFile, replacing an
+// earlier save); throws std::runtime_error naming the file.
+void SaveAnchors(const std::string& folder, const std::vector<AnchorState>& anchors, const std::string& frame_id);
 
 // The 99% ellipsoid of a 3x3 covariance: its axes' full lengths (m) and orientation.
 struct Ellipsoid {

@@ -3,8 +3,6 @@
 // waits for. Solves run on a worker thread with a time budget; callbacks only add samples.
 #include <atomic>
 #include <chrono>
-#include <filesystem>
-#include <fstream>
 #include <map>
 #include <memory>
 #include <string>
@@ -210,8 +208,7 @@ class Node {
   bool OnSave(std_srvs::Trigger::Request&, std_srvs::Trigger::Response& response) {
     const std::vector<AnchorState> states = map_.States();
     try {
-      WriteWhole(settings_.save_dir / "anchors.csv", AnchorsCsv(states));
-      WriteWhole(settings_.save_dir / "anchors.yaml", AnchorsYaml(states, settings_.frame_id));
+      SaveAnchors(settings_.save_dir.string(), states, settings_.frame_id);
       response.success = true;
       response.message = "wrote " + (settings_.save_dir / "anchors.csv").string() + " and anchors.yaml";
     } catch (const std::exception& e) {
@@ -219,19 +216,6 @@ class Node {
       response.message = e.what();
     }
     return true;
-  }
-
-  // A file whole or not at all: written beside, then renamed over.
-  static void WriteWhole(const std::filesystem::path& path, const std::string& text) {
-    std::filesystem::create_directories(path.parent_path());
-    const std::filesystem::path partial = path.string() + ".partial";
-    {
-      std::ofstream out(partial, std::ios::binary | std::ios::trunc);
-      out << text;
-      out.flush();
-      if (!out) throw std::runtime_error(partial.string() + ": cannot write");
-    }
-    std::filesystem::rename(partial, path);
   }
 
   NodeSettings settings_;

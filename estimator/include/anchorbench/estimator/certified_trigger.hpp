@@ -99,12 +99,14 @@ class CertifiedTrigger : public InitTrigger {
   // alternative's evidence and the threshold go to the judgement.
   Verdict RuleOutAlternatives(std::span<const Eigen::Vector3d> p_world_tag, std::span<const double> range_m,
                               const SolveResult& estimate, const Eigen::Matrix3d& axes);
-  // 3.: the largest radius of the region seen from the ends of its axes (+inf where singular).
+  // 3.: the largest radius of the region seen from the ends of its axes (+inf where singular), with
+  // the estimate's correlation factor and travel bias (Judge computes each once).
   double RegionFromEnds(const TriggerInput& in, const SolveResult& estimate,
-                        const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d>& axes) const;
+                        const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d>& axes, double correlation_factor,
+                        double travel_bias_m) const;
   // The judgement's account of the region: each term's share of the largest variance.
   void ShareRegion(const TriggerInput& in, const SolveResult& noise_only, double correlation_factor,
-                   const Eigen::Vector3d& axis, double largest_variance);
+                   double travel_bias_m, const Eigen::Vector3d& axis, double largest_variance);
   // The tags whose offsets are among the unknowns ({0}: one bias for all).
   std::vector<int> EstimatedTags(std::span<const int> tag_id, std::size_t samples) const;
   // The largest variance of the covariance seen from `point`, with `tags` as EstimatedTags gave
