@@ -3,7 +3,8 @@
 # 2 threads, and writes results/benchmarks/
 # (or --out DIR): solvers.csv/.md (every registered solver and a plain Eigen dense LS on the same
 # samples, as ratios), micro.csv (the per-sample costs), table1_threads.csv (speed-up),
-# replay.csv (replay throughput and peak memory on logs of 1e6 and 1e7 ranges), replay_triggers.csv
+# replay.csv (replay throughput and peak memory on logs of 1e6 and 1e7 ranges), live_latency.csv
+# (the live front end as the ROS node steps it: range in to event out, AddRange), replay_triggers.csv
 # (every trigger's replay of a long multi-tag log, as a ratio to the paper's), cluster.csv (Table I
 # as 2, 4, 8 shards + merge and as MPI jobs, against the plain run) and machine.md
 # (where it ran). Timings, not bytes: they differ from run to run, the ratios much less.
@@ -17,11 +18,12 @@ repetitions=3
 realizations=
 replay_sizes="1e6 1e7"
 python_ranges=1e6
+live_duration_s=60
 build=
 while [ $# -gt 0 ]; do
   case $1 in
     --out) out=$2; shift 2 ;;
-    --quick) min_time=0.001; repetitions=1; realizations="--realizations 2"; replay_sizes="1e4 1e5"; python_ranges=1e4; shift ;;
+    --quick) min_time=0.001; repetitions=1; live_duration_s=5; realizations="--realizations 2"; replay_sizes="1e4 1e5"; python_ranges=1e4; shift ;;
     --build) build=$2; shift 2 ;;
     *) echo "benchmarks.sh: unknown option $1 (--out DIR, --quick, --build DIR)" >&2; exit 2 ;;
   esac
@@ -29,7 +31,7 @@ done
 benches="bench_compare bench_solver bench_pdop bench_filters bench_triggers bench_front_end bench_ingest"
 if [ -z "$build" ]; then
   build=build
-  bash scripts/build.sh anchorbench anchorbench-mpi _anchorbench $benches  # anchorbench-mpi: cluster.csv; _anchorbench: python.csv
+  bash scripts/build.sh anchorbench anchorbench-mpi _anchorbench $benches bench_live  # anchorbench-mpi: cluster.csv; _anchorbench: python.csv
 fi
 mkdir -p "$(dirname "$out")"
 staging=$(mktemp -d "$(dirname "$out")/.$(basename "$out").partial-XXXXXX")
@@ -40,6 +42,8 @@ for bench in $benches; do
   "$program" --benchmark_min_time="$min_time" --benchmark_repetitions="$repetitions" \
     --benchmark_report_aggregates_only=true --benchmark_format=json >"$staging/$bench.json"
 done
+# The live front end's latency (a minute at the log's rate, then 10x, then unpaced).
+"$(find "$build" -name bench_live -type f -perm -u+x | head -n 1)" --duration-s "$live_duration_s" --out "$staging/live_latency.csv"
 for threads in 1 2; do
   # shellcheck disable=SC2086  # $realizations is empty or two words
   "$build/app/anchorbench" run configs/table1.yaml --threads "$threads" --quiet $realizations \

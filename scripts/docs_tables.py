@@ -516,6 +516,23 @@ def python_overhead():
             f"({float(numpy['ratio']):.1f}x; Table I's fixed window, one thread).")
 
 
+def live_latency():
+    """The live front end as the ROS node steps it (results/benchmarks/live_latency.csv)."""
+    rows = read("benchmarks/live_latency.csv")
+    first = rows[0]
+    paces = {"1x": "the log's rate", "10x": "10x", "unpaced": "as fast as added"}
+    return (f"{first['anchors']} anchors x {first['tags']} tags x {float(first['rate_hz']):g} Hz, every default trigger, "
+            f"{int(first['ranges']):,} ranges:\n\n" +
+            table(["pace", "ranges a second", "range in to event out: p50 / p99 / max", "AddRange: p50 / p99 / max",
+                   "AddRange, the first range", "events", "most solves pending"],
+                  [[paces.get(r["pace"], r["pace"]), f"{float(r['ranges_per_s']):,.0f}",
+                    f"{float(r['latency_p50_ms']):.0f} / {float(r['latency_p99_ms']):.0f} / "
+                    f"{float(r['latency_max_ms']):.0f} ms",
+                    f"{float(r['add_p50_us']):.1f} / {float(r['add_p99_us']):.1f} / {float(r['add_max_us']):.0f} us",
+                    f"{float(r['add_first_us']) / 1000:.1f} ms", r["events"], r["max_pending_solves"]]
+                   for r in rows]))
+
+
 def navigation_table(folder, only_rows=None):
     """A navigation study's summary (results/<folder>/navigation_summary.csv), its rows or some."""
     rows = [r for r in read(f"{folder}/navigation_summary.csv") if only_rows is None or r["row"] in only_rows]
@@ -980,7 +997,7 @@ def calibration_reachability():
     return calibration_section("Reachability")
 
 
-GENERATORS = {f.__name__: f for f in (stress_triggers, stress_solvers, stress_costs, table1_against_paper,
+GENERATORS = {f.__name__: f for f in (live_latency, stress_triggers, stress_solvers, stress_costs, table1_against_paper,
                                       replay_throughput, performance_bullets, credibility_table,
                                       credibility_table1, bias_aware_table, bias_aware_sweep,
                                       height_check_table, flat_path_table, bias_aware_everywhere,

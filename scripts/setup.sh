@@ -19,8 +19,8 @@ packages=(
   python3-tqdm python3-hypothesis  # progress bars; property tests of the module and the bag tool
   python3-rosbag python3-genpy python3-geometry-msgs python3-sensor-msgs python3-nav-msgs python3-std-msgs python3-tf2-msgs  # anchorbench-bag
   libroscpp-dev libgeometry-msgs-dev libsensor-msgs-dev libnav-msgs-dev libvisualization-msgs-dev  # anchorbench_ros
-  libdiagnostic-msgs-dev libstd-srvs-dev libstd-msgs-dev  # (docs/ros.md), and its test against a real master:
-  ros-core python3-rosmaster python3-rosparam python3-rospy python3-rosgraph
+  libdiagnostic-msgs-dev libstd-srvs-dev libstd-msgs-dev libtf2-ros-dev  # (docs/ros.md), and its tests against a real master:
+  ros-core python3-rosmaster python3-rosparam python3-rospy python3-rosgraph python3-roslaunch
   python3-diagnostic-msgs python3-std-srvs python3-visualization-msgs
 )
 

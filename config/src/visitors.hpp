@@ -160,6 +160,7 @@ void Nls(V& v, estimator::NlsOptions& o) {
   v.Number("alpha_tolerance", o.alpha_tolerance);
   v.Number("initial_damping", o.initial_damping);
   v.Flag("l2_warm_start", o.l2_warm_start);
+  v.Integer("max_passes", o.max_passes);
   v.Check(o);
 }
 

@@ -8,6 +8,7 @@
 
 #include <Eigen/Eigenvalues>
 
+#include <atomic>
 #include <map>
 #include <mutex>
 
@@ -46,10 +47,11 @@ schema::ExperimentConfig WithOnlyTrigger(schema::ExperimentConfig config, const 
 
 std::string WaitingFor(const std::optional<estimator::Judgement>& judgement) {
   if (!judgement) return "initialized";
-  std::string text(judgement->blocked_by);
-  if (!std::isnan(judgement->value)) text += " " + io::FormatNumber(judgement->value);
-  if (!std::isnan(judgement->limit)) text += " (limit " + io::FormatNumber(judgement->limit) + ")";
-  return text;
+  std::ostringstream text;  // (string + string here trips GCC 12's -Wrestrict false positive)
+  text << judgement->blocked_by;
+  if (!std::isnan(judgement->value)) text << ' ' << io::FormatNumber(judgement->value);
+  if (!std::isnan(judgement->limit)) text << " (limit " << io::FormatNumber(judgement->limit) << ')';
+  return text.str();
 }
 
 
@@ -116,6 +118,7 @@ struct AnchorMap::Impl {
   estimator::LiveFrontEnd front_end;
   mutable std::mutex mutex;          // guards initialized
   std::map<int, estimator::InitEvent> initialized;
+  std::atomic<long> poses{0}, ranges{0}, malformed_ranges{0};
 };
 
 AnchorMap::AnchorMap(const std::string& config_path, const std::vector<std::string>& overrides,
@@ -124,10 +127,27 @@ AnchorMap::AnchorMap(const std::string& config_path, const std::vector<std::stri
 AnchorMap::~AnchorMap() = default;
 
 void AnchorMap::AddPose(double t_s, int tag_id, const Eigen::Vector3d& p_world_tag) {
+  ++impl_->poses;
   impl_->front_end.AddPose(t_s, tag_id, p_world_tag);
 }
 void AnchorMap::AddRange(double t_s, int tag_id, int anchor_id, double range_m) {
+  ++impl_->ranges;
   impl_->front_end.AddRange(t_s, tag_id, anchor_id, range_m);
+}
+void AnchorMap::CountMalformedRange() { ++impl_->malformed_ranges; }
+
+InputCounts AnchorMap::Counts() const {
+  const estimator::FrontEndCounters front = impl_->front_end.counters();
+  InputCounts counts;
+  counts.poses = impl_->poses;
+  counts.ranges = impl_->ranges;
+  counts.malformed_ranges = impl_->malformed_ranges;
+  counts.samples = front.samples;
+  counts.ranges_outside_poses = front.ranges_outside_poses;
+  counts.ranges_without_pose = front.ranges_without_pose;
+  counts.poses_ignored = front.poses_ignored;
+  counts.ranges_beyond_max_anchors = front.ranges_beyond_max_anchors;
+  return counts;
 }
 const std::string& AnchorMap::trigger() const { return impl_->config.estimator.triggers.front(); }
 std::size_t AnchorMap::pending_solves() const { return impl_->front_end.pending_solves(); }

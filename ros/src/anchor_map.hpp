@@ -40,6 +40,14 @@ struct AnchorState {
   long samples = 0;         // buffered by the published trigger's chain
 };
 
+// What came in and what the front end did not use, for the node's diagnostics.
+struct InputCounts {
+  long poses = 0, ranges = 0;        // handed to the front end
+  long malformed_ranges = 0;         // refused by the node (no anchor id, not a positive finite range)
+  long samples = 0;                  // ranges placed on a pose and given to the anchors' chains
+  long ranges_outside_poses = 0, ranges_without_pose = 0, poses_ignored = 0, ranges_beyond_max_anchors = 0;
+};
+
 class AnchorMap {
  public:
   using Clock = std::chrono::steady_clock;
@@ -51,6 +59,8 @@ class AnchorMap {
 
   void AddPose(double t_s, int tag_id, const Eigen::Vector3d& p_world_tag);
   void AddRange(double t_s, int tag_id, int anchor_id, double range_m);
+  void CountMalformedRange();
+  InputCounts Counts() const;
   // Runs due solves (at most max_count, none after deadline) and returns the anchors the published
   // trigger initialized since the last call.
   std::vector<AnchorState> Step(std::size_t max_count, Clock::time_point deadline);

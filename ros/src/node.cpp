@@ -3,6 +3,7 @@
 // waits for. Solves run on a worker thread with a time budget; callbacks only add samples.
 #include <atomic>
 #include <chrono>
+#include <cmath>
 #include <map>
 #include <memory>
 #include <string>
@@ -19,6 +20,8 @@
 #include <std_msgs/Int32.h>
 #include <std_srvs/Empty.h>
 #include <std_srvs/Trigger.h>
+#include <tf2_msgs/TFMessage.h>
+#include <tf2_ros/buffer.h>
 #include <visualization_msgs/MarkerArray.h>
 
 #include "anchor_map.hpp"
@@ -38,7 +41,10 @@ class Node {
  public:
   Node(ros::NodeHandle& nh, ros::NodeHandle& private_nh, NodeSettings settings)
       : settings_(std::move(settings)), map_(settings_.config, settings_.overrides, settings_.trigger) {
-    for (const TagSettings& tag : settings_.tags) Subscribe(nh, tag);
+    for (const TagSettings& tag : settings_.tags) {
+      SubscribePoses(nh, tag);
+      SubscribeRanges(nh, tag);
+    }
     markers_ = private_nh.advertise<visualization_msgs::MarkerArray>("markers", 1, true);
     diagnostics_ = nh.advertise<diagnostic_msgs::DiagnosticArray>("/diagnostics", 10);
     reset_ = private_nh.advertiseService("reset", &Node::OnReset, this);
@@ -49,6 +55,14 @@ class Node {
         nh.createWallTimer(ros::WallDuration(1.0 / settings_.diagnostics_rate_hz), [this](const ros::WallTimerEvent&) {
           PublishDiagnostics();
         });
+    if (!tf_tags_.empty()) {
+      // The node's own listener: each /tf message is in the buffer before its bodies are looked up.
+      tf_buffer_ = std::make_unique<tf2_ros::Buffer>();
+      tf_subscriber_ = nh.subscribe<tf2_msgs::TFMessage>(
+          "/tf", 1000, [this](const tf2_msgs::TFMessage::ConstPtr& m) { OnTf(*m, /*is_static=*/false); });
+      tf_static_subscriber_ = nh.subscribe<tf2_msgs::TFMessage>(
+          "/tf_static", 100, [this](const tf2_msgs::TFMessage::ConstPtr& m) { OnTf(*m, /*is_static=*/true); });
+    }
     worker_ = std::thread([this] { SolveLoop(); });
     ROS_INFO("anchorbench_ros: publishing the '%s' trigger's anchors for %zu tag(s)", map_.trigger().c_str(),
              settings_.tags.size());
@@ -59,13 +73,15 @@ class Node {
   }
 
  private:
-  void Subscribe(ros::NodeHandle& nh, const TagSettings& tag) {
+  void SubscribePoses(ros::NodeHandle& nh, const TagSettings& tag) {
     const int id = tag.id;
     const Eigen::Vector3d offset = tag.offset_m;
     auto add = [this, id, offset](const ros::Time& stamp, const Eigen::Vector3d& p, const Eigen::Quaterniond& q) {
       map_.AddPose(stamp.toSec(), id, p + q * offset);  // the antenna, at its body-frame offset
     };
-    if (tag.pose_type == "PoseStamped") {
+    if (tag.pose_type == "tf") {
+      tf_tags_.push_back({tag.id, Bare(tag.body_frame), tag.offset_m});
+    } else if (tag.pose_type == "PoseStamped") {
       subscribers_.push_back(nh.subscribe<geometry_msgs::PoseStamped>(
           tag.pose_topic, 1000, [add](const geometry_msgs::PoseStamped::ConstPtr& m) {
             add(m->header.stamp, Position(m->pose.position), Orientation(m->pose.orientation));
@@ -86,17 +102,63 @@ class Node {
             add(m->header.stamp, Position(m->pose.pose.position), Orientation(m->pose.pose.orientation));
           }));
     }
-    subscribers_.push_back(
-        nh.subscribe<sensor_msgs::Range>(tag.range_topic, 1000, [this, id](const sensor_msgs::Range::ConstPtr& m) {
-          const std::optional<int> anchor_id = AnchorIdFromFrame(m->header.frame_id);
-          if (!anchor_id) {
-            ROS_WARN_THROTTLE(5.0, "anchorbench_ros: a range's frame_id '%s' names no anchor id (trailing digits)",
-                              m->header.frame_id.c_str());
-            return;
-          }
-          map_.AddRange(m->header.stamp.toSec(), id, *anchor_id, m->range);
-        }));
   }
+
+  // One topic of all anchors (the id in frame_id), and topics of one anchor each.
+  void SubscribeRanges(ros::NodeHandle& nh, const TagSettings& tag) {
+    const int id = tag.id;
+    if (!tag.range_topic.empty()) {
+      subscribers_.push_back(nh.subscribe<sensor_msgs::Range>(
+          tag.range_topic, 1000, [this, id](const sensor_msgs::Range::ConstPtr& m) { OnRange(id, std::nullopt, *m); }));
+    }
+    for (const AnchorTopic& topic : tag.anchor_topics) {
+      const int anchor_id = topic.anchor_id;
+      subscribers_.push_back(nh.subscribe<sensor_msgs::Range>(
+          topic.topic, 1000, [this, id, anchor_id](const sensor_msgs::Range::ConstPtr& m) { OnRange(id, anchor_id, *m); }));
+    }
+  }
+
+  // A range the front end can use, or one counted as malformed (the node keeps running).
+  void OnRange(int tag_id, std::optional<int> anchor_id, const sensor_msgs::Range& m) {
+    if (!anchor_id) anchor_id = AnchorIdFromFrame(m.header.frame_id);
+    const char* why = nullptr;
+    if (!anchor_id) {
+      why = "its frame_id names no anchor id (trailing digits)";
+    } else if (!std::isfinite(m.range) || m.range <= 0.0f) {
+      why = "its range is not a positive finite number";
+    } else if (m.max_range > m.min_range && (m.range < m.min_range || m.range > m.max_range)) {
+      why = "its range lies outside the message's [min_range, max_range]";
+    }
+    if (why) {
+      map_.CountMalformedRange();
+      ROS_WARN_THROTTLE(5.0, "anchorbench_ros: a range of tag %d skipped (frame_id '%s'): %s; counted in /diagnostics",
+                        tag_id, m.header.frame_id.c_str(), why);
+      return;
+    }
+    map_.AddRange(m.header.stamp.toSec(), tag_id, *anchor_id, m.range);
+  }
+
+  // tf poses: each transform that moves a tag's body gives a pose at its stamp, the body looked up
+  // in frame_id through the buffer (static transforms and other dynamic ones on the way).
+  void OnTf(const tf2_msgs::TFMessage& message, bool is_static) {
+    for (const geometry_msgs::TransformStamped& t : message.transforms) tf_buffer_->setTransform(t, "tf", is_static);
+    for (const geometry_msgs::TransformStamped& t : message.transforms) {
+      for (const TfTag& tag : tf_tags_) {
+        if (Bare(t.child_frame_id) != tag.body_frame) continue;
+        geometry_msgs::TransformStamped body;
+        try {
+          body = tf_buffer_->lookupTransform(settings_.frame_id, tag.body_frame, t.header.stamp);
+        } catch (const tf2::TransformException& e) {
+          ++tf_failures_;
+          ROS_WARN_THROTTLE(5.0, "anchorbench_ros: tag %d's pose skipped: %s", tag.id, e.what());
+          continue;
+        }
+        const Eigen::Quaterniond q = Orientation(body.transform.rotation);
+        map_.AddPose(t.header.stamp.toSec(), tag.id, Position(body.transform.translation) + q * tag.offset_m);
+      }
+    }
+  }
+  static std::string Bare(const std::string& frame) { return !frame.empty() && frame[0] == '/' ? frame.substr(1) : frame; }
 
   // Solves off the callbacks: a few at a time within a budget, then the new anchors out.
   void SolveLoop() {
@@ -192,7 +254,30 @@ class Node {
       }
       array.status.push_back(status);
     }
+    array.status.push_back(InputStatus());
     diagnostics_.publish(array);
+  }
+
+  diagnostic_msgs::DiagnosticStatus InputStatus() {
+    const InputCounts c = map_.Counts();
+    diagnostic_msgs::DiagnosticStatus status;
+    status.name = "anchorbench: input";
+    status.hardware_id = "anchorbench";
+    const long dropped = c.malformed_ranges + c.ranges_outside_poses + c.ranges_without_pose + c.ranges_beyond_max_anchors;
+    status.level = dropped > 0 ? diagnostic_msgs::DiagnosticStatus::WARN : diagnostic_msgs::DiagnosticStatus::OK;
+    status.message = dropped > 0 ? std::to_string(dropped) + " range(s) not used" : "every range used";
+    const std::pair<const char*, long> values[] = {
+        {"poses", c.poses}, {"ranges", c.ranges}, {"samples", c.samples}, {"malformed_ranges", c.malformed_ranges},
+        {"ranges_outside_poses", c.ranges_outside_poses}, {"ranges_without_pose", c.ranges_without_pose},
+        {"poses_ignored", c.poses_ignored}, {"ranges_beyond_max_anchors", c.ranges_beyond_max_anchors},
+        {"tf_lookups_failed", tf_failures_.load()}};
+    for (const auto& [key, count] : values) {
+      diagnostic_msgs::KeyValue kv;
+      kv.key = key;
+      kv.value = std::to_string(count);
+      status.values.push_back(kv);
+    }
+    return status;
   }
 
   bool OnReset(std_srvs::Empty::Request&, std_srvs::Empty::Response&) {
@@ -218,8 +303,18 @@ class Node {
     return true;
   }
 
+  struct TfTag {
+    int id;
+    std::string body_frame;
+    Eigen::Vector3d offset_m;
+  };
+
   NodeSettings settings_;
   AnchorMap map_;
+  std::vector<TfTag> tf_tags_;
+  std::unique_ptr<tf2_ros::Buffer> tf_buffer_;
+  ros::Subscriber tf_subscriber_, tf_static_subscriber_;
+  std::atomic<long> tf_failures_{0};
   ros::NodeHandle private_nh_;
   std::vector<ros::Subscriber> subscribers_;
   ros::Subscriber reset_anchor_;
@@ -239,7 +334,11 @@ int main(int argc, char** argv) {
   ros::NodeHandle nh, private_nh("~");
   using namespace anchorbench;
   try {
-    ros_node::Node node(nh, private_nh, ros_node::ReadSettings(private_nh));
+    ros_node::NodeSettings settings = ros_node::ReadSettings(private_nh);
+    if (settings.solve_max_passes > 0) {  // live: every solve's work bounded (after the config's overrides)
+      settings.overrides.push_back("estimator.nls.max_passes=" + std::to_string(settings.solve_max_passes));
+    }
+    ros_node::Node node(nh, private_nh, std::move(settings));
     ros::spin();
   } catch (const ros_node::BadSetting& e) {
     ROS_FATAL("anchorbench_ros: %s", e.what());

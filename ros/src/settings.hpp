@@ -11,12 +11,20 @@
 
 namespace anchorbench::ros_node {
 
+// A range topic that carries one anchor only (its frame_id is then not read).
+struct AnchorTopic {
+  int anchor_id = 0;
+  std::string topic;
+};
+
 struct TagSettings {
   int id = 0;
-  std::string pose_topic;              // the body's pose
-  std::string pose_type = "PoseStamped";  // PoseStamped, PoseWithCovarianceStamped, TransformStamped, Odometry
+  std::string pose_type = "PoseStamped";  // PoseStamped, PoseWithCovarianceStamped, TransformStamped, Odometry, tf
+  std::string pose_topic;              // the body's pose (the four message types)
+  std::string body_frame;              // tf: the body's frame, looked up in the node's frame_id
   Eigen::Vector3d offset_m = Eigen::Vector3d::Zero();  // the antenna in the body frame
   std::string range_topic;             // sensor_msgs/Range, the anchor id in header.frame_id
+  std::vector<AnchorTopic> anchor_topics;  // and/or one sensor_msgs/Range topic per anchor
 };
 
 struct NodeSettings {
@@ -28,6 +36,7 @@ struct NodeSettings {
   double solve_rate_hz = 20.0;         // the solve worker's steps
   double solve_budget_s = 0.02;        // no solve starts later than this into a step
   int max_solves_per_step = 8;
+  int solve_max_passes = 200;          // each solve's work budget (estimator.nls.max_passes); 0: the config's
   double diagnostics_rate_hz = 1.0;
   std::vector<TagSettings> tags;
 };

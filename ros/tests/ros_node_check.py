@@ -31,7 +31,7 @@ for anchor_id in truth:
     rospy.Subscriber(f"/anchorbench/anchor_{anchor_id}", PoseWithCovarianceStamped,
                      lambda m, a=anchor_id: estimates.__setitem__(a, m))
 rospy.Subscriber("/diagnostics", DiagnosticArray,
-                 lambda m: diagnostics.update({s.name: s for s in m.status if s.name.startswith("anchorbench")}))
+                 lambda m: diagnostics.update({s.name: s for s in m.status if s.name.startswith("anchorbench: anchor")}))
 deadline = time.time() + 20
 while (poses.get_num_connections() == 0 or ranges.get_num_connections() == 0) and time.time() < deadline:
     time.sleep(0.1)

@@ -6,23 +6,7 @@
 set -euo pipefail
 node=$1 bin=$2
 here=$(cd "$(dirname "$0")" && pwd)
-dir=$(mktemp -d)
-pids=()
-cleanup() {
-  for pid in "${pids[@]}"; do kill "$pid" 2>/dev/null || true; done
-  for pid in "${pids[@]}"; do wait "$pid" 2>/dev/null || true; done
-  rm -rf "$dir"
-}
-trap cleanup EXIT
-
-port=$(/usr/bin/python3 -c 'import socket; s = socket.socket(); s.bind(("127.0.0.1", 0)); print(s.getsockname()[1])')
-export ROS_MASTER_URI="http://127.0.0.1:$port" ROS_HOSTNAME=127.0.0.1 ROS_HOME="$dir/ros_home" ROS_LOG_DIR="$dir/ros_log"
-rosmaster --core -p "$port" >"$dir/master.log" 2>&1 &
-pids+=($!)
-for _ in $(seq 50); do
-  /usr/bin/python3 -c 'import rosgraph, sys; sys.exit(0 if rosgraph.is_master_online() else 1)' 2>/dev/null && break
-  sleep 0.2
-done
+source "$here/ros_test_master.sh"
 
 # A bad parameter: one line, exit 2, before anything is subscribed.
 set +e
@@ -32,18 +16,16 @@ code=$?
 set -e
 [ $code -eq 2 ] || { echo "FAIL: bad pose_type exited $code"; cat "$dir/bad.log"; exit 1; }
 grep -q "tags\[0\].pose_type" "$dir/bad.log" || { echo "FAIL: the refusal does not name the parameter"; cat "$dir/bad.log"; exit 1; }
+rosparam set /bad/tags "[{id: 0, pose_type: tf, range_topics: [{anchor: 1, topic: r}]}]"
+set +e
+"$node" __name:=bad >"$dir/bad.log" 2>&1
+code=$?
+set -e
+[ $code -eq 2 ] && grep -q "tags\[0\].body_frame" "$dir/bad.log" ||
+  { echo "FAIL: tf without body_frame: exit $code"; cat "$dir/bad.log"; exit 1; }
 
 # A small hall, 60 s, one tag: the log the node is fed.
-cat >"$dir/hall.yaml" <<'YAML'
-seed: 4
-scenario:
-  environment: hall
-  hall: {length_m: 10, width_m: 8, height_m: 4, num_anchors: 4, anchor_height_min_m: 0.5, anchor_height_max_m: 3.5}
-  trajectory: {kind: random, height_m: 1.5, vertical_excursion_m: 0.8, hall_duration_s: 60, rate_hz: 20,
-               min_period_s: 10, max_period_s: 30}
-  ranging: {sigma_range_m: 0.05, outlier_probability: 0.01}
-YAML
-"$bin" simulate "$dir/hall.yaml" --out "$dir/log" >/dev/null
+hall_log 4 60 10 30
 
 # The node's parameters as a robot's file gives them (docs/ros.md, ros/config/robot.yaml).
 cat >"$dir/robot.yaml" <<YAML
