@@ -87,6 +87,7 @@ void AnchorInitializer::Buffer(int tag_id, const Eigen::Vector3d& p_world_tag, d
 
 void AnchorInitializer::Admit(const Accepted& sample) {
   if (n_admitted_ == 0) t_first_s_ = sample.t_s;
+  t_last_s_ = sample.t_s;
   ++n_admitted_;
   Buffer(sample.tag_id, sample.p_world_tag, sample.range_m);
   TriggerInput input;
@@ -188,7 +189,9 @@ std::optional<InitEvent> AnchorInitializer::Finish(double t_s) {
     if (std::optional<InitEvent> event = RunPendingSolve()) return event;
   }
   if (trigger_->online() || initialized_) return std::nullopt;
-  InitEvent event = SolveNow(t_s, pdop_.Value());
+  // At the anchor's own last sample, not the data's end: what other anchors' or tags' rows do (or
+  // a range dropped at the end) never moves this anchor's time.
+  InitEvent event = SolveNow(n_admitted_ > 0 ? t_last_s_ : t_s, pdop_.Value());
   initialized_ = Succeeded(event.solve.status);
   return event;
 }

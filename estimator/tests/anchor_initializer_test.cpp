@@ -56,6 +56,23 @@ TEST(AnchorInitializer, FixedWindowSolvesOnAllDataAtFinish) {
   EXPECT_LT((event->solve.p_world_anchor - p_anchor).norm(), 0.1);
 }
 
+// The fixed window's time is its own last sample's: the data's end (other anchors, other tags, a
+// range dropped late) does not move it.
+TEST(AnchorInitializer, FixedWindowTimeIsItsOwnLastSample) {
+  const Eigen::Vector3d p_anchor(0, 4, 3);
+  const auto samples = PassBy(p_anchor, 0.05, 2);
+  for (const double t_end_s : {samples.back().t_s, samples.back().t_s + 100.0}) {
+    AnchorInitializer initializer = Chain(std::make_unique<FixedWindowTrigger>());
+    double t_last_accepted_s = -1.0;
+    for (const RangeSample& s : samples) {
+      if (initializer.Feed(s).accepted) t_last_accepted_s = s.t_s;
+    }
+    const auto event = initializer.Finish(t_end_s);
+    ASSERT_TRUE(event.has_value());
+    EXPECT_EQ(event->t_s, t_last_accepted_s) << "data ending at " << t_end_s;
+  }
+}
+
 TEST(AnchorInitializer, NeverFiresOnAStraightLine) {
   AnchorInitializer initializer = MakePaperInitializer(1, kDefaults);
   for (int k = 0; k < 2000; ++k) {

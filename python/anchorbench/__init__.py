@@ -10,6 +10,7 @@ from __future__ import annotations
 import io
 import numbers
 import os
+import re
 import sys
 from typing import Any, Callable, Iterable, Mapping, Optional, Sequence, Union
 
@@ -30,8 +31,8 @@ from . import _anchorbench
 
 __all__ = [
     "Config", "Event", "FrontEnd", "InputError", "Result", "SolveResult", "closest_point_pdop", "geometry_pdop",
-    "load_config", "navigate", "parts", "register_solver", "register_trigger", "replay", "run", "simulate", "solve",
-    "sweep",
+    "load_config", "navigate", "parts", "register_solver", "register_trigger", "replay", "ReplayWarning", "FrontEndWarning", "run",
+    "simulate", "solve", "sweep",
 ]
 
 ConfigLike = Union[None, str, os.PathLike, Mapping, Config]
@@ -220,13 +221,54 @@ class Result:
         return self._files.text(name)
 
     def frame(self, name: str):
-        """A CSV file as a pandas DataFrame (read once, then kept)."""
+        """A CSV file as a pandas DataFrame (read once, then kept; every number exactly as written)."""
         if name not in self._frames:
             import pandas
 
             self._frames[name] = pandas.read_csv(io.StringIO(self.text(name)), keep_default_na=False,
-                                                 na_values=[""])
+                                                 na_values=[""], float_precision="round_trip")
         return self._frames[name]
+
+    @property
+    def warnings(self) -> list:
+        """What the command line prints on stderr beside the files (replay: rows dropped or reordered)."""
+        return [line for line in [self._files.notes.rstrip("\n")] if line]
+
+    @property
+    def replay_summary(self) -> dict:
+        """A replay's replay_summary.json as a dict: the rows read, used and dropped (by reason and id)."""
+        import json
+
+        return json.loads(self.text("replay_summary.json"))
+
+    @property
+    def drops(self):
+        """A replay's dropped rows as a DataFrame: kind (ranges / poses), id (anchor / tag), reason, count, first."""
+        import pandas
+
+        summary = self.replay_summary
+        rows = [(kind, int(id_), reason, tally["count"], tally["first"])
+                for kind, key in (("ranges", "range_drops_by_anchor"), ("poses", "pose_drops_by_tag"))
+                for id_, reasons in summary[key].items() for reason, tally in reasons.items()]
+        return pandas.DataFrame(rows, columns=["kind", "id", "reason", "count", "first"])
+
+    def _replay_summary_frame(self):
+        """One row per trigger of a replay: anchors, initialized, the median t_init, the errors where the
+        truth is known, the most common reason to wait, and the log's samples and dropped rows."""
+        import pandas
+
+        e, log = self.estimates, self.replay_summary
+        rows = []
+        for method, group in e.groupby("method", sort=False):
+            done = group[group["initialized"] == 1]
+            waiting = group.loc[group["initialized"] != 1, "blocked_by"].dropna()
+            rows.append({"method": method, "anchors": len(group), "initialized": len(done),
+                         "t_init_median_s": done["t_init"].median(),
+                         "err_mean_m": done["err_m"].mean() if "err_m" in done else float("nan"),
+                         "err_max_m": done["err_m"].max() if "err_m" in done else float("nan"),
+                         "waiting_most_for": waiting.mode().iloc[0] if len(waiting) else "",
+                         "samples": log["samples"], "dropped_rows": log["dropped"]})
+        return pandas.DataFrame(rows)
 
     def __getattr__(self, attribute: str):
         if attribute.startswith("_"):
@@ -234,6 +276,8 @@ class Result:
         name = attribute + ".csv"
         if name in self._files.names:
             return self.frame(name)
+        if attribute == "summary" and "replay_summary.json" in self._files.names:
+            return self._replay_summary_frame()
         raise AttributeError(f"no {name} in this result (files: {', '.join(self._files.names)})")
 
     def save(self, folder: Union[str, os.PathLike], overwrite: bool = False) -> None:
@@ -301,17 +345,98 @@ def navigate(config: ConfigLike, *, overrides: Iterable[str] = (), seed: Optiona
         return Result(_anchorbench._navigate(config, _threads(threads), callback))
 
 
-def replay(poses: Union[str, os.PathLike], ranges: Union[str, os.PathLike, Sequence[Union[str, os.PathLike]]],
-           anchors: Union[None, str, os.PathLike] = None, config: ConfigLike = None, *,
-           repeated_poses: str = "error", out_of_order: str = "sort", navigate: bool = False) -> Result:
-    """``anchorbench replay`` of a recorded log (docs/real_data.md): estimates.csv and the replay summary;
-    with ``navigate``, also the navigation filter on the log with synthetic odometry (``replay --navigate``)."""
-    if isinstance(ranges, (str, bytes, os.PathLike)):
+LogLike = Union[str, os.PathLike, Mapping, "pandas.DataFrame"]
+
+
+# The command line's words in replay's refusals, as this function's arguments.
+_REPLAY_FLAGS = {"--max-range-m": "max_range_m", "--average-poses-within-m": "average_poses_within_m",
+                 "--repeated-poses": "repeated_poses", "--out-of-order": "out_of_order",
+                 "--sort-window-s": "sort_window_s", "--max-speed-mps": "max_speed_mps", "--strict": "strict=True",
+                 "--anchors": "anchors", "--poses": "poses", "--ranges": "ranges"}
+
+
+class ReplayWarning(UserWarning):
+    """Rows of a replayed log were dropped or reordered (the command line's stderr summary)."""
+
+
+def _in_range(name: str, value, low: float, high: float) -> float:
+    value = _finite(name, value)
+    if not low <= value <= high:
+        raise InputError(f"{name}: must be from {low:g} to {high:g}, got {value:g}")
+    return value
+
+
+def _log_file(name: str, value, folder: str) -> str:
+    """A path as given, or a DataFrame (or a mapping of columns) written to a CSV in `folder`: every
+    float with all its digits, the columns as named (docs/real_data.md's names and aliases)."""
+    if isinstance(value, (str, bytes, os.PathLike)):
+        return _path(name, value)
+    import pandas
+
+    if isinstance(value, Mapping):
+        value = pandas.DataFrame({str(k): v for k, v in value.items()})
+    if not isinstance(value, pandas.DataFrame):
+        raise InputError(f"{name}: expected a path, a DataFrame or a mapping of columns, got {type(value).__name__}")
+    path = os.path.join(folder, f"{name}.csv")
+    value.to_csv(path, index=False, float_format="%.17g")
+    return path
+
+
+def replay(poses: LogLike, ranges: Union[LogLike, Sequence[LogLike]], anchors: Optional[LogLike] = None,
+           config: ConfigLike = None, *, repeated_poses: str = "error", out_of_order: str = "sort",
+           navigate: bool = False, max_range_m: float = 1000.0, average_poses_within_m: float = 0.05,
+           sort_window_s: float = 0.1, max_speed_mps: float = 50.0, strict: bool = False, trace: bool = False,
+           certificate_trace: bool = False, warn: bool = True) -> Result:
+    """``anchorbench replay`` of a recorded log (docs/real_data.md) with the command line's options.
+
+    ``poses``, ``ranges`` (one or several) and ``anchors`` are paths, or DataFrames / mappings of columns
+    with the files' columns (``ranges`` as DataFrames in memory: e.g. ``ab.simulate(...).ranges``). The
+    result holds estimates.csv, ``summary`` (one row per trigger), ``replay_summary`` (a dict: the rows
+    read, used and dropped, by reason and id), ``drops`` (a DataFrame), ``trace`` (``trace=True``: one row
+    per range) and ``certificate_trace`` (``certificate_trace=True``: every evaluation of a solving
+    trigger, why it waits). Dropped or reordered rows are also a ``ReplayWarning`` with the command
+    line's summary (``warn=False``: kept in ``result.warnings`` only). With ``navigate``, also the
+    navigation filter on the log with synthetic odometry (``replay --navigate``).
+    """
+    import tempfile
+
+    if isinstance(ranges, (str, bytes, os.PathLike, Mapping)) or type(ranges).__name__ == "DataFrame":
         ranges = [ranges]
+    options = dict(max_range_m=_in_range("max_range_m", max_range_m, 1e-3, 1e7),
+                   average_poses_within_m=_in_range("average_poses_within_m", average_poses_within_m, 0.0, 10.0),
+                   sort_window_s=_in_range("sort_window_s", sort_window_s, 0.0, 3600.0),
+                   max_speed_mps=_in_range("max_speed_mps", max_speed_mps, 1e-3, 1e6))
+    for name, value, allowed in (("repeated_poses", repeated_poses, ("error", "first", "average")),
+                                 ("out_of_order", out_of_order, ("error", "drop", "sort"))):
+        if value not in allowed:
+            raise InputError(f"{name}: one of {', '.join(allowed)}, got {value!r}")
     loaded = None if config is None else load_config(config)
-    return Result(_anchorbench._replay(_path("poses", poses), [_path("ranges", r) for r in ranges],
-                                       "" if anchors is None else _path("anchors", anchors), loaded, repeated_poses,
-                                       out_of_order, bool(navigate)))
+    with tempfile.TemporaryDirectory(prefix="anchorbench-replay-") as folder:
+        files = [_log_file("poses", poses, folder)]
+        files += [_log_file(f"ranges_{k}" if len(ranges) > 1 else "ranges", r, folder) for k, r in enumerate(ranges)]
+        anchors_file = "" if anchors is None else _log_file("anchors", anchors, folder)
+        # A DataFrame is named as its argument, its rows as the CSV's lines ("poses (DataFrame):2": row 0).
+        written = {path: f"{os.path.basename(path)[:-4]} (DataFrame)" for path in files + [anchors_file]
+                   if path.startswith(os.path.join(folder, ""))}
+        try:
+            files_ = _anchorbench._replay(files[0], files[1:], anchors_file, loaded, repeated_poses, out_of_order,
+                                          bool(navigate), strict=bool(strict), trace=bool(trace),
+                                          certificate_trace=bool(certificate_trace), **options)
+        except InputError as error:
+            text = str(error)
+            for path, name in written.items():
+                text = text.replace(path, name)
+            for flag, argument in _REPLAY_FLAGS.items():
+                text = text.replace(flag, argument)
+            raise InputError(text) from None
+        for path, name in written.items():
+            files_._rename_input(path, name)
+        result = Result(files_)
+    if result.warnings and warn:
+        import warnings
+
+        warnings.warn(ReplayWarning("\n".join(result.warnings)), stacklevel=2)
+    return result
 
 
 def simulate(config: ConfigLike, realization: int = 0, *, seed: Optional[int] = None,
@@ -321,6 +446,10 @@ def simulate(config: ConfigLike, realization: int = 0, *, seed: Optional[int] = 
                                          _whole("realization", realization, 0, 100_000_000 - 1)))
 
 
+class FrontEndWarning(UserWarning):
+    """Ranges a FrontEnd could not place on their tag's poses (dropped; FrontEnd.counters has the counts)."""
+
+
 class FrontEnd(_FrontEnd):
     """The online front end (estimator::FrontEnd) with a config's chains: one initializer per trigger and anchor.
 
@@ -328,8 +457,62 @@ class FrontEnd(_FrontEnd):
     (``add_poses``, ``add_ranges``, ``add_samples``), then ``take_events()``.
     """
 
+    # Each tag's poses kept (estimator::PoseBufferOptions::history_s): a range older than its tag's
+    # newest pose by more is dropped and counted. add_log feeds whole logs in windows well inside it.
+    POSE_HISTORY_S = 30.0
+
     def __init__(self, config: ConfigLike = None, defer_solves: bool = False):
         super().__init__(None if config is None else load_config(config), bool(defer_solves))
+        self._unplaced_warned = False
+
+    def _warn_unplaced(self) -> None:
+        """One FrontEndWarning, the first time ranges could not be placed on their tag's poses."""
+        if self._unplaced_warned:
+            return
+        counters = self.counters
+        lost = counters["ranges_outside_poses"] + counters["ranges_without_pose"]
+        if lost:
+            import warnings
+
+            self._unplaced_warned = True
+            warnings.warn(FrontEndWarning(
+                f"{lost} range(s) could not be placed on their tag's poses and were dropped "
+                f"({counters['ranges_outside_poses']} before the last {self.POSE_HISTORY_S:g} s of poses kept, "
+                f"{counters['ranges_without_pose']} with no pose in time); feed poses and ranges in time order, or "
+                f"whole logs with add_log(). FrontEnd.counters keeps the counts."), stacklevel=3)
+
+    def add_log(self, pose_t_s, pose_tag_id, p_world_tag, range_t_s, range_tag_id, anchor_id, range_m,
+                window_s: float = 10.0) -> None:
+        """A whole log (all poses, all ranges, each in time order) fed in time windows: each window's
+        ranges after the poses up to one window past them, so that none falls outside the poses kept."""
+        import numpy as np
+
+        window_s = _in_range("window_s", window_s, 1e-3, self.POSE_HISTORY_S / 3)
+        pt = _floats("pose_t_s", pose_t_s, "(N,)")
+        ptag = _ids("pose_tag_id", pose_tag_id, len(pt))
+        p = _floats("p_world_tag", p_world_tag, "(N, 3)")
+        rt = _floats("range_t_s", range_t_s, "(M,)")
+        rtag, anchors = _ids("range_tag_id", range_tag_id, len(rt)), _ids("anchor_id", anchor_id, len(rt))
+        d = _floats("range_m", range_m, "(M,)")
+        for name, t in (("pose_t_s", pt), ("range_t_s", rt)):
+            if t.ndim != 1 or np.any(np.diff(t) < 0):
+                raise InputError(f"{name}: expected times in increasing order, shape (N,)")
+        if len(pt) == 0 or len(rt) == 0:
+            self.add_poses(pt, ptag, p)
+            self.add_ranges(rt, rtag, anchors, d)
+            return
+        start = min(pt[0], rt[0])
+        pose_at = range_at = 0
+        for end in np.arange(start + window_s, max(pt[-1], rt[-1]) + 2 * window_s, window_s):
+            pose_to = int(np.searchsorted(pt, end + window_s, side="left"))
+            range_to = int(np.searchsorted(rt, end, side="left"))
+            if pose_to > pose_at:
+                self.add_poses(pt[pose_at:pose_to], ptag[pose_at:pose_to], p[pose_at:pose_to])
+                pose_at = pose_to
+            if range_to > range_at:
+                self.add_ranges(rt[range_at:range_to], rtag[range_at:range_to], anchors[range_at:range_to],
+                                d[range_at:range_to])
+                range_at = range_to
 
     def add_pose(self, t_s: float, tag_id: int, p_world_tag) -> None:
         super().add_pose(_finite("t_s", t_s), _whole("tag_id", tag_id, -_MAX_ID - 1, _MAX_ID),
@@ -354,12 +537,31 @@ class FrontEnd(_FrontEnd):
         n = len(t) if t.ndim == 1 else None
         super().add_ranges(t, _ids("tag_id", tag_id, n), _ids("anchor_id", anchor_id, n),
                            _floats("range_m", range_m, "(N,)"))
+        self._warn_unplaced()
 
     def add_samples(self, t_s, tag_id, anchor_id, range_m, p_world_tag) -> None:
         t = _floats("t_s", t_s, "(N,)")
         n = len(t) if t.ndim == 1 else None
         super().add_samples(t, _ids("tag_id", tag_id, n), _ids("anchor_id", anchor_id, n),
                             _floats("range_m", range_m, "(N,)"), _floats("p_world_tag", p_world_tag, "(N, 3)"))
+
+    def take_events_frame(self):
+        """The events since the last take as a DataFrame: anchor_id, trigger (its name), t_s, n_used,
+        pdop_closest_point, x, y, z, bias_m, status (text)."""
+        import pandas
+
+        events = pandas.DataFrame(self.take_events_array())
+        triggers = list(self.triggers)
+        events.insert(1, "trigger", [triggers[c] for c in events.pop("chain")])
+        events["status"] = events["status"].map(lambda b: b.decode() if isinstance(b, bytes) else b)
+        return events
+
+    def why_not_frame(self):
+        """``why_not()`` as a DataFrame: one row per (anchor, trigger) still waiting, the test that holds it
+        back (blocked_by), its value and limit, and the certificate's terms (NaN where none)."""
+        import pandas
+
+        return pandas.DataFrame(self.why_not())
 
     def run_pending_solves(self, max_count: Optional[int] = None, budget_s: float = 0.0) -> int:
         """Runs due solves (with defer_solves): at most max_count, none started after budget_s seconds (0: no limit)."""
@@ -368,3 +570,4 @@ class FrontEnd(_FrontEnd):
 
     def finish(self, t_end_s: float) -> None:
         super().finish(_finite("t_end_s", t_end_s))
+        self._warn_unplaced()

@@ -19,6 +19,9 @@
 #include "anchorbench/io/recorded_data.hpp"
 #include "anchorbench/io/result_folder.hpp"
 #include "anchorbench/io/scenario_files.hpp"
+#include "anchorbench/report/replay_report.hpp"
+#include "anchorbench/report/replay_summary.hpp"
+#include "anchorbench/report/why_not.hpp"
 #include "anchorbench/schema/input_error.hpp"
 #include "anchorbench/schema/sweep.hpp"
 #include "anchorbench/sim/scenario.hpp"
@@ -56,6 +59,7 @@ namespace {
 struct Files {
   std::vector<std::pair<std::string, std::string>> texts;
   std::vector<std::filesystem::path> inputs;
+  std::string notes;  // what the command line prints on stderr beside the files (replay's drops)
 
   engine::FileWriter Writer() {
     return [this](const std::string& name, const std::function<void(std::ostream&)>& write) {
@@ -115,7 +119,7 @@ Files Run(const ConfigHandle& config, int threads, const py::object& progress) {
   const int resolved = engine::ResolveThreads(threads);
   const engine::Plan plan({config.experiment});
   const std::vector<engine::ExperimentAttempts> run = Compute(plan, resolved, progress);
-  Files files{{}, {config.files.begin(), config.files.end()}};
+  Files files{{}, {config.files.begin(), config.files.end()}, {}};
   engine::WriteRunFiles(files.Writer(), config.experiment, run.front(), InfoOf(config, resolved, {"run"}));
   return files;
 }
@@ -129,7 +133,7 @@ Files Sweep(const ConfigHandle& config, const std::vector<std::string>& axes_tex
   const int resolved = engine::ResolveThreads(threads);
   const engine::Plan plan(points);
   const std::vector<engine::ExperimentAttempts> run = Compute(plan, resolved, progress);
-  Files files{{}, {config.files.begin(), config.files.end()}};
+  Files files{{}, {config.files.begin(), config.files.end()}, {}};
   engine::WriteSweepFiles(files.Writer(), config.experiment.name, axes, plan, run, InfoOf(config, resolved, {"sweep"}));
   return files;
 }
@@ -142,19 +146,26 @@ Files Navigate(const ConfigHandle& config, int threads, const py::object& progre
         return engine::RunNavigation(config.experiment, ModuleComponents(), resolved, {}, control);
       },
       progress);
-  Files files{{}, {config.files.begin(), config.files.end()}};
+  Files files{{}, {config.files.begin(), config.files.end()}, {}};
   engine::WriteNavigationFiles(files.Writer(), config.experiment, records, InfoOf(config, resolved, {"navigate"}));
   return files;
 }
 
-Files Replay(const std::string& poses, const std::vector<std::string>& ranges, const std::string& anchors,
-             const ConfigHandle* config, const std::string& repeated_poses, const std::string& out_of_order,
-             bool navigate) {
-  const schema::ExperimentConfig experiment = config ? config->experiment : schema::ExperimentConfig{};
-  if (navigate) engine::CheckLogNavigation(experiment);
+// What replay reads besides the files: the CLI's options (replay --help), and which traces to keep.
+struct ReplayRequest {
   io::LogPolicy policy;
-  policy.repeated_poses = io::RepeatedPosesFromName(repeated_poses);
-  policy.out_of_order = io::OutOfOrderFromName(out_of_order);
+  std::string repeated_poses = "error", out_of_order = "sort";
+  bool navigate = false, trace = false, certificate_trace = false;
+};
+
+// replay's outputs as the CLI writes them into --out, plus the traces asked for (trace.csv,
+// certificate_trace.csv) and the drop summary the CLI prints (Files::notes).
+Files Replay(const std::string& poses, const std::vector<std::string>& ranges, const std::string& anchors,
+             const ConfigHandle* config, ReplayRequest request) {
+  const schema::ExperimentConfig experiment = config ? config->experiment : schema::ExperimentConfig{};
+  if (request.navigate) engine::CheckLogNavigation(experiment);
+  request.policy.repeated_poses = io::RepeatedPosesFromName(request.repeated_poses);
+  request.policy.out_of_order = io::OutOfOrderFromName(request.out_of_order);
   std::optional<std::map<int, schema::AnchorTruth>> truth;
   if (!anchors.empty()) truth = io::LoadAnchors(anchors);
   Files files;
@@ -163,20 +174,38 @@ Files Replay(const std::string& poses, const std::vector<std::string>& ranges, c
   if (!anchors.empty()) files.inputs.emplace_back(anchors);
   if (config) files.inputs.insert(files.inputs.end(), config->files.begin(), config->files.end());
   py::gil_scoped_release release;
-  const engine::ReplayLog replay({poses, ranges}, policy, std::move(truth), experiment, ModuleComponents());
-  if (navigate) {
+  const engine::ReplayLog replay({poses, ranges}, request.policy, std::move(truth), experiment, ModuleComponents());
+  if (request.navigate) {
     engine::CheckErrorBins(replay.survey().t_last_pose_s - replay.survey().t_first_pose_s, *experiment.navigation, poses);
   }
-  const engine::ReplayOutcome outcome = replay.Run();
+  std::ostringstream trace_text, certificate_text;
+  engine::TraceSink trace;
+  if (request.trace) {
+    trace_text << report::kTraceHeader << '\n';
+    trace = [&](const io::RangeRecord& r, const estimator::FeedResult& fed) { report::WriteTraceRow(trace_text, r, fed); };
+  }
+  engine::JudgementSink judged;
+  if (request.certificate_trace) {
+    certificate_text << report::kJudgementColumns << '\n';
+    judged = [&](int anchor_id, std::size_t trigger, const estimator::Judgement& judgement) {
+      report::WriteJudgementRow(certificate_text, anchor_id, experiment.estimator.triggers[trigger], judgement);
+    };
+  }
+  const engine::ReplayOutcome outcome = replay.Run(trace, {}, judged);
   engine::WriteReplayFiles(files.Writer(), outcome);  // into C++ strings: no Python object touched
-  if (navigate) engine::WriteLogNavigation(files.Writer(), replay, outcome, experiment, engine::ResolveThreads(0));
+  if (request.navigate) engine::WriteLogNavigation(files.Writer(), replay, outcome, experiment, engine::ResolveThreads(0));
+  if (request.trace) files.texts.emplace_back("trace.csv", trace_text.str());
+  if (request.certificate_trace) files.texts.emplace_back("certificate_trace.csv", certificate_text.str());
+  std::ostringstream notes;
+  if (outcome.summary.drops.total() > 0 || outcome.summary.reordered_rows > 0) report::PrintReplaySummary(notes, outcome.summary);
+  files.notes = notes.str();
   return files;
 }
 
 Files Simulate(const ConfigHandle& config, std::uint64_t realization) {
   const sim::Scenario scenario = sim::GenerateScenario(config.experiment.scenario, config.experiment.seed, realization);
   const io::Recording recording = io::RecordingOf(scenario);
-  Files files{{}, {config.files.begin(), config.files.end()}};
+  Files files{{}, {config.files.begin(), config.files.end()}, {}};
   engine::FileWriter write = files.Writer();
   write("poses.csv", [&](std::ostream& out) { io::WritePoses(out, recording.poses); });
   write("ranges.csv", [&](std::ostream& out) { io::WriteRanges(out, recording.ranges); });
@@ -199,14 +228,50 @@ void BindTrials(py::module_& m) {
   m.def("_load_config_text", &LoadConfigText, py::arg("text"), py::arg("source"), py::arg("overrides"));
   py::class_<Files>(m, "Files", "A result's files, as the command line writes them.")
       .def_property_readonly("names", &Files::Names)
+      .def_property_readonly("notes", [](const Files& f) { return f.notes; })
+      .def(
+          "_rename_input",
+          [](Files& f, const std::string& path, const std::string& name) {  // a temporary file, as the user knows it
+            for (std::string* text : [&f] {
+                   std::vector<std::string*> all{&f.notes};
+                   for (auto& [file, content] : f.texts) all.push_back(&content);
+                   return all;
+                 }()) {
+              for (std::size_t at = text->find(path); at != std::string::npos; at = text->find(path, at + name.size())) {
+                text->replace(at, path.size(), name);
+              }
+            }
+          },
+          py::arg("path"), py::arg("name"))
       .def("text", &Files::Text, py::arg("name"))
       .def("save", &Files::Save, py::arg("folder"), py::arg("overwrite") = false,
            "Writes the files into `folder`, whole or not at all; an existing folder only with overwrite=True.");
   m.def("_run", &Run, py::arg("config"), py::arg("threads"), py::arg("progress"));
   m.def("_sweep", &Sweep, py::arg("config"), py::arg("axes"), py::arg("threads"), py::arg("progress"));
   m.def("_navigate", &Navigate, py::arg("config"), py::arg("threads"), py::arg("progress"));
-  m.def("_replay", &Replay, py::arg("poses"), py::arg("ranges"), py::arg("anchors"), py::arg("config"),
-        py::arg("repeated_poses"), py::arg("out_of_order"), py::arg("navigate"));
+  m.def(
+      "_replay",
+      [](const std::string& poses, const std::vector<std::string>& ranges, const std::string& anchors,
+         const ConfigHandle* config, const std::string& repeated_poses, const std::string& out_of_order, bool navigate,
+         double max_range_m, double average_poses_within_m, double sort_window_s, double max_speed_mps, bool strict,
+         bool trace, bool certificate_trace) {
+        ReplayRequest request;
+        request.repeated_poses = repeated_poses;
+        request.out_of_order = out_of_order;
+        request.navigate = navigate;
+        request.policy.max_range_m = max_range_m;
+        request.policy.average_within_m = average_poses_within_m;
+        request.policy.sort_window_s = sort_window_s;
+        request.policy.max_speed_mps = max_speed_mps;
+        request.policy.strict = strict;
+        request.trace = trace;
+        request.certificate_trace = certificate_trace;
+        return Replay(poses, ranges, anchors, config, std::move(request));
+      },
+      py::arg("poses"), py::arg("ranges"), py::arg("anchors"), py::arg("config"), py::arg("repeated_poses"),
+      py::arg("out_of_order"), py::arg("navigate"), py::arg("max_range_m"), py::arg("average_poses_within_m"),
+      py::arg("sort_window_s"), py::arg("max_speed_mps"), py::arg("strict"), py::arg("trace"),
+      py::arg("certificate_trace"));
   m.def("_simulate", &Simulate, py::arg("config"), py::arg("realization"));
 }
 

@@ -5,6 +5,9 @@
 #include <optional>
 #include <string>
 
+#include <Eigen/Eigenvalues>
+
+#include "anchorbench/estimator/certified_trigger.hpp"
 #include "anchorbench/io/format.hpp"
 #include "anchorbench/report/why_not.hpp"
 
@@ -18,7 +21,17 @@ using io::FormatOptional;
 constexpr const char* kEstimateColumns[] = {"anchor_id", "method", "initialized", "t_init", "n_used", "pdop_est",
                                             "pdop_true", "x", "y", "z", "bias", "err_m", "status", "err_xy", "err_z",
                                             "bias_aware_hdop", "bias_aware_vdop", "scale", "blocked_by",
-                                            "blocked_value", "blocked_limit", "t_first", "t_oracle", "latency"};
+                                            "blocked_value", "blocked_limit", "t_first", "t_oracle", "latency",
+                                            "radius99_m"};
+
+// The radius of the estimate's 99% position region: sqrt(chi2_3(0.99) lambda_max) of its covariance.
+std::string Radius99(const schema::Attempt& a) {
+  if (!a.initialized || !a.solve) return "";
+  const Eigen::Matrix3d position = a.solve->covariance.topLeftCorner<3, 3>();
+  if (!position.allFinite() || position.isZero()) return "";
+  const double largest = Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d>(position, Eigen::EigenvaluesOnly).eigenvalues()(2);
+  return FormatNumber(std::sqrt(estimator::ChiSquare3Quantile(0.99) * std::max(largest, 0.0)));
+}
 
 // Three decimals for a terminal, or the shortest text where that would be a wall of digits.
 std::string ForTerminal(double value) { return std::abs(value) < 1e9 ? FormatFixed(value, 3) : FormatNumber(value); }
@@ -49,8 +62,8 @@ std::vector<std::string> EstimateFields(const schema::Attempt& a) {
           a.method,
           a.initialized ? "1" : "0",
           FormatOptional(a.t_init_s),
-          std::to_string(a.n_used),
-          FormatNumber(a.pdop_closest_point),
+          has_estimate ? std::to_string(a.n_used) : "",  // nothing estimated: nothing used (blocked_* say why)
+          has_estimate ? FormatNumber(a.pdop_closest_point) : "",
           a.evaluation ? FormatNumber(a.evaluation->pdop_true) : "",
           has_estimate ? FormatNumber(p.x()) : "",
           has_estimate ? FormatNumber(p.y()) : "",
@@ -67,7 +80,8 @@ std::vector<std::string> EstimateFields(const schema::Attempt& a) {
           WhyNotCell(a, 0), WhyNotCell(a, 1), WhyNotCell(a, 2),
           a.evaluation ? FormatOptional(a.evaluation->t_first_s) : "",
           a.evaluation ? FormatOptional(a.evaluation->t_oracle_s) : "",
-          a.evaluation ? FormatOptional(a.evaluation->latency_ratio) : ""};
+          a.evaluation ? FormatOptional(a.evaluation->latency_ratio) : "",
+          Radius99(a)};
 }
 
 }  // namespace
@@ -98,7 +112,9 @@ void PrintEstimates(std::ostream& out, const std::vector<schema::Attempt>& attem
     std::vector<std::string> fields = EstimateFields(a);
     // Terminal view: three decimals instead of the lossless CSV text.
     const std::optional<double> pdop_true = a.evaluation ? std::optional(a.evaluation->pdop_true) : std::nullopt;
-    const std::optional<double> numbers[] = {a.t_init_s, a.pdop_closest_point, pdop_true};
+    const std::optional<double> pdop_est =
+        a.initialized && a.solve ? std::optional(a.pdop_closest_point) : std::nullopt;  // as in the CSV
+    const std::optional<double> numbers[] = {a.t_init_s, pdop_est, pdop_true};
     const int columns[] = {3, 5, 6};
     for (int k = 0; k < 3; ++k)
       if (numbers[k] && std::isfinite(*numbers[k])) fields[columns[k]] = ForTerminal(*numbers[k]);

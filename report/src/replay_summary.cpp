@@ -54,6 +54,7 @@ void WriteReplaySummaryJson(std::ostream& out, const ReplaySummary& s) {
                     {"out_of_order", io::NameOf(s.policy.out_of_order)},
                     {"sort_window_s", s.policy.sort_window_s},
                     {"repeated_pose_tolerance_m", s.policy.repeated_pose_tolerance_m},
+                    {"average_within_m", s.policy.average_within_m},
                     {"max_speed_mps", s.policy.max_speed_mps},
                     {"strict", s.policy.strict}};
   json["pose_rows"] = s.pose_rows;

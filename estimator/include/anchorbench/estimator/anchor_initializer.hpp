@@ -121,7 +121,8 @@ class AnchorInitializer {
 
   // End of data. Pending solves run first (their event, if one initializes). An offline trigger
   // (fixed window) then solves on everything buffered and returns the event, possibly with a
-  // failure status. Online triggers return nothing here when their event came from Feed().
+  // failure status, at the time of its last admitted sample (t_s only if it has none). Online
+  // triggers return nothing here when their event came from Feed().
   std::optional<InitEvent> Finish(double t_s);
 
   bool initialized() const { return initialized_; }
@@ -174,7 +175,7 @@ class AnchorInitializer {
   std::vector<int> tag_id_;
   std::size_t n_admitted_ = 0;   // samples the trigger has seen
   std::size_t keep_every_ = 1;   // BufferPolicy::kThin: buffer every keep_every_-th admitted sample
-  double t_first_s_ = 0.0;
+  double t_first_s_ = 0.0, t_last_s_ = 0.0;  // of the first and the latest admitted sample
   bool initialized_ = false;
   std::size_t next_attempt_size_ = 0;
   std::optional<InitEvent> last_failed_solve_;
