@@ -4,7 +4,9 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 bash scripts/setup.sh
-cmake -S . -B build -DCMAKE_BUILD_TYPE=Release -DANCHORBENCH_PYTHON=ON -DANCHORBENCH_ROS=ON >/dev/null
+# ANCHORBENCH_WERROR=ON (the test command sets it): every warning is an error.
+cmake -S . -B build -DCMAKE_BUILD_TYPE=Release -DANCHORBENCH_PYTHON=ON -DANCHORBENCH_ROS=ON \
+  -DANCHORBENCH_WERROR="${ANCHORBENCH_WERROR:-OFF}" >/dev/null
 if [ $# -gt 0 ]; then
   cmake --build build -j"$(nproc)" --target "$@"
 else

@@ -1,11 +1,11 @@
 #!/usr/bin/env bash
-# The test command (README): set up, build from scratch if needed, build and run the two
+# The test command (README): set up, build from scratch if needed (warnings as errors), build and run the two
 # out-of-tree examples against the installed package, run the whole suite (Release), then the
 # sanitizer job (scripts/sanitize.sh: ASan + UBSan build of every test, libFuzzer runs, mutated
 # inputs, the clang build's bytes against g++'s).
 set -euo pipefail
 cd "$(dirname "$0")/.."
-bash scripts/build.sh
+ANCHORBENCH_WERROR=ON bash scripts/build.sh  # a warning fails the build
 
 # The installed package: install, then build the examples against it and run them.
 cmake --install build --prefix build/install >/dev/null

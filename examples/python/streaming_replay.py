@@ -4,11 +4,12 @@
     PYTHONPATH=build/python /usr/bin/python3 examples/python/streaming_replay.py --config configs/tunnel.yaml
 
 Simulates one realization (or reads --poses/--ranges CSVs), then calls add_pose / add_range per
-row in time order and prints each event the moment a trigger fires.
+row in time order and prints each event the moment a trigger fires. With --figure, replays the
+same log (ab.replay on the DataFrames, with the truth when simulated) and draws the anchors against
+the truth and the error against time (ab.plot).
 """
 
 import argparse
-import io
 
 import pandas
 
@@ -27,14 +28,15 @@ def main():
     parser.add_argument("--config", default="configs/tunnel.yaml")
     parser.add_argument("--poses")
     parser.add_argument("--ranges")
+    parser.add_argument("--figure", help="where to draw the replay's anchors and errors (PNG)")
     args = parser.parse_args()
 
+    truth = None
     if args.poses and args.ranges:
         poses, ranges = pandas.read_csv(args.poses), pandas.read_csv(args.ranges)
     else:
         log = ab.simulate(args.config)
-        poses = pandas.read_csv(io.StringIO(log.text("poses.csv")))
-        ranges = pandas.read_csv(io.StringIO(log.text("ranges.csv")))
+        poses, ranges, truth = log.poses, log.ranges, log.anchors
 
     front_end = ab.FrontEnd(args.config)
     for t, kind, row in rows_in_time_order(poses, ranges):
@@ -49,6 +51,21 @@ def main():
     front_end.finish(float(max(poses["t"].max(), ranges["t"].max())))
     for event in front_end.take_events():  # the fixed window fires at the end of the data
         print(f"end          anchor {event.anchor_id:2d}  {event.trigger:20s} {event.solve.status}")
+
+    if args.figure:
+        import matplotlib
+
+        matplotlib.use("Agg")
+        import matplotlib.pyplot as plt
+
+        replayed = ab.replay(poses, ranges, anchors=truth, config=args.config)
+        fig, (plan, errors) = plt.subplots(1, 2, figsize=(11, 4.5))
+        ab.plot.anchors(replayed, truth=truth, ax=plan)
+        if truth is not None:
+            ab.plot.errors_over_time(replayed, ax=errors)
+        fig.tight_layout()
+        fig.savefig(args.figure, dpi=110)
+        print(f"wrote {args.figure}")
 
 
 if __name__ == "__main__":

@@ -28,10 +28,11 @@ from ._anchorbench import (  # noqa: F401  (the module's API)
     register_trigger,
 )
 from . import _anchorbench
+from . import plot  # noqa: F401  (ab.plot.anchors, ab.plot.errors_over_time; matplotlib only when drawing)
 
 __all__ = [
     "Config", "Event", "FrontEnd", "InputError", "Result", "SolveResult", "closest_point_pdop", "geometry_pdop",
-    "load_config", "navigate", "parts", "register_solver", "register_trigger", "replay", "ReplayWarning", "FrontEndWarning", "run",
+    "load_config", "navigate", "parts", "register_solver", "register_trigger", "plot", "replay", "ReplayWarning", "FrontEndWarning", "run",
     "simulate", "solve", "sweep",
 ]
 

@@ -52,10 +52,10 @@ py::array View(std::span<const Eigen::Vector3d> points) {
 }
 
 py::array View(std::span<const double> values) {
-  return ReadOnly(py::array_t<double>({static_cast<py::ssize_t>(values.size())}, values.data(), py::none()));
+  return ReadOnly(py::array_t<double>(static_cast<py::ssize_t>(values.size()), values.data(), py::none()));
 }
 
-py::array Copy(const Eigen::Vector3d& v) { return py::array_t<double>({py::ssize_t{3}}, v.data()); }
+py::array Copy(const Eigen::Vector3d& v) { return py::array_t<double>(py::ssize_t{3}, v.data()); }
 
 py::array Copy(const Eigen::Matrix4d& m) {
   py::array_t<double> out({py::ssize_t{4}, py::ssize_t{4}});

@@ -20,8 +20,9 @@ def test_the_numpy_solver_example_compares_and_draws(tmp_path):
     assert (tmp_path / "cdf.png").stat().st_size > 1000
 
 
-def test_the_streaming_example_prints_events_as_they_fire():
-    done = run_example("streaming_replay.py", "--config", "configs/tunnel.yaml")
+def test_the_streaming_example_prints_events_as_they_fire(tmp_path):
+    done = run_example("streaming_replay.py", "--config", "configs/tunnel.yaml", "--figure", tmp_path / "replay.png")
+    assert (tmp_path / "replay.png").stat().st_size > 1000
     lines = done.stdout.splitlines()
     assert any("pdop_closest_point" in line for line in lines), done.stdout[:500]
     assert any(line.startswith("end") and "fixed_window" in line for line in lines)

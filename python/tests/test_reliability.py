@@ -12,7 +12,7 @@ from conftest import box_samples
 def test_several_threads_share_one_front_end():
     """Four threads adding ranges to one FrontEnd (each its own anchor) give the one-thread events."""
     p, d = box_samples([2.0, -1.0, 4.0], n=400)
-    t = np.arange(len(d)) * 0.1
+    t = np.arange(len(d)) * 0.07  # 28 s: every range within the poses kept (FrontEnd.POSE_HISTORY_S)
     tags = np.zeros(len(t), dtype=np.int32)
     config = {"estimator": {"triggers": ["fixed_window", "pdop_closest_point", "certified"]}}
 
@@ -37,6 +37,7 @@ def test_several_threads_share_one_front_end():
             thread.join()
         shared.finish(float(t[-1]))
         assert sorted(map(key, shared.take_events())) == expected
+        assert shared.counters["samples"] == 4 * len(t)
 
 
 def test_part_names_are_checked_and_built_ins_never_replaced():

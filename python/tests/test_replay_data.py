@@ -136,3 +136,19 @@ def test_events_and_waits_as_dataframes(log):
     assert len(events) and set(events["trigger"]) <= {"pdop_closest_point", "certified"}
     assert all(isinstance(s, str) for s in events["status"]) and "converged" in set(events["status"])
     assert np.isfinite(events[["x", "y", "z"]].to_numpy()).all()
+
+
+def test_plots_draw_every_initialized_anchor_and_refuse_errors_without_truth(log):
+    import matplotlib
+
+    matplotlib.use("Agg")
+    from matplotlib.patches import Circle
+
+    replayed = ab.replay(log.poses, log.ranges, anchors=log.anchors)
+    done = replayed.estimates[replayed.estimates["initialized"] == 1]
+    ax = ab.plot.anchors(replayed, truth=log.anchors)
+    assert sum(isinstance(p, Circle) for p in ax.patches) == done["radius99_m"].notna().sum() > 0
+    ax = ab.plot.errors_over_time(replayed)
+    assert sum(len(c.get_offsets()) for c in ax.collections) == len(done)
+    with pytest.raises(ValueError, match="no truth"):
+        ab.plot.errors_over_time(ab.replay(log.poses, log.ranges))

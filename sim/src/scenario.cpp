@@ -127,7 +127,7 @@ class RadioBiases {
  public:
   RadioBiases(const RangeModelOptions& model, std::uint64_t seed, std::uint64_t realization, std::size_t tags,
               const std::vector<SimAnchor>& anchors)
-      : tags_(tags), anchors_(anchors.size()),
+      : anchors_(anchors.size()),
         any_(model.antenna_bias_m > 0.0 || model.tag_antenna_bias_m > 0.0 || model.link_offset_m > 0.0 ||
              model.range_scale_sigma > 0.0) {
     for (const SimAnchor& anchor : anchors) {
@@ -165,7 +165,7 @@ class RadioBiases {
   }
 
  private:
-  std::size_t tags_, anchors_;
+  std::size_t anchors_;
   bool any_;
   std::vector<AntennaPattern> anchor_pattern_, tag_pattern_;
   std::vector<double> scale_, link_offset_m_;
