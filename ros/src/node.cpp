@@ -199,21 +199,24 @@ class Node {
              s.p_world_anchor.x(), s.p_world_anchor.y(), s.p_world_anchor.z(), s.bias_m, anchor.n_used);
   }
 
+  // Per initialized anchor: its 99% ellipsoid, coloured by the solve's status, and a label.
   void PublishMarkers() {
     visualization_msgs::MarkerArray array;
+    visualization_msgs::Marker clear;  // the anchors a reset removed go too
+    clear.action = visualization_msgs::Marker::DELETEALL;
+    array.markers.push_back(clear);
     for (const AnchorState& anchor : map_.States()) {
       if (!anchor.initialized) continue;
       visualization_msgs::Marker m;
       m.header.frame_id = settings_.frame_id;
       m.header.stamp = ros::Time::now();
       m.ns = "anchorbench";
-      m.id = anchor.anchor_id;
+      m.id = 2 * anchor.anchor_id;
       m.type = visualization_msgs::Marker::SPHERE;  // the 99% ellipsoid around the estimate
-      const AnchorState& s = anchor;
-      m.pose.position.x = s.p_world_anchor.x();
-      m.pose.position.y = s.p_world_anchor.y();
-      m.pose.position.z = s.p_world_anchor.z();
-      const Ellipsoid e = EllipsoidOf(s.covariance);
+      m.pose.position.x = anchor.p_world_anchor.x();
+      m.pose.position.y = anchor.p_world_anchor.y();
+      m.pose.position.z = anchor.p_world_anchor.z();
+      const Ellipsoid e = EllipsoidOf(anchor.covariance);
       m.pose.orientation.w = e.orientation.w();
       m.pose.orientation.x = e.orientation.x();
       m.pose.orientation.y = e.orientation.y();
@@ -221,9 +224,23 @@ class Node {
       m.scale.x = std::max(e.diameters_m.x(), 0.05);
       m.scale.y = std::max(e.diameters_m.y(), 0.05);
       m.scale.z = std::max(e.diameters_m.z(), 0.05);
-      m.color.g = 0.8f;
+      const bool converged = anchor.status == "converged";  // green; max_iterations: amber
+      m.color.r = converged ? 0.1f : 1.0f;
+      m.color.g = converged ? 0.8f : 0.6f;
+      m.color.b = 0.1f;
       m.color.a = 0.5f;
       array.markers.push_back(m);
+      visualization_msgs::Marker label = m;
+      label.id = 2 * anchor.anchor_id + 1;
+      label.type = visualization_msgs::Marker::TEXT_VIEW_FACING;
+      label.pose.orientation = geometry_msgs::Quaternion();
+      label.pose.orientation.w = 1.0;
+      label.pose.position.z += m.scale.z / 2 + 0.15;
+      label.scale.x = label.scale.y = 0.0;
+      label.scale.z = 0.2;  // text height, m
+      label.color.a = 1.0f;
+      label.text = "anchor " + std::to_string(anchor.anchor_id) + " (" + anchor.status + ")";
+      array.markers.push_back(label);
     }
     markers_.publish(array);
   }

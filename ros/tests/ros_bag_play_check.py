@@ -1,6 +1,7 @@
 """Checks the node after a bag was played into it: every range counted (none lost, the two
 malformed ones reported), each anchor that replay initialized published with replay's numbers to
-print precision (1e-6 m; the stamps are whole nanoseconds) and no other, the save service, and the reset service. Usage:
+print precision (1e-6 m; the stamps are whole nanoseconds) and no other, drawn as markers, the save service, and the
+reset service (every anchor waiting, the markers cleared). Usage:
 ros_bag_play_check.py LOG_FOLDER REPLAY_ESTIMATES SAVE_DIR RATE"""
 import csv
 import os
@@ -11,6 +12,7 @@ import rospy
 from diagnostic_msgs.msg import DiagnosticArray
 from geometry_msgs.msg import PoseWithCovarianceStamped
 from std_srvs.srv import Empty, Trigger
+from visualization_msgs.msg import Marker, MarkerArray
 
 LOG, EXPECTED, SAVED, RATE = sys.argv[1], sys.argv[2], sys.argv[3], sys.argv[4]
 T0_S = 1000.0  # ros_bag_write.py's clock
@@ -32,6 +34,8 @@ published, status = {}, {}
 for anchor_id in anchor_ids:
     rospy.Subscriber(f"/anchorbench/anchor_{anchor_id}", PoseWithCovarianceStamped,
                      lambda m, a=anchor_id: published.__setitem__(a, m))
+markers = []
+rospy.Subscriber("/anchorbench/markers", MarkerArray, lambda m: markers.append(m))
 rospy.Subscriber("/diagnostics", DiagnosticArray,
                  lambda m: status.update({s.name: {kv.key: kv.value for kv in s.values} for s in m.status}))
 
@@ -59,6 +63,12 @@ for anchor_id, row in expected.items():
         assert abs(value - float(row[axis])) <= 1e-6, f"at {RATE}x: anchor {anchor_id} {axis} {value} != {row[axis]}"
     assert abs(published[anchor_id].header.stamp.to_sec() - (T0_S + float(row["t_init"]))) < 1e-6
 
+drawn = [m for m in markers[-1].markers if m.action == Marker.ADD]
+assert sorted(m.id for m in drawn if m.type == Marker.SPHERE) == [2 * a for a in sorted(expected)], drawn
+assert all(m.scale.x > 0 and m.color.a > 0 for m in drawn if m.type == Marker.SPHERE)
+assert sorted(m.text for m in drawn if m.type == Marker.TEXT_VIEW_FACING) == \
+    sorted(f"anchor {a} ({expected[a]['status']})" for a in expected)
+
 save = rospy.ServiceProxy("/anchorbench/save", Trigger)()
 assert save.success, save.message
 assert {int(r["anchor_id"]) for r in rows(os.path.join(SAVED, "anchors.csv"))} == set(expected)
@@ -68,4 +78,6 @@ status.clear()
 wait_for("every anchor waiting after reset",
          lambda: all(f"anchorbench: anchor {a}" in status for a in anchor_ids) and
          all("waiting_for" in status[f"anchorbench: anchor {a}"] for a in anchor_ids))
+wait_for("the markers cleared after reset",
+         lambda: markers and not [m for m in markers[-1].markers if m.action == Marker.ADD])
 print(f"at {RATE}x: {n_ranges} ranges counted, 2 malformed; {len(expected)} anchors as replay's; saved; reset")
