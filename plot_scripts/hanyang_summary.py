@@ -18,7 +18,7 @@ for case in cases:
         gated = next(r for r in rows if r["anchor_id"] == anchor and r["method"] == GATED)
         fixed = next(r for r in rows if r["anchor_id"] == anchor and r["method"] == FIXED)
         g = (f"gated {number(gated['err_m']):.2f} m at {number(gated['t_init']):.0f} s" if gated["initialized"] == "1"
-             else f"refused (PDOP {number(gated['pdop_est']):.1f})")
+             else f"refused (PDOP {number(gated['blocked_value']):.1f})")  # the test that held it back, at the end
         fixed_errors.append(number(fixed["err_m"]))
         cells.append(f"{g} / fixed {number(fixed['err_m']):.2f} m")
     lines.append(f"| {case.name} | " + " | ".join(cells) + f" | {sum(fixed_errors) / len(fixed_errors):.2f} |")

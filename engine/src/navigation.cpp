@@ -27,7 +27,8 @@ nav::NavigationOptions OptionsOf(const schema::NavigationConfig& c, double row_s
 }
 
 std::vector<MethodAnchors> TriggerAnchors(const std::vector<schema::Attempt>& attempts,
-                                          const std::vector<std::string>& triggers, schema::MirroredAnchorUse mirrored) {
+                                          const std::vector<std::string>& triggers, schema::MirroredAnchorUse mirrored,
+                                          double t_end_s) {
   std::vector<MethodAnchors> methods;
   for (const std::string& trigger : triggers) {
     std::vector<nav::UsableAnchor> anchors;
@@ -35,8 +36,10 @@ std::vector<MethodAnchors> TriggerAnchors(const std::vector<schema::Attempt>& at
       if (a.method != trigger || !a.solve) continue;
       const bool mirror = !a.initialized && a.solve->status == estimator::SolveStatus::kHeightUnobservable;
       if (!(a.initialized || (mirror && mirrored != schema::MirroredAnchorUse::kSkip))) continue;
-      // A refused fixed window ran at the end (t_init_s); a refused online solve when it last ran.
-      const std::optional<double> t_s = a.t_init_s ? a.t_init_s : a.t_failed_solve_s;
+      // The fixed window at the end of the data; a refused online solve when it last ran.
+      const std::optional<double> t_s = trigger == schema::kFixedWindowTrigger ? std::optional(t_end_s)
+                                        : a.t_init_s                            ? a.t_init_s
+                                                                                : a.t_failed_solve_s;
       if (!t_s) continue;
       anchors.push_back({a.anchor_id, *t_s, a.solve->p_world_anchor, a.solve->bias_m, a.solve->covariance,
                          mirror && mirrored == schema::MirroredAnchorUse::kHorizontal});
@@ -78,7 +81,8 @@ std::vector<NavigationRecord> NavigateRealization(const schema::RowConfig& row, 
   for (const sim::SimRange& r : scenario.ranges) {
     if (r.tag_id == 0) run.ranges.push_back({r.epoch, r.anchor_id, r.range_m});
   }
-  std::vector<MethodAnchors> methods = TriggerAnchors(attempts, row.estimator.triggers, navigation.height_unobservable);
+  std::vector<MethodAnchors> methods = TriggerAnchors(attempts, row.estimator.triggers, navigation.height_unobservable,
+                                                      scenario.t_s.empty() ? 0.0 : scenario.t_s.back());
   std::vector<nav::UsableAnchor> truth;
   for (const sim::SimAnchor& a : scenario.anchors) {
     truth.push_back({a.id, scenario.t_s.front(), a.p_world_anchor, a.bias_m, Eigen::Matrix4d::Zero()});

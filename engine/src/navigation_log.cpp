@@ -59,13 +59,14 @@ void CheckLogNavigation(const schema::ExperimentConfig& config) {
 }
 
 std::vector<NavigationRecord> NavigateLog(const LogTrajectory& log, const std::vector<schema::Attempt>& attempts,
+                                          double t_end_s,
                                           const std::map<int, schema::AnchorTruth>* truth,
                                           const schema::ExperimentConfig& config, int threads) {
   CheckLogNavigation(config);
   const schema::NavigationConfig& navigation = *config.navigation;
   CheckErrorBins(log.run.t_s.back() - log.run.t_s.front(), navigation, config.name);
   std::vector<MethodAnchors> methods =
-      TriggerAnchors(attempts, config.estimator.triggers, navigation.height_unobservable);
+      TriggerAnchors(attempts, config.estimator.triggers, navigation.height_unobservable, t_end_s);
   if (truth) {
     std::vector<nav::UsableAnchor> anchors;
     for (const auto& [id, anchor] : *truth) {
@@ -86,7 +87,7 @@ void WriteLogNavigation(const FileWriter& write, const ReplayLog& replay, const 
                         const schema::ExperimentConfig& config, int threads) {
   const LogTrajectory log = ReadLogTrajectory(replay.files(), replay.policy(), replay.survey());
   const std::vector<NavigationRecord> records =
-      NavigateLog(log, outcome.result.attempts, replay.truth(), config, threads);
+      NavigateLog(log, outcome.result.attempts, outcome.result.t_end_s, replay.truth(), config, threads);
   const schema::RowConfig row{"tag_" + std::to_string(log.tag_id), {}, {}, std::nullopt};
   WriteNavigationTables(write, config, {row}, records);
 }

@@ -103,6 +103,7 @@ ReplayResult Replay(const LogSource& log, const std::vector<std::string>& range_
   front_end.Finish(front_end.t_last_sample_s());
   take_events();
   const double t_end_s = front_end.t_last_sample_s();
+  result.t_end_s = t_end_s;
   for (int anchor_id : front_end.anchor_ids()) {
     const std::vector<estimator::AnchorInitializer>& chains = front_end.chains(anchor_id);
     std::optional<eval::OracleLatency> oracle;

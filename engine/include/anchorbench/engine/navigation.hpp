@@ -38,9 +38,12 @@ using MethodAnchors = std::pair<std::string, std::vector<nav::UsableAnchor>>;
 nav::NavigationOptions OptionsOf(const schema::NavigationConfig& navigation, double row_sigma_range_m);
 
 // Each trigger's anchors, in `triggers`' order: those it initialized (and, as `mirrored` says,
-// those it refused as height_unobservable), usable from their initialization's time.
+// those it refused as height_unobservable), usable from their initialization's time; the fixed
+// window's from `t_end_s`, the end of the data, when its one solve can run (its t_init is the time
+// of the last sample it used, which a live robot cannot know is the last).
 std::vector<MethodAnchors> TriggerAnchors(const std::vector<schema::Attempt>& attempts,
-                                          const std::vector<std::string>& triggers, schema::MirroredAnchorUse mirrored);
+                                          const std::vector<std::string>& triggers, schema::MirroredAnchorUse mirrored,
+                                          double t_end_s);
 
 // One realization: the odometry and the start drawn from `rng`, then every method on them (common
 // random numbers), one record each.

@@ -33,9 +33,10 @@ void CheckLogNavigation(const schema::ExperimentConfig& config);
 
 // config.realizations draws of the odometry (draw r from the stream (seed, r, kNavigationStream)),
 // each with the replay's triggers, the true anchors (if `truth`; its bias 0 where it has none)
-// and none, on `threads` threads; the same records for any thread count. Row 0.
+// and none, on `threads` threads; the same records for any thread count. Row 0. `t_end_s`: the
+// replay's last sample, when the fixed window's anchors become usable.
 std::vector<NavigationRecord> NavigateLog(const LogTrajectory& log, const std::vector<schema::Attempt>& attempts,
-                                          const std::map<int, schema::AnchorTruth>* truth,
+                                          double t_end_s, const std::map<int, schema::AnchorTruth>* truth,
                                           const schema::ExperimentConfig& config, int threads);
 
 // `replay --navigate` after the replay: the log's trajectory read (ReadLogTrajectory), navigated

@@ -22,6 +22,7 @@ struct ReplayResult {
   // the tag's pose span, no pose in time), by anchor or tag and reason.
   io::LogDrops drops;
   std::map<int, std::int64_t> samples_by_anchor;  // ranges handed to the initializers
+  double t_end_s = 0.0;  // the last of them: the end of the data, when the fixed window solves
 };
 
 // Sees every range handed to the initializers, with the first trigger's view of it.
