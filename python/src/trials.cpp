@@ -232,15 +232,13 @@ void BindTrials(py::module_& m) {
       .def(
           "_rename_input",
           [](Files& f, const std::string& path, const std::string& name) {  // a temporary file, as the user knows it
-            for (std::string* text : [&f] {
-                   std::vector<std::string*> all{&f.notes};
-                   for (auto& [file, content] : f.texts) all.push_back(&content);
-                   return all;
-                 }()) {
-              for (std::size_t at = text->find(path); at != std::string::npos; at = text->find(path, at + name.size())) {
-                text->replace(at, path.size(), name);
+            const auto rename = [&](std::string& text) {
+              for (std::size_t at = text.find(path); at != std::string::npos; at = text.find(path, at + name.size())) {
+                text.replace(at, path.size(), name);
               }
-            }
+            };
+            rename(f.notes);
+            for (auto& [file, text] : f.texts) rename(text);
           },
           py::arg("path"), py::arg("name"))
       .def("text", &Files::Text, py::arg("name"))
