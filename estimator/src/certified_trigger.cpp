@@ -48,6 +48,20 @@ double NormalQuantile(double p) {
          (((((b[0] * r + b[1]) * r + b[2]) * r + b[3]) * r + b[4]) * r + 1.0);
 }
 
+// The reflection of `point` through the vertical plane through `centroid` along the tags' longest
+// horizontal spread.
+Eigen::Vector3d SideMirror(std::span<const Eigen::Vector3d> p_world_tag, const Eigen::Vector3d& centroid,
+                           const Eigen::Vector3d& point) {
+  Eigen::Matrix2d scatter = Eigen::Matrix2d::Zero();
+  for (const Eigen::Vector3d& p : p_world_tag) {
+    const Eigen::Vector2d d = (p - centroid).head<2>();
+    scatter.noalias() += d * d.transpose();
+  }
+  const Eigen::Vector2d along = Eigen::SelfAdjointEigenSolver<Eigen::Matrix2d>(scatter).eigenvectors().col(1);
+  const Eigen::Vector3d normal(-along.y(), along.x(), 0.0);
+  return point - 2.0 * (point - centroid).dot(normal) * normal;
+}
+
 }  // namespace
 
 bool CertificateOptions::IsValid(std::string* why) const {
@@ -107,7 +121,9 @@ CertifiedTrigger::CertifiedTrigger(std::shared_ptr<const Solver> solver, const A
       covariance_(options.covariance),
       travel_bias_(std::move(travel_bias)),
       cadence_(cadence),
-      region_chi2_(ChiSquare3Quantile(options.confidence)) {
+      region_chi2_(ChiSquare3Quantile(options.confidence)),
+      prior_quantile_(NormalQuantile(0.5 + 0.5 * options.confidence)),
+      pattern_quantile_(NormalQuantile(options.confidence)) {
   if (tag_biases_.estimate) covariance_.link_offset_m = 0.0;  // estimated: SolveWithTagBiases' own term
 }
 
@@ -129,6 +145,10 @@ std::vector<CertifiedTrigger::Alternative> CertifiedTrigger::Alternatives(std::s
   for (const Eigen::Vector3d& direction : directions) {
     for (const double side : {-1.0, 1.0}) starts.push_back({estimate.p_world_anchor + side * step_m * direction, 0.0, false});
   }
+  // With a known height, a path along a line leaves one more twin: the reflection through the
+  // vertical plane along the path (a turn about the line at the same height). Where the path is
+  // not a line, the twin refines back or fits clearly worse.
+  if (height_prior_) starts.push_back({SideMirror(p_world_tag, centroid, estimate.p_world_anchor), 0.0, false});
   for (Alternative& start : starts) {
     if (!start.mirror) start.bias_m = MedianResidual(p_world_tag, range_m, start.p_world_anchor);
   }
@@ -156,15 +176,27 @@ CertifiedTrigger::Verdict CertifiedTrigger::RuleOutAlternatives(std::span<const 
       if (!start.mirror) continue;
       fit = start;
     }
-    double evidence = FitEvidence(p_world_tag, range_m, estimate.p_world_anchor, estimate.bias_m, fit.p_world_anchor,
-                                  fit.bias_m, mirror_.trim_fraction);
-    if (height_prior_) evidence += height_prior_->Chi2(fit.p_world_anchor.z()) - height_prior_->Chi2(estimate.p_world_anchor.z());
+    const double prior_evidence =
+        height_prior_ ? height_prior_->Chi2(fit.p_world_anchor.z()) - height_prior_->Chi2(estimate.p_world_anchor.z())
+                      : 0.0;
+    // What the model error could make of the comparison, at the certificate's confidence (one-sided:
+    // only a pattern that favours the estimate fakes evidence): on a real field, a robot's turn read
+    // 0.2 m long at the true anchor and made its twin across the path fit better by an evidence of
+    // 168 without this discount.
+    const double explained_squares =
+        2.0 * pattern_quantile_ *
+        PatternCovariation(p_world_tag, estimate.p_world_anchor, estimate.bias_m, fit.p_world_anchor, fit.bias_m,
+                           covariance_);
+    const double evidence = FitEvidence(p_world_tag, range_m, estimate.p_world_anchor, estimate.bias_m,
+                                        fit.p_world_anchor, fit.bias_m, mirror_.trim_fraction, explained_squares) +
+                            prior_evidence;
     // A likelihood ratio's own spread grows with the separation it measures (about 2 sqrt(lambda),
     // more with noise in the tag positions: on the flat floor, 1 cm of it swung a lambda ~10 fit
-    // from -15 to +28): only a separation no swing crosses counts as evidence.
-    const bool separated =
-        height_prior_ || Separation(p_world_tag, estimate.p_world_anchor, estimate.bias_m, fit.p_world_anchor,
-                                    fit.bias_m, scale_m) >= mirror_.min_separation;
+    // from -15 to +28): only a separation no swing crosses counts as evidence, or a height prior
+    // that alone rules the alternative out (a twin at the same height, a line's, it cannot).
+    const bool separated = prior_evidence >= threshold ||
+                           Separation(p_world_tag, estimate.p_world_anchor, estimate.bias_m, fit.p_world_anchor,
+                                      fit.bias_m, scale_m) >= mirror_.min_separation;
     // Too close to tell counts as no evidence at all.
     judgement_.evidence = std::min(judgement_.evidence, separated ? evidence : 0.0);
     if (!separated || !(evidence >= threshold)) return start.mirror ? Verdict::kMirror : Verdict::kOtherMinimum;
@@ -185,11 +217,20 @@ std::vector<int> CertifiedTrigger::EstimatedTags(std::span<const int> tag_id, st
 
 double CertifiedTrigger::LargestVariance(std::span<const Eigen::Vector3d> p_world_tag, std::span<const int> tag_id,
                                          const std::vector<int>& tags, const Eigen::Vector3d& point,
-                                         double noise_variance, double travel_bias_m) const {
+                                         double noise_variance, double travel_bias_m, double height_information,
+                                         double height_weight) const {
   // The noise part: the (p_A, gamma) block of the information's inverse, with each tag's offset
   // among the unknowns where they are estimated (tag_biases.hpp).
-  const Eigen::MatrixXd information =
+  // the prior's information beside the ranges' (height_information = 0: none; the plain scaling keeps
+  // the bytes of runs without one).
+  Eigen::MatrixXd information =
       TagInformation(p_world_tag, tags.size() > 1 ? tag_id : std::span<const int>(), tags, point);
+  double scale = noise_variance;
+  if (height_information > 0.0) {
+    information /= noise_variance;
+    information(2, 2) += height_information;
+    scale = 1.0;
+  }
   Eigen::Matrix4d noise;
   if (tags.size() == 1) {
     if (!internal::InvertNormalMatrix(information.topLeftCorner<4, 4>(), &noise)) return kInf;
@@ -199,7 +240,7 @@ double CertifiedTrigger::LargestVariance(std::span<const Eigen::Vector3d> p_worl
     noise = ldlt.solve(Eigen::MatrixXd::Identity(information.rows(), information.cols())).topLeftCorner<4, 4>();
   }
   const Eigen::Matrix4d p =
-      noise_variance * noise + ModelErrorCovariance(p_world_tag, tag_id, point, covariance_, travel_bias_m);
+      scale * noise + ModelErrorCovariance(p_world_tag, tag_id, point, covariance_, travel_bias_m, height_weight);
   const Eigen::Matrix3d position = p.topLeftCorner<3, 3>();
   if (!position.allFinite() || !(position.diagonal().minCoeff() > 0.0)) return kInf;
   return Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d>(position, Eigen::EigenvaluesOnly).eigenvalues().maxCoeff();
@@ -223,7 +264,7 @@ double CertifiedTrigger::RegionFromEnds(const TriggerInput& in, const SolveResul
     for (const double side : {-1.0, 1.0}) {
       const Eigen::Vector3d end = estimate.p_world_anchor + side * half_axis;
       const double variance = LargestVariance(p_world_tag, in.tag_id, tags, end, correlation_factor * scale_m * scale_m,
-                                              travel_bias_m);
+                                              travel_bias_m, estimate.height_information, estimate.height_weight);
       if (!(variance <= limit)) return std::sqrt(region_chi2_ * variance);  // the first end beyond D decides
       worst = std::max(worst, variance);
     }
@@ -231,11 +272,31 @@ double CertifiedTrigger::RegionFromEnds(const TriggerInput& in, const SolveResul
   return std::sqrt(region_chi2_ * worst);
 }
 
+double CertifiedTrigger::PriorGapSigma(const TriggerInput& in, const SolveResult& estimate, double noise_variance,
+                                       double travel_bias_m) const {
+  // The solve pulls the height from the ranges' own z_r towards the prior by 1 / (1 + w a), a the
+  // ranges' unit-weight z variance [(J^T J)^-1]_zz and w the prior's weight (rank-one update of the
+  // normal equations), so z - z_prior = (z_r - z_prior) / (1 + w a), and z_r - z_prior has the
+  // ranges' variance (noise, model error) plus the prior's.
+  const double prior_variance = 1.0 / estimate.height_information;
+  const Eigen::MatrixXd information = TagInformation(in.p_world_tag, {}, {0}, estimate.p_world_anchor);
+  Eigen::Matrix4d unit;
+  if (!internal::InvertNormalMatrix(information.topLeftCorner<4, 4>(), &unit)) return std::sqrt(prior_variance);
+  const double a = unit(2, 2);
+  const double model =
+      ModelErrorCovariance(in.p_world_tag, in.tag_id, estimate.p_world_anchor, covariance_, travel_bias_m)(2, 2);
+  const double pull = 1.0 + estimate.height_weight * a;
+  return std::sqrt(noise_variance * a + model + prior_variance) / pull;
+}
+
 void CertifiedTrigger::ShareRegion(const TriggerInput& in, const SolveResult& noise_only, double correlation_factor,
                                    double travel_bias_m, const Eigen::Vector3d& axis, double largest_variance) {
   // Along the region's longest axis v, each term's v^T P v. The noise part's tags' offsets are
   // what the joint information with them adds to the one-bias information's inverse.
   const double noise = axis.dot(noise_only.covariance.topLeftCorner<3, 3>() * axis);
+  const double correlated =
+      axis.dot(ScaleRangeNoise(noise_only.covariance, noise_only.height_information, correlation_factor)
+                   .topLeftCorner<3, 3>() * axis);
   double tags_part = 0.0;
   const std::vector<int> tags = EstimatedTags(in.tag_id, in.p_world_tag.size());
   if (tags.size() > 1) {
@@ -246,9 +307,9 @@ void CertifiedTrigger::ShareRegion(const TriggerInput& in, const SolveResult& no
       tags_part = std::clamp(noise - scale_m * scale_m * axis.dot(one_bias.topLeftCorner<3, 3>() * axis), 0.0, noise);
     }
   }
-  const ModelErrorTerms terms =
-      ModelErrorCovarianceTerms(in.p_world_tag, in.tag_id, noise_only.p_world_anchor, covariance_, travel_bias_m);
-  const double parts[] = {noise - tags_part, (correlation_factor - 1.0) * noise, axis.dot(terms.model.topLeftCorner<3, 3>() * axis),
+  const ModelErrorTerms terms = ModelErrorCovarianceTerms(in.p_world_tag, in.tag_id, noise_only.p_world_anchor,
+                                                          covariance_, travel_bias_m, noise_only.height_weight);
+  const double parts[] = {noise - tags_part, correlated - noise, axis.dot(terms.model.topLeftCorner<3, 3>() * axis),
                           axis.dot(terms.travel.topLeftCorner<3, 3>() * axis), axis.dot(terms.links.topLeftCorner<3, 3>() * axis),
                           correlation_factor * tags_part};
   const double total = std::max(parts[0] + parts[1] + parts[2] + parts[3] + parts[4] + parts[5], 1e-300);
@@ -329,6 +390,21 @@ bool CertifiedTrigger::Judge(const TriggerInput& in) {
   if (!(axes.eigenvalues().maxCoeff() <= limit)) return blocked("region", judgement_.region_m, d_m);
   const double from_ends_m = RegionFromEnds(fitted, estimate, axes, correlation_factor, travel_bias_m);
   if (!(from_ends_m <= d_m)) return blocked("region_ends", from_ends_m, d_m);
+  // A known height the estimate disagrees with beyond what the model lets the two differ by (or the
+  // prior's own interval) means an error the model does not hold: on a real field, the anchors whose ranges pulled z 3-8 sigma
+  // off the survey were the ones 0.8-1.1 m off. Wait until the data agree.
+  if (height_prior_) {
+    const double off_m = std::abs(estimate.p_world_anchor.z() - height_prior_->z_world_m);
+    const double scale_m =
+        ResidualScale(fitted.p_world_tag, fitted.range_m, noise_only.p_world_anchor, noise_only.bias_m);
+    // Never wider than the prior's own interval: an estimate outside it says the prior is wrong,
+    // and the certificate rests on it.
+    const double limit_m =
+        prior_quantile_ * std::min(height_prior_->sigma_m, PriorGapSigma(fitted, noise_only,
+                                                                         correlation_factor * scale_m * scale_m,
+                                                                         travel_bias_m));
+    if (!(off_m <= limit_m)) return blocked("height_prior", off_m, limit_m);
+  }
   const Verdict verdict = RuleOutAlternatives(fitted.p_world_tag, fitted.range_m, estimate, axes.eigenvectors());
   refusal_ = verdict == Verdict::kMirror ? std::optional(SolveStatus::kHeightUnobservable) : std::nullopt;
   if (verdict == Verdict::kMirror) return blocked("mirror", judgement_.evidence, judgement_.evidence_needed);

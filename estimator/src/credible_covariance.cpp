@@ -89,7 +89,8 @@ struct ProjectedTerms {
 };
 
 ProjectedTerms Project(std::span<const Eigen::Vector3d> p_world_tag, std::span<const int> tag_id,
-                       const Eigen::Vector3d& p_world_anchor, const CovarianceOptions& options, double travel_bias_m) {
+                       const Eigen::Vector3d& p_world_anchor, const CovarianceOptions& options, double travel_bias_m,
+                       double height_weight) {
   ProjectedTerms out;
   const int harmonics = options.model_error_m > 0.0 ? HarmonicCount(options.model_error_degree) : 0;
   const bool travel = options.travel_bias && travel_bias_m != 0.0;
@@ -118,6 +119,7 @@ ProjectedTerms Project(std::span<const Eigen::Vector3d> p_world_tag, std::span<c
     if (travel) jt_travel += row.j * RangeRateSign(p_world_tag, p_world_anchor, k);
     if (links) jt_links[static_cast<std::size_t>(std::find(tags.begin(), tags.end(), tag_id[k]) - tags.begin())] += row.j;
   }
+  a(2, 2) += height_weight;  // a height prior holds the height against the errors as it does against noise
   if (!internal::InvertNormalMatrix(a, &out.a_inverse)) return out;
   out.any = true;
   if (harmonics > 0) {  // equal variances: the RMS over the sphere is model_error_m
@@ -140,22 +142,40 @@ ProjectedTerms Project(std::span<const Eigen::Vector3d> p_world_tag, std::span<c
 
 Eigen::Matrix4d ModelErrorCovariance(std::span<const Eigen::Vector3d> p_world_tag, std::span<const int> tag_id,
                                      const Eigen::Vector3d& p_world_anchor, const CovarianceOptions& options,
-                                     double travel_bias_m) {
-  const ProjectedTerms t = Project(p_world_tag, tag_id, p_world_anchor, options, travel_bias_m);
+                                     double travel_bias_m, double height_weight) {
+  const ProjectedTerms t = Project(p_world_tag, tag_id, p_world_anchor, options, travel_bias_m, height_weight);
   if (!t.any) return Eigen::Matrix4d::Zero();
   return t.a_inverse * t.total * t.a_inverse;
 }
 
 ModelErrorTerms ModelErrorCovarianceTerms(std::span<const Eigen::Vector3d> p_world_tag, std::span<const int> tag_id,
                                           const Eigen::Vector3d& p_world_anchor, const CovarianceOptions& options,
-                                          double travel_bias_m) {
-  const ProjectedTerms t = Project(p_world_tag, tag_id, p_world_anchor, options, travel_bias_m);
+                                          double travel_bias_m, double height_weight) {
+  const ProjectedTerms t = Project(p_world_tag, tag_id, p_world_anchor, options, travel_bias_m, height_weight);
   ModelErrorTerms terms;
   if (!t.any) return terms;
   terms.model = t.a_inverse * t.model * t.a_inverse;
   terms.travel = t.a_inverse * t.travel * t.a_inverse;
   terms.links = t.a_inverse * t.links * t.a_inverse;
   return terms;
+}
+
+double PatternCovariation(std::span<const Eigen::Vector3d> p_world_tag, const Eigen::Vector3d& p_a, double bias_a_m,
+                          const Eigen::Vector3d& p_b, double bias_b_m, const CovarianceOptions& options) {
+  if (!(options.model_error_m > 0.0)) return 0.0;
+  const int harmonics = HarmonicCount(options.model_error_degree);
+  Eigen::Matrix<double, kMaxHarmonics, 1> projection = Eigen::Matrix<double, kMaxHarmonics, 1>::Zero();
+  double y[kMaxHarmonics];
+  for (const Eigen::Vector3d& p : p_world_tag) {
+    const Eigen::Vector3d diff = p - p_a;
+    const double distance_m = diff.norm();
+    if (!(distance_m > 0.0)) continue;
+    const double d = distance_m + bias_a_m - (p - p_b).norm() - bias_b_m;
+    Harmonics(diff / distance_m, options.model_error_degree, y);
+    for (int h = 0; h < harmonics; ++h) projection(h) += y[h] * d;
+  }
+  // Each harmonic's coefficient has variance model_error_m^2 / harmonics.
+  return options.model_error_m / std::sqrt(static_cast<double>(harmonics)) * projection.head(harmonics).norm();
 }
 
 double CorrelationFactor(std::span<const Eigen::Vector3d> p_world_tag, std::span<const double> range_m,
@@ -232,13 +252,28 @@ void MakeCredible(std::span<const Eigen::Vector3d> p_world_tag, std::span<const 
                   SolveResult* solve) {
   if (!Succeeded(solve->status) || !solve->covariance.allFinite()) return;
   if (options.correlated_noise) {
-    solve->covariance *= CorrelationFactor(p_world_tag, range_m, solve->p_world_anchor, solve->bias_m);
+    solve->covariance = ScaleRangeNoise(solve->covariance, solve->height_information,
+                                        CorrelationFactor(p_world_tag, range_m, solve->p_world_anchor, solve->bias_m));
   }
   const double travel_bias_m =
       options.travel_bias && travel_bias
           ? travel_bias(DifferenceScale(p_world_tag, range_m, tag_id, solve->p_world_anchor, solve->bias_m))
           : 0.0;
-  solve->covariance += ModelErrorCovariance(p_world_tag, tag_id, solve->p_world_anchor, options, travel_bias_m);
+  solve->covariance +=
+      ModelErrorCovariance(p_world_tag, tag_id, solve->p_world_anchor, options, travel_bias_m, solve->height_weight);
+}
+
+Eigen::Matrix4d ScaleRangeNoise(const Eigen::Matrix4d& covariance, double height_information, double factor) {
+  if (!(height_information > 0.0)) return factor * covariance;
+  // In information form: the ranges' part P^-1 - Lambda scaled by 1 / factor, the prior's kept.
+  Eigen::Matrix4d information;
+  if (!internal::InvertNormalMatrix(covariance, &information)) return factor * covariance;
+  information(2, 2) -= height_information;
+  information /= factor;
+  information(2, 2) += height_information;
+  Eigen::Matrix4d scaled;
+  if (!internal::InvertNormalMatrix(information, &scaled)) return factor * covariance;
+  return scaled;
 }
 
 }  // namespace anchorbench::estimator

@@ -80,14 +80,14 @@ Mirror MirrorOf(std::span<const Eigen::Vector3d> p_world_tag, std::span<const do
 
 double FitEvidence(std::span<const Eigen::Vector3d> p_world_tag, std::span<const double> range_m,
                    const Eigen::Vector3d& p_a, double bias_a_m, const Eigen::Vector3d& p_b, double bias_b_m,
-                   double trim_fraction) {
+                   double trim_fraction, double explained_squares) {
   const std::vector<double> a = Residuals(p_world_tag, range_m, p_a, bias_a_m);
   const std::vector<double> b = Residuals(p_world_tag, range_m, p_b, bias_b_m);
   std::vector<double> deviations(a.size());
   const double a_median = Median(a);
   for (std::size_t k = 0; k < a.size(); ++k) deviations[k] = std::abs(a[k] - a_median);
   const double sigma_m = std::max(kMadToSigma * Median(deviations), kMinSigmaM);
-  return (TrimmedSquares(b, trim_fraction) - TrimmedSquares(a, trim_fraction)) / (sigma_m * sigma_m);
+  return (TrimmedSquares(b, trim_fraction) - TrimmedSquares(a, trim_fraction) - explained_squares) / (sigma_m * sigma_m);
 }
 
 double Separation(std::span<const Eigen::Vector3d> p_world_tag, const Eigen::Vector3d& p_a, double bias_a_m,

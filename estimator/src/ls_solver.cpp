@@ -220,6 +220,7 @@ SolveResult SolveDoubleDifferenceLs(std::span<const Eigen::Vector3d> p_world_tag
   result.bias_m = x(3);
   result.covariance =
       PropagatedCovariance(rows, p_world_tag, range_m, normal_inverse, x, prior_weight, height_prior);
+  if (height_prior) result.height_information = 1.0 / (height_prior->sigma_m * height_prior->sigma_m);
   result.status = SolveStatus::kConverged;
   result.iterations = 1;
   return result;

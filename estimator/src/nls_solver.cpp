@@ -34,6 +34,7 @@ class PriorTerm {
   PriorTerm(const std::optional<HeightPrior>& prior, double kernel_scale_m) : prior_(prior) {
     if (prior_) weight_ = kernel_scale_m * kernel_scale_m / (prior_->sigma_m * prior_->sigma_m);
   }
+  double weight() const { return weight_; }  // beside one unit-weight range
   double Cost(const Vector4& theta) const { return prior_ ? 0.5 * prior_->Chi2(theta(2)) : 0.0; }
   void AddTo(const Vector4& theta, Eigen::Matrix4d* information, Vector4* gradient) const {
     if (!prior_) return;
@@ -72,6 +73,7 @@ SolveResult Summary(const Vector4& theta, double alpha, const internal::PassResu
     return result;
   }
   result.covariance = prior ? information_inverse : Eigen::Matrix4d(s2 * information_inverse);
+  if (prior) result.height_information = 1.0 / (prior->sigma_m * prior->sigma_m);
   return result;
 }
 
@@ -260,6 +262,7 @@ SolveResult NlsSolver::Solve(std::span<const Eigen::Vector3d> p_world_tag, std::
   equations.cost = stage.cost;
   equations.weighted_squares = stage.weighted_squares;
   SolveResult summary = Summary(stage.theta, stage.alpha, equations, n, stage.status, stage.iterations, height_prior);
+  if (height_prior) summary.height_weight = PriorTerm(height_prior, options_.kernel_scale_m).weight();
   constexpr double kL2 = 2.0 - 1e-9;  // at alpha = 2 the M-estimate is least squares: s^2 (J^T J)^-1 stands
   if (Succeeded(summary.status) && stage.alpha < kL2 && !height_prior) {
     if (const std::optional<Eigen::Matrix4d> robust =

@@ -130,7 +130,7 @@ def test_events_and_waits_as_dataframes(log):
     waiting = front_end.why_not_frame()  # this short log leaves most anchors waiting
     assert {"anchor_id", "trigger", "blocked_by", "value", "limit"} <= set(waiting.columns)
     assert set(waiting["trigger"]) <= {"pdop_closest_point", "certified"} and len(waiting)
-    assert set(waiting["blocked_by"]) <= {"pdop", "region", "region_ends", "alternative", "mirror", "stability",
+    assert set(waiting["blocked_by"]) <= {"pdop", "region", "region_ends", "height_prior", "alternative", "mirror", "stability",
                                           "doubling", "samples", "retry", "solve"}
     events = front_end.take_events_frame()
     assert len(events) and set(events["trigger"]) <= {"pdop_closest_point", "certified"}

@@ -63,6 +63,9 @@ double ChiSquare3Quantile(double confidence);
 //    the estimate's residual scale (floored at the model error): an early estimate can look well
 //    conditioned from where it stands, and the region's ends are where a trade-off of range and
 //    bias along a narrow cone of directions, or a line of tags, shows.
+// With a known height (a height prior), the estimate's height must also agree with it within the
+// two-sided `confidence` interval the model allows between them (test `height_prior`,
+// PriorGapSigma): a prior-data conflict is an error the model does not hold.
 // A line of tags or too narrow a cone leaves P singular or large: the trigger waits. Cost per
 // evaluation: one solve, one mirror test and 7 O(N) passes; on a geometric cadence
 // (evaluate_growth > 1) a whole run costs O(N), and a refusal that repeats (the mirror of a flat
@@ -104,16 +107,21 @@ class CertifiedTrigger : public InitTrigger {
   double RegionFromEnds(const TriggerInput& in, const SolveResult& estimate,
                         const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d>& axes, double correlation_factor,
                         double travel_bias_m) const;
+  // The standard deviation the model allows between the estimate's height and its prior (the test
+  // `height_prior`), with the ranges' noise variance (correlation included) and travel bias.
+  double PriorGapSigma(const TriggerInput& in, const SolveResult& estimate, double noise_variance,
+                       double travel_bias_m) const;
   // The judgement's account of the region: each term's share of the largest variance.
   void ShareRegion(const TriggerInput& in, const SolveResult& noise_only, double correlation_factor,
                    double travel_bias_m, const Eigen::Vector3d& axis, double largest_variance);
   // The tags whose offsets are among the unknowns ({0}: one bias for all).
   std::vector<int> EstimatedTags(std::span<const int> tag_id, std::size_t samples) const;
   // The largest variance of the covariance seen from `point`, with `tags` as EstimatedTags gave
-  // them and the estimate's travel bias; +infinity where it is singular.
+  // them, the estimate's travel bias and its height prior (information and weight,
+  // credible_covariance.hpp); +infinity where it is singular.
   double LargestVariance(std::span<const Eigen::Vector3d> p_world_tag, std::span<const int> tag_id,
                          const std::vector<int>& tags, const Eigen::Vector3d& point, double noise_variance,
-                         double travel_bias_m) const;
+                         double travel_bias_m, double height_information, double height_weight) const;
 
   std::shared_ptr<const Solver> solver_;  // the anchor's
   NlsSolver refine_;                      // L2, for the mirror's basin
@@ -125,6 +133,8 @@ class CertifiedTrigger : public InitTrigger {
   TravelBias travel_bias_;
   SolveCadence cadence_;
   double region_chi2_;
+  double prior_quantile_;    // the two-sided normal quantile at the confidence: the height prior's test
+  double pattern_quantile_;  // the one-sided one: the model error's share of an alternative's evidence
   std::optional<SolveStatus> refusal_;
   Judgement judgement_;
   std::size_t evaluations_ = 0;

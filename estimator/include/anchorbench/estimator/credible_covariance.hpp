@@ -54,10 +54,12 @@ int HarmonicCount(int degree);
 
 // The added part A^-1 (J^T E)(J^T E)^T A^-1 for an estimate (p_A, gamma), 4x4 over (p_A, gamma);
 // the travel term needs the samples in time order, the link term their tags (empty: one tag).
-// Zero where A is singular or nothing is added.
+// With a height prior, A = J^T J + height_weight e_z e_z^T (SolveResult::height_weight): the
+// prior holds the height against a range error as the solve weighs it against the ranges. Zero
+// where A is singular or nothing is added.
 Eigen::Matrix4d ModelErrorCovariance(std::span<const Eigen::Vector3d> p_world_tag, std::span<const int> tag_id,
                                      const Eigen::Vector3d& p_world_anchor, const CovarianceOptions& options,
-                                     double travel_bias_m);
+                                     double travel_bias_m, double height_weight = 0.0);
 
 // The same split by kind (they sum to ModelErrorCovariance up to rounding): for the certificate's
 // account of what its region is made of.
@@ -68,7 +70,19 @@ struct ModelErrorTerms {
 };
 ModelErrorTerms ModelErrorCovarianceTerms(std::span<const Eigen::Vector3d> p_world_tag, std::span<const int> tag_id,
                                           const Eigen::Vector3d& p_world_anchor, const CovarianceOptions& options,
-                                          double travel_bias_m);
+                                          double travel_bias_m, double height_weight = 0.0);
+
+// A covariance with the ranges' noise scaled by `factor` (the correlation factor f): f P without
+// a prior; with one, (P^-1 - Lambda) / f + Lambda inverted, so the prior's information stays as it
+// is (a correlated range noise does not make a surveyed height less certain).
+Eigen::Matrix4d ScaleRangeNoise(const Eigen::Matrix4d& covariance, double height_information, double factor);
+
+// How much the model error could move a comparison of two fits: the standard deviation of
+// sum_k e_k d_k, with d_k the difference of the ranges fits a and b predict and e the model error's
+// range errors as seen from a (the harmonics above, RMS model_error_m), in m^2. Two fits' squared
+// residuals differ by 2 sum_k e_k d_k when e is added to the ranges.
+double PatternCovariation(std::span<const Eigen::Vector3d> p_world_tag, const Eigen::Vector3d& p_a, double bias_a_m,
+                          const Eigen::Vector3d& p_b, double bias_b_m, const CovarianceOptions& options);
 
 // f above, from the range residuals of an estimate in time order.
 double CorrelationFactor(std::span<const Eigen::Vector3d> p_world_tag, std::span<const double> range_m,

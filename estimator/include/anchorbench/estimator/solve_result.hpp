@@ -43,6 +43,13 @@ struct SolveResult {
   // (ScaledSolver); 0 and sigma 0 otherwise.
   double range_scale = 0.0;
   double range_scale_sigma = 0.0;
+  // A height prior's information 1 / sigma_z^2 (m^-2) in the covariance, 0 without one: what the
+  // covariance knows beside the ranges, for whoever rescales its range part (credible_covariance.hpp).
+  double height_information = 0.0;
+  // The prior's weight beside one unit-weight range in the refinement (the NLS: c^2 / sigma_z^2),
+  // which decides how far a range error moves the height; 0 without a prior or where the solver
+  // weighs it otherwise (the LS alone: its model error then ignores the prior, the cautious side).
+  double height_weight = 0.0;
 };
 
 }  // namespace anchorbench::estimator
