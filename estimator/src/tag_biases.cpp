@@ -17,6 +17,10 @@ bool TagBiasOptions::IsValid(std::string* why) const {
   return true;
 }
 
+namespace {
+constexpr double kSettledOffsetM = 1e-4;
+}  // namespace
+
 SolveResult SolveWithTagBiases(const Solver& solver, std::span<const Eigen::Vector3d> p_world_tag,
                                std::span<const double> range_m, std::span<const int> tag_id,
                                const TagBiasOptions& options, std::vector<double>* offsets_m,
@@ -48,7 +52,14 @@ SolveResult SolveWithTagBiases(const Solver& solver, std::span<const Eigen::Vect
       sum[index[k]] += range_m[k] - (p_world_tag[k] - result.p_world_anchor).norm() - result.bias_m;
       count[index[k]] += 1.0;
     }
-    for (std::size_t t = 1; t < tags.size(); ++t) offset[t] = sum[t] / count[t] - sum[0] / count[0] + offset[0];
+    double change_m = 0.0;
+    for (std::size_t t = 1; t < tags.size(); ++t) {
+      const double updated = sum[t] / count[t] - sum[0] / count[0] + offset[0];
+      change_m = std::max(change_m, std::abs(updated - offset[t]));
+      offset[t] = updated;
+    }
+    // Settled (far below any range noise): one more solve would move nothing that matters.
+    if (iteration > 0 && change_m < kSettledOffsetM) break;
   }
   // The covariance of (p_A, gamma) with the offsets estimated beside them: the (p_A, gamma) block of
   // s^2 H^-1, H the information of (p_A, gamma, delta_2..delta_T) (rows [-u_k, 1, e_tag(k)]). Where
@@ -83,21 +94,31 @@ SolveResult SolveWithTagBiases(const Solver& solver, std::span<const Eigen::Vect
 
 Eigen::MatrixXd TagInformation(std::span<const Eigen::Vector3d> p_world_tag, std::span<const int> tag_id,
                                const std::vector<int>& tags, const Eigen::Vector3d& p_world_anchor) {
-  const Eigen::Index unknowns = 3 + static_cast<Eigen::Index>(tags.size());
-  Eigen::MatrixXd information = Eigen::MatrixXd::Zero(unknowns, unknowns);
-  Eigen::VectorXd row(unknowns);
+  // Rows [-u_k, 1, e_tag(k)]: the (p_A, gamma) block, each extra tag's column (the sum of its rows'
+  // first four entries) and its count; summed in fixed sizes (no per-sample dynamic products).
+  const std::size_t extra = tags.empty() ? 0 : tags.size() - 1;
+  Eigen::Matrix4d core = Eigen::Matrix4d::Zero();
+  std::vector<Eigen::Vector4d> columns(extra, Eigen::Vector4d::Zero());
+  Eigen::Vector4d row;
   for (std::size_t k = 0; k < p_world_tag.size(); ++k) {
     const Eigen::Vector3d diff = p_world_tag[k] - p_world_anchor;
     const double distance_m = diff.norm();
     if (!(distance_m > 0.0)) continue;
-    row.setZero();
-    row.head<3>() = -diff / distance_m;
-    row(3) = 1.0;
-    if (k < tag_id.size()) {  // none: one tag, no offsets
-      const auto t = static_cast<Eigen::Index>(std::find(tags.begin(), tags.end(), tag_id[k]) - tags.begin());
-      if (t > 0) row(3 + t) = 1.0;
+    row << -diff / distance_m, 1.0;
+    core.noalias() += row * row.transpose();
+    if (extra > 0 && k < tag_id.size()) {  // none: one tag, no offsets
+      const auto t = static_cast<std::size_t>(std::find(tags.begin(), tags.end(), tag_id[k]) - tags.begin());
+      if (t > 0 && t <= extra) columns[t - 1] += row;
     }
-    information.noalias() += row * row.transpose();
+  }
+  const Eigen::Index unknowns = 4 + static_cast<Eigen::Index>(extra);
+  Eigen::MatrixXd information = Eigen::MatrixXd::Zero(unknowns, unknowns);
+  information.topLeftCorner<4, 4>() = core;
+  for (std::size_t t = 0; t < extra; ++t) {
+    const Eigen::Index c = 4 + static_cast<Eigen::Index>(t);
+    information.block<4, 1>(0, c) = columns[t];
+    information.block<1, 4>(c, 0) = columns[t].transpose();
+    information(c, c) = columns[t](3);  // the tag's count: its rows' bias entries
   }
   return information;
 }
