@@ -792,7 +792,9 @@ def performance_bullets():
     solvers = {(solver, n): r for (solver, n, outliers), r in solver_rows().items() if outliers == 5}
 
     def x(solver, field="x_eigen_dense_ls"):
-        return " / ".join(f"{float(solvers[(solver, n)][field]):.3g}" for n in (600, 10000)) + "x"
+        def three(v):  # three significant digits, never in exponent form
+            return f"{v:.0f}" if v >= 100 else f"{v:.3g}"
+        return " / ".join(three(float(solvers[(solver, n)][field])) for n in (600, 10000)) + "x"
 
     def ms(solver, n):
         return f"{float(solvers[(solver, n)]['time_ms']):.2g} ms"
