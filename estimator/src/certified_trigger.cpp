@@ -390,9 +390,10 @@ bool CertifiedTrigger::Judge(const TriggerInput& in) {
   if (!(axes.eigenvalues().maxCoeff() <= limit)) return blocked("region", judgement_.region_m, d_m);
   const double from_ends_m = RegionFromEnds(fitted, estimate, axes, correlation_factor, travel_bias_m);
   if (!(from_ends_m <= d_m)) return blocked("region_ends", from_ends_m, d_m);
-  // A known height the estimate disagrees with beyond what the model lets the two differ by (or the
-  // prior's own interval) means an error the model does not hold: on a real field, the anchors whose ranges pulled z 3-8 sigma
-  // off the survey were the ones 0.8-1.1 m off. Wait until the data agree.
+  // A known height the estimate disagrees with beyond what the model lets the two differ by (or
+  // the prior's own interval) means an error the model does not hold: on a real field, the anchors
+  // whose ranges pulled z 3-8 sigma off the survey were the ones 0.8-1.1 m off. Wait until the
+  // data agree.
   if (height_prior_) {
     const double off_m = std::abs(estimate.p_world_anchor.z() - height_prior_->z_world_m);
     const double scale_m =
