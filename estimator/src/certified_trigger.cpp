@@ -158,8 +158,7 @@ std::vector<CertifiedTrigger::Alternative> CertifiedTrigger::Alternatives(std::s
 CertifiedTrigger::Verdict CertifiedTrigger::RuleOutAlternatives(std::span<const Eigen::Vector3d> p_world_tag,
                                                                 std::span<const double> range_m,
                                                                 const SolveResult& estimate,
-                                                                const Eigen::Matrix3d& axes) {
-  const double scale_m = ResidualScale(p_world_tag, range_m, estimate.p_world_anchor, estimate.bias_m);
+                                                                const Eigen::Matrix3d& axes, double scale_m) {
   ++tests_;
   const double threshold = mirror_.min_evidence + 2.0 * std::log(static_cast<double>(tests_));
   judgement_.evidence_needed = threshold;
@@ -248,14 +247,12 @@ double CertifiedTrigger::LargestVariance(std::span<const Eigen::Vector3d> p_worl
 
 double CertifiedTrigger::RegionFromEnds(const TriggerInput& in, const SolveResult& estimate,
                                       const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d>& axes,
-                                      double correlation_factor, double travel_bias_m) const {
+                                      const NoiseStats& noise) const {
   const std::span<const Eigen::Vector3d> p_world_tag = in.p_world_tag;
-  const std::span<const double> range_m = in.range_m;
   const double limit = options_.accuracy_m * options_.accuracy_m / region_chi2_;  // of the largest variance
   // From the ends of the region's axes, with the estimate's noise (floored at the model error)
   // scaled for its correlation.
-  const double scale_m = std::max(ResidualScale(p_world_tag, range_m, estimate.p_world_anchor, estimate.bias_m),
-                                  covariance_.model_error_m);
+  const double scale_m = std::max(noise.residual_scale_m, covariance_.model_error_m);
   const std::vector<int> tags = EstimatedTags(in.tag_id, p_world_tag.size());
   double worst = 0.0;
   for (int i = 0; i < 3; ++i) {
@@ -263,8 +260,8 @@ double CertifiedTrigger::RegionFromEnds(const TriggerInput& in, const SolveResul
         std::sqrt(region_chi2_ * std::max(axes.eigenvalues()(i), 0.0)) * axes.eigenvectors().col(i);
     for (const double side : {-1.0, 1.0}) {
       const Eigen::Vector3d end = estimate.p_world_anchor + side * half_axis;
-      const double variance = LargestVariance(p_world_tag, in.tag_id, tags, end, correlation_factor * scale_m * scale_m,
-                                              travel_bias_m, estimate.height_information, estimate.height_weight);
+      const double variance = LargestVariance(p_world_tag, in.tag_id, tags, end, noise.correlation_factor * scale_m * scale_m,
+                                              noise.travel_bias_m, estimate.height_information, estimate.height_weight);
       if (!(variance <= limit)) return std::sqrt(region_chi2_ * variance);  // the first end beyond D decides
       worst = std::max(worst, variance);
     }
@@ -272,8 +269,8 @@ double CertifiedTrigger::RegionFromEnds(const TriggerInput& in, const SolveResul
   return std::sqrt(region_chi2_ * worst);
 }
 
-double CertifiedTrigger::PriorGapSigma(const TriggerInput& in, const SolveResult& estimate, double noise_variance,
-                                       double travel_bias_m) const {
+double CertifiedTrigger::PriorGapSigma(const TriggerInput& in, const SolveResult& estimate,
+                                       const NoiseStats& noise) const {
   // The solve pulls the height from the ranges' own z_r towards the prior by 1 / (1 + w a), a the
   // ranges' unit-weight z variance [(J^T J)^-1]_zz and w the prior's weight (rank-one update of the
   // normal equations), so z - z_prior = (z_r - z_prior) / (1 + w a), and z_r - z_prior has the
@@ -284,13 +281,15 @@ double CertifiedTrigger::PriorGapSigma(const TriggerInput& in, const SolveResult
   if (!internal::InvertNormalMatrix(information.topLeftCorner<4, 4>(), &unit)) return std::sqrt(prior_variance);
   const double a = unit(2, 2);
   const double model =
-      ModelErrorCovariance(in.p_world_tag, in.tag_id, estimate.p_world_anchor, covariance_, travel_bias_m)(2, 2);
+      ModelErrorCovariance(in.p_world_tag, in.tag_id, estimate.p_world_anchor, covariance_, noise.travel_bias_m)(2, 2);
   const double pull = 1.0 + estimate.height_weight * a;
+  const double noise_variance = noise.correlation_factor * noise.residual_scale_m * noise.residual_scale_m;
   return std::sqrt(noise_variance * a + model + prior_variance) / pull;
 }
 
-void CertifiedTrigger::ShareRegion(const TriggerInput& in, const SolveResult& noise_only, double correlation_factor,
-                                   double travel_bias_m, const Eigen::Vector3d& axis, double largest_variance) {
+void CertifiedTrigger::ShareRegion(const TriggerInput& in, const SolveResult& noise_only, const NoiseStats& stats,
+                                   const Eigen::Vector3d& axis, double largest_variance) {
+  const double correlation_factor = stats.correlation_factor;
   // Along the region's longest axis v, each term's v^T P v. The noise part's tags' offsets are
   // what the joint information with them adds to the one-bias information's inverse.
   const double noise = axis.dot(noise_only.covariance.topLeftCorner<3, 3>() * axis);
@@ -300,7 +299,7 @@ void CertifiedTrigger::ShareRegion(const TriggerInput& in, const SolveResult& no
   double tags_part = 0.0;
   const std::vector<int> tags = EstimatedTags(in.tag_id, in.p_world_tag.size());
   if (tags.size() > 1) {
-    const double scale_m = ResidualScale(in.p_world_tag, in.range_m, noise_only.p_world_anchor, noise_only.bias_m);
+    const double scale_m = stats.residual_scale_m;
     Eigen::Matrix4d one_bias;
     const Eigen::MatrixXd information = TagInformation(in.p_world_tag, {}, {0}, noise_only.p_world_anchor);
     if (internal::InvertNormalMatrix(information.topLeftCorner<4, 4>(), &one_bias)) {
@@ -308,7 +307,7 @@ void CertifiedTrigger::ShareRegion(const TriggerInput& in, const SolveResult& no
     }
   }
   const ModelErrorTerms terms = ModelErrorCovarianceTerms(in.p_world_tag, in.tag_id, noise_only.p_world_anchor,
-                                                          covariance_, travel_bias_m, noise_only.height_weight);
+                                                          covariance_, stats.travel_bias_m, noise_only.height_weight);
   const double parts[] = {noise - tags_part, correlated - noise, axis.dot(terms.model.topLeftCorner<3, 3>() * axis),
                           axis.dot(terms.travel.topLeftCorner<3, 3>() * axis), axis.dot(terms.links.topLeftCorner<3, 3>() * axis),
                           correlation_factor * tags_part};
@@ -376,19 +375,20 @@ bool CertifiedTrigger::Judge(const TriggerInput& in) {
   const Eigen::Matrix3d covariance = estimate.covariance.topLeftCorner<3, 3>();
   if (!covariance.allFinite()) return blocked("region", kInf, d_m);
   const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> axes(covariance);
-  const double correlation_factor =
+  // The residuals' statistics at the estimate, once for every test below (MakeCredible used them
+  // for its covariance only).
+  const NoiseStats noise{
+      ResidualScale(fitted.p_world_tag, fitted.range_m, noise_only.p_world_anchor, noise_only.bias_m),
       covariance_.correlated_noise
           ? CorrelationFactor(fitted.p_world_tag, fitted.range_m, noise_only.p_world_anchor, noise_only.bias_m)
-          : 1.0;
-  // The consistency check's travel bias at the estimate (MakeCredible moved its covariance only).
-  const double travel_bias_m =
+          : 1.0,
       travel_bias_ ? travel_bias_(DifferenceScale(fitted.p_world_tag, fitted.range_m, fitted.tag_id,
                                                   noise_only.p_world_anchor, noise_only.bias_m))
-                   : 0.0;
-  ShareRegion(fitted, noise_only, correlation_factor, travel_bias_m, axes.eigenvectors().col(2), axes.eigenvalues()(2));
+                   : 0.0};
+  ShareRegion(fitted, noise_only, noise, axes.eigenvectors().col(2), axes.eigenvalues()(2));
   const double limit = d_m * d_m / region_chi2_;  // of the largest variance
   if (!(axes.eigenvalues().maxCoeff() <= limit)) return blocked("region", judgement_.region_m, d_m);
-  const double from_ends_m = RegionFromEnds(fitted, estimate, axes, correlation_factor, travel_bias_m);
+  const double from_ends_m = RegionFromEnds(fitted, estimate, axes, noise);
   if (!(from_ends_m <= d_m)) return blocked("region_ends", from_ends_m, d_m);
   // A known height the estimate disagrees with beyond what the model lets the two differ by (or
   // the prior's own interval) means an error the model does not hold: on a real field, the anchors
@@ -396,17 +396,14 @@ bool CertifiedTrigger::Judge(const TriggerInput& in) {
   // data agree.
   if (height_prior_) {
     const double off_m = std::abs(estimate.p_world_anchor.z() - height_prior_->z_world_m);
-    const double scale_m =
-        ResidualScale(fitted.p_world_tag, fitted.range_m, noise_only.p_world_anchor, noise_only.bias_m);
     // Never wider than the prior's own interval: an estimate outside it says the prior is wrong,
     // and the certificate rests on it.
     const double limit_m =
-        prior_quantile_ * std::min(height_prior_->sigma_m, PriorGapSigma(fitted, noise_only,
-                                                                         correlation_factor * scale_m * scale_m,
-                                                                         travel_bias_m));
+        prior_quantile_ * std::min(height_prior_->sigma_m, PriorGapSigma(fitted, noise_only, noise));
     if (!(off_m <= limit_m)) return blocked("height_prior", off_m, limit_m);
   }
-  const Verdict verdict = RuleOutAlternatives(fitted.p_world_tag, fitted.range_m, estimate, axes.eigenvectors());
+  const Verdict verdict =
+      RuleOutAlternatives(fitted.p_world_tag, fitted.range_m, estimate, axes.eigenvectors(), noise.residual_scale_m);
   refusal_ = verdict == Verdict::kMirror ? std::optional(SolveStatus::kHeightUnobservable) : std::nullopt;
   if (verdict == Verdict::kMirror) return blocked("mirror", judgement_.evidence, judgement_.evidence_needed);
   if (verdict == Verdict::kOtherMinimum) return blocked("alternative", judgement_.evidence, judgement_.evidence_needed);

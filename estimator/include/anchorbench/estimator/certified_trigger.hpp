@@ -91,6 +91,13 @@ class CertifiedTrigger : public InitTrigger {
     bool mirror;
   };
   enum class Verdict { kRuledOut, kMirror, kOtherMinimum };
+  // The estimate's residuals, read once per evaluation: their RMS, the correlation factor and the
+  // consistency check's travel bias (credible_covariance.hpp).
+  struct NoiseStats {
+    double residual_scale_m;
+    double correlation_factor;
+    double travel_bias_m;
+  };
   // The four tests on one evaluation; Evaluate adds the cadence's back-off.
   bool Judge(const TriggerInput& in);
   // Where other minima of the fit may lie: the mirror, and 3 D along the covariance's axes and
@@ -101,19 +108,17 @@ class CertifiedTrigger : public InitTrigger {
   // estimate by the evidence threshold, and predict ranges that differ enough to tell. The weakest
   // alternative's evidence and the threshold go to the judgement.
   Verdict RuleOutAlternatives(std::span<const Eigen::Vector3d> p_world_tag, std::span<const double> range_m,
-                              const SolveResult& estimate, const Eigen::Matrix3d& axes);
+                              const SolveResult& estimate, const Eigen::Matrix3d& axes, double scale_m);
   // 3.: the largest radius of the region seen from the ends of its axes (+inf where singular), with
-  // the estimate's correlation factor and travel bias (Judge computes each once).
+  // the estimate's noise statistics (Judge computes them once).
   double RegionFromEnds(const TriggerInput& in, const SolveResult& estimate,
-                        const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d>& axes, double correlation_factor,
-                        double travel_bias_m) const;
+                        const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d>& axes, const NoiseStats& noise) const;
   // The standard deviation the model allows between the estimate's height and its prior (the test
-  // `height_prior`), with the ranges' noise variance (correlation included) and travel bias.
-  double PriorGapSigma(const TriggerInput& in, const SolveResult& estimate, double noise_variance,
-                       double travel_bias_m) const;
+  // `height_prior`).
+  double PriorGapSigma(const TriggerInput& in, const SolveResult& estimate, const NoiseStats& noise) const;
   // The judgement's account of the region: each term's share of the largest variance.
-  void ShareRegion(const TriggerInput& in, const SolveResult& noise_only, double correlation_factor,
-                   double travel_bias_m, const Eigen::Vector3d& axis, double largest_variance);
+  void ShareRegion(const TriggerInput& in, const SolveResult& noise_only, const NoiseStats& noise,
+                   const Eigen::Vector3d& axis, double largest_variance);
   // The tags whose offsets are among the unknowns ({0}: one bias for all).
   std::vector<int> EstimatedTags(std::span<const int> tag_id, std::size_t samples) const;
   // The largest variance of the covariance seen from `point`, with `tags` as EstimatedTags gave
