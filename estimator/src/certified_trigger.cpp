@@ -323,15 +323,24 @@ void CertifiedTrigger::ShareRegion(const TriggerInput& in, const SolveResult& no
 
 bool CertifiedTrigger::Evaluate(const TriggerInput& in) {
   const bool certified = Judge(in);
-  // A structural refusal (a flat path's mirror, a line's failed solve or unbounded region) that
-  // keeps coming back will not move with a few more samples: from the kStructuralRepeats-th on, ask
-  // later each time (SolveCadence::BackOff), until an estimate gets past the mirror. A finite
-  // region shrinks with data: it neither counts nor resets.
+  // A refusal that will not move with a few more samples (a flat path's mirror, a line's failed
+  // solve or unbounded region, a region around an estimate the solve left short of its minimum:
+  // the same valley crawled again) is structural: from the kStructuralRepeats-th in a row on, ask
+  // later each time (SolveCadence::BackOff). Progress restores the cadence: an estimate past the
+  // region and the mirror, or, before any mirror, a converged estimate's region smaller than any
+  // before. Any other finite region neither counts nor restores (on a flat path it wanders).
   const std::string_view test = judgement_.blocked_by;
-  if (test == "solve" || test == "mirror" || (test == "region" && !std::isfinite(judgement_.value))) {
+  const bool region = test == "region" || test == "region_ends";
+  const bool structural =
+      test == "solve" || test == "mirror" || (region && (!std::isfinite(judgement_.value) || !converged_));
+  const bool smaller = region && !structural && judgement_.value < smallest_region_m_;
+  if (smaller) smallest_region_m_ = judgement_.value;
+  if (test == "mirror") mirrored_ = true;
+  if (structural) {
     if (++structural_refusals_ >= kStructuralRepeats) cadence_.BackOff();
-  } else if (test != "region" && test != "region_ends") {
+  } else if (!region || (smaller && !mirrored_)) {
     structural_refusals_ = 0;
+    mirrored_ = false;
     cadence_.Resume();
   }
   return certified;
@@ -353,6 +362,7 @@ bool CertifiedTrigger::Judge(const TriggerInput& in) {
   TriggerInput fitted = in;
   SolveResult estimate =
       SolveWithTagBiases(*solver_, in.p_world_tag, in.range_m, in.tag_id, tag_biases_, nullptr, &corrected_m_);
+  converged_ = estimate.status == SolveStatus::kConverged;
   if (!Succeeded(estimate.status)) return blocked("solve", Judgement::kNone, Judgement::kNone);
   fitted.range_m = corrected_m_;
   const SolveResult noise_only = estimate;

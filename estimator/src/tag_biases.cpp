@@ -43,8 +43,12 @@ SolveResult SolveWithTagBiases(const Solver& solver, std::span<const Eigen::Vect
   SolveResult result;
   for (int iteration = 0; iteration < options.iterations; ++iteration) {
     for (std::size_t k = 0; k < range_m.size(); ++k) corrected[k] = range_m[k] - offset[index[k]];
-    result = solver.Solve(p_world_tag, corrected);
+    // After the first solve the ranges change by the offsets' update only: start from its estimate.
+    result = iteration == 0 ? solver.Solve(p_world_tag, corrected) : solver.SolveNear(p_world_tag, corrected, result);
     if (!Succeeded(result.status)) return result;
+    // An estimate short of its minimum (the iteration budget spent: a flat path's height valley) has
+    // residuals that say nothing about the offsets, and another solve would crawl the same valley.
+    if (result.status != SolveStatus::kConverged) break;
     // Each tag's mean residual at the estimate, against the first tag's (its offset stays 0).
     std::fill(sum.begin(), sum.end(), 0.0);
     std::fill(count.begin(), count.end(), 0.0);

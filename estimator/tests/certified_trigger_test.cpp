@@ -50,8 +50,9 @@ Eigen::Vector3d Line(double t) {  // a straight pass by the anchor
   return Eigen::Vector3d(-20.0 + 0.5 * t, 1.0, 1.5);
 }
 
-AnchorInitializer Certified(const CertificateOptions& certificate = {}, const AnchorSolverOptions& solver_options = {}) {
-  const auto solver = std::make_shared<AnchorSolver>(solver_options);
+AnchorInitializer Certified(const CertificateOptions& certificate = {}, const AnchorSolverOptions& solver_options = {},
+                            std::shared_ptr<const Solver> solver = nullptr) {
+  if (!solver) solver = std::make_shared<AnchorSolver>(solver_options);
   InitializerOptions initializer;
   initializer.height_check.height_prior = solver_options.height_prior;  // as the config wires it
   return AnchorInitializer(7, initializer, std::make_unique<ConsistencyFilter>(),
@@ -168,6 +169,53 @@ TEST(CertifiedTrigger, SaysWhichTestHoldsTheAnchorBack) {
   AnchorInitializer fired = Certified();
   ASSERT_TRUE(FeedUntilInit(fired, good));
   EXPECT_FALSE(fired.why_not());  // nothing holds an initialized anchor back
+}
+
+// A solver that answers the true anchor with the given status and a covariance of sigma_m per axis
+// (counting its calls).
+class FixedAnswer : public Solver {
+ public:
+  FixedAnswer(SolveStatus status, double sigma_m) : status_(status), sigma_m_(sigma_m) {}
+  SolveResult Solve(std::span<const Eigen::Vector3d>, std::span<const double>) const override {
+    ++calls;
+    SolveResult result;
+    result.p_world_anchor = kAnchor;
+    result.bias_m = 0.1;
+    result.covariance = sigma_m_ * sigma_m_ * Eigen::Matrix4d::Identity();
+    result.status = status_;
+    return result;
+  }
+  SolveResult SolveNear(std::span<const Eigen::Vector3d> p, std::span<const double> d,
+                        const SolveResult&) const override {
+    ++near_calls;
+    --calls;
+    return Solve(p, d);
+  }
+  mutable int calls = 0;       // fresh solves
+  mutable int near_calls = 0;  // solves from a previous estimate
+
+ private:
+  SolveStatus status_;
+  double sigma_m_;
+};
+
+// A region too large around an estimate the solver left short of its minimum (a flat path's height
+// valley, crawled until the iteration budget is spent) is a refusal that repeats: the cadence
+// backs off. Around a converged estimate the same region shrinks with data: the cadence stays.
+TEST(CertifiedTrigger, BacksOffARegionAroundAnUnconvergedEstimate) {
+  const std::vector<RangeSample> samples = Samples(Wandering, 120.0, 0.05, 1);
+  auto solves = [&samples](SolveStatus status) {
+    const auto solver = std::make_shared<FixedAnswer>(status, 10.0);
+    AnchorInitializer initializer = Certified({}, {}, solver);
+    EXPECT_FALSE(FeedUntilInit(initializer, samples));
+    EXPECT_EQ(initializer.why_not()->blocked_by, "region");
+    return solver->calls;
+  };
+  // Steps of 1.1x from 10 samples to all (fewer in whole samples at the start).
+  const double steps_at_1_1 = std::log(static_cast<double>(samples.size()) / 10.0) / std::log(1.1);
+  const int converged = solves(SolveStatus::kConverged);
+  EXPECT_GT(converged, 0.6 * steps_at_1_1);
+  EXPECT_LT(solves(SolveStatus::kMaxIterations), 0.5 * converged);
 }
 
 // The stability window: a shorter one (a larger share) certifies no later.
@@ -311,17 +359,24 @@ TEST(ScaledSolver, EstimatesTheRangeScaleWhereItIsObservable) {
   EXPECT_EQ(ScaledSolver(inner, {true, 0.001, 0.2}).Solve(few, few_d).range_scale_sigma, 0.0);
 }
 
-// Three tags with offsets of 0.25 m each: one bias per tag recovers the anchor one bias cannot.
-TEST(TagBiases, EstimateEachTagsOffset) {
-  const std::vector<RangeSample> samples = Samples(Wandering, 120.0, 0.03, 5, 0.0, 3, 0.25);
+// The samples' columns, as the solvers take them.
+struct Columns {
+  explicit Columns(const std::vector<RangeSample>& samples) {
+    for (const RangeSample& s : samples) {
+      p.push_back(s.p_world_tag);
+      d.push_back(s.range_m);
+      tags.push_back(s.tag_id);
+    }
+  }
   std::vector<Eigen::Vector3d> p;
   std::vector<double> d;
   std::vector<int> tags;
-  for (const RangeSample& s : samples) {
-    p.push_back(s.p_world_tag);
-    d.push_back(s.range_m);
-    tags.push_back(s.tag_id);
-  }
+};
+
+// Three tags with offsets of 0.25 m each: one bias per tag recovers the anchor one bias cannot.
+TEST(TagBiases, EstimateEachTagsOffset) {
+  const Columns c(Samples(Wandering, 120.0, 0.03, 5, 0.0, 3, 0.25));
+  const auto& [p, d, tags] = c;
   const AnchorSolver solver;
   std::vector<double> offsets;
   const SolveResult per_tag = SolveWithTagBiases(solver, p, d, tags, {true, 4}, &offsets);
@@ -334,6 +389,29 @@ TEST(TagBiases, EstimateEachTagsOffset) {
   EXPECT_NEAR(per_tag.bias_m, 0.1, 0.03);
   EXPECT_LT((per_tag.p_world_anchor - kAnchor).norm(), 0.05);
   EXPECT_GT((one.p_world_anchor - kAnchor).norm(), 2.0 * (per_tag.p_world_anchor - kAnchor).norm());
+}
+
+// An estimate short of its minimum says nothing about the tags' offsets: the alternation stops at it
+// (one solve, offsets left at zero) instead of crawling the same valley once per iteration.
+TEST(TagBiases, StopAtAnEstimateShortOfItsMinimum) {
+  const Columns c(Samples(Wandering, 30.0, 0.03, 5, 0.0, 3, 0.25));
+  const FixedAnswer solver(SolveStatus::kMaxIterations, 0.01);
+  std::vector<double> offsets;
+  const SolveResult result = SolveWithTagBiases(solver, c.p, c.d, c.tags, {true, 4}, &offsets);
+  EXPECT_EQ(result.status, SolveStatus::kMaxIterations);
+  EXPECT_EQ(solver.calls, 1);
+  EXPECT_EQ(offsets, std::vector<double>(3, 0.0));
+}
+
+// After the first solve the alternation starts each solve from the previous estimate (SolveNear);
+// an estimate that does not move settles the offsets after one more solve.
+TEST(TagBiases, StartEachLaterSolveFromTheLastEstimate) {
+  const Columns c(Samples(Wandering, 30.0, 0.03, 5, 0.0, 3, 0.25));
+  const FixedAnswer solver(SolveStatus::kConverged, 0.01);
+  const SolveResult result = SolveWithTagBiases(solver, c.p, c.d, c.tags, {true, 4});
+  EXPECT_EQ(result.status, SolveStatus::kConverged);
+  EXPECT_EQ(solver.calls, 1);
+  EXPECT_EQ(solver.near_calls, 1);
 }
 
 }  // namespace

@@ -35,6 +35,11 @@ class AnchorSolver : public Solver {
     if (!Succeeded(coarse.status)) return coarse;
     return nls_.Solve(p_world_tag, range_m, coarse.p_world_anchor, coarse.bias_m, options_.height_prior);
   }
+  // The refinement alone, from the previous estimate: it is already in the basin the LS would seed.
+  SolveResult SolveNear(std::span<const Eigen::Vector3d> p_world_tag, std::span<const double> range_m,
+                        const SolveResult& previous) const override {
+    return nls_.Solve(p_world_tag, range_m, previous.p_world_anchor, previous.bias_m, options_.height_prior);
+  }
 
  private:
   AnchorSolverOptions options_;

@@ -1,5 +1,6 @@
 #pragma once
 
+#include <limits>
 #include <memory>
 #include <optional>
 #include <string>
@@ -69,7 +70,8 @@ double ChiSquare3Quantile(double confidence);
 // A line of tags or too narrow a cone leaves P singular or large: the trigger waits. Cost per
 // evaluation: one solve, one mirror test and 7 O(N) passes; on a geometric cadence
 // (evaluate_growth > 1) a whole run costs O(N), and a refusal that repeats (the mirror of a flat
-// path, a line's singular region) backs the cadence off (SolveCadence::BackOff).
+// path or its height valley the solve crawls unconverged, a line's singular region) backs the
+// cadence off (SolveCadence::BackOff).
 class CertifiedTrigger : public InitTrigger {
  public:
   // `solver_options` give the L2 refinement of the mirror test its tolerances and the height prior;
@@ -151,6 +153,9 @@ class CertifiedTrigger : public InitTrigger {
   int tests_ = 0;                            // of the alternatives, for the threshold's 2 ln(k)
   static constexpr int kStructuralRepeats = 3;
   int structural_refusals_ = 0;              // since an estimate last got past the mirror
+  bool converged_ = false;                   // the last evaluation's solve reached its minimum
+  bool mirrored_ = false;                    // a mirror refused an estimate since one got past it
+  double smallest_region_m_ = std::numeric_limits<double>::infinity();  // around a converged estimate
   std::vector<double> corrected_m_;          // the ranges less each tag's offset (scratch)
 };
 

@@ -22,6 +22,14 @@ class Solver {
  public:
   virtual ~Solver() = default;
   virtual SolveResult Solve(std::span<const Eigen::Vector3d> p_world_tag, std::span<const double> range_m) const = 0;
+  // The same solve for data close to those `previous` was solved from (the tag-offset alternation:
+  // the ranges less slightly different offsets), which a solver may start from instead of from
+  // scratch. By default it solves from scratch.
+  virtual SolveResult SolveNear(std::span<const Eigen::Vector3d> p_world_tag, std::span<const double> range_m,
+                                const SolveResult& previous) const {
+    static_cast<void>(previous);
+    return Solve(p_world_tag, range_m);
+  }
 };
 
 // A solver around another one, which it calls (once or many times) and whose result it checks or
