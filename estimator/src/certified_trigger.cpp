@@ -101,6 +101,15 @@ double ChiSquare3Quantile(double confidence) {
 
 namespace {
 
+// (J^T J)^-1 of (p_A, gamma) with one bias, at `point`; none where singular.
+std::optional<Eigen::Matrix4d> UnitCovariance(std::span<const Eigen::Vector3d> p_world_tag,
+                                              const Eigen::Vector3d& point) {
+  const Eigen::MatrixXd information = TagInformation(p_world_tag, {}, {0}, point);
+  Eigen::Matrix4d inverse;
+  if (!internal::InvertNormalMatrix(information.topLeftCorner<4, 4>(), &inverse)) return std::nullopt;
+  return inverse;
+}
+
 NlsOptions L2(NlsOptions nls) {
   nls.kernel = KernelMode::kL2;
   nls.max_iterations = std::min(nls.max_iterations, kAlternativeIterations);
@@ -276,10 +285,8 @@ double CertifiedTrigger::PriorGapSigma(const TriggerInput& in, const SolveResult
   // normal equations), so z - z_prior = (z_r - z_prior) / (1 + w a), and z_r - z_prior has the
   // ranges' variance (noise, model error) plus the prior's.
   const double prior_variance = 1.0 / estimate.height_information;
-  const Eigen::MatrixXd information = TagInformation(in.p_world_tag, {}, {0}, estimate.p_world_anchor);
-  Eigen::Matrix4d unit;
-  if (!internal::InvertNormalMatrix(information.topLeftCorner<4, 4>(), &unit)) return std::sqrt(prior_variance);
-  const double a = unit(2, 2);
+  if (!noise.unit_covariance) return std::sqrt(prior_variance);
+  const double a = (*noise.unit_covariance)(2, 2);
   const double model =
       ModelErrorCovariance(in.p_world_tag, in.tag_id, estimate.p_world_anchor, covariance_, noise.travel_bias_m)(2, 2);
   const double pull = 1.0 + estimate.height_weight * a;
@@ -298,13 +305,10 @@ void CertifiedTrigger::ShareRegion(const TriggerInput& in, const SolveResult& no
                    .topLeftCorner<3, 3>() * axis);
   double tags_part = 0.0;
   const std::vector<int> tags = EstimatedTags(in.tag_id, in.p_world_tag.size());
-  if (tags.size() > 1) {
+  if (tags.size() > 1 && stats.unit_covariance) {
     const double scale_m = stats.residual_scale_m;
-    Eigen::Matrix4d one_bias;
-    const Eigen::MatrixXd information = TagInformation(in.p_world_tag, {}, {0}, noise_only.p_world_anchor);
-    if (internal::InvertNormalMatrix(information.topLeftCorner<4, 4>(), &one_bias)) {
-      tags_part = std::clamp(noise - scale_m * scale_m * axis.dot(one_bias.topLeftCorner<3, 3>() * axis), 0.0, noise);
-    }
+    tags_part = std::clamp(noise - scale_m * scale_m * axis.dot(stats.unit_covariance->topLeftCorner<3, 3>() * axis),
+                           0.0, noise);
   }
   const ModelErrorTerms terms = ModelErrorCovarianceTerms(in.p_world_tag, in.tag_id, noise_only.p_world_anchor,
                                                           covariance_, stats.travel_bias_m, noise_only.height_weight);
@@ -323,6 +327,11 @@ void CertifiedTrigger::ShareRegion(const TriggerInput& in, const SolveResult& no
 
 bool CertifiedTrigger::Evaluate(const TriggerInput& in) {
   const bool certified = Judge(in);
+  PaceCadence();
+  return certified;
+}
+
+void CertifiedTrigger::PaceCadence() {
   // A refusal that will not move with a few more samples (a flat path's mirror, a line's failed
   // solve or unbounded region, a region around an estimate the solve left short of its minimum:
   // the same valley crawled again) is structural: from the kStructuralRepeats-th in a row on, ask
@@ -331,19 +340,18 @@ bool CertifiedTrigger::Evaluate(const TriggerInput& in) {
   // before. Any other finite region neither counts nor restores (on a flat path it wanders).
   const std::string_view test = judgement_.blocked_by;
   const bool region = test == "region" || test == "region_ends";
-  const bool structural =
-      test == "solve" || test == "mirror" || (region && (!std::isfinite(judgement_.value) || !converged_));
-  const bool smaller = region && !structural && judgement_.value < smallest_region_m_;
-  if (smaller) smallest_region_m_ = judgement_.value;
   if (test == "mirror") mirrored_ = true;
-  if (structural) {
+  if (test == "solve" || test == "mirror" || (region && (!std::isfinite(judgement_.value) || !converged_))) {
     if (++structural_refusals_ >= kStructuralRepeats) cadence_.BackOff();
-  } else if (!region || (smaller && !mirrored_)) {
+    return;
+  }
+  const bool smaller = region && judgement_.value < smallest_region_m_;
+  if (smaller) smallest_region_m_ = judgement_.value;
+  if (!region || (smaller && !mirrored_)) {
     structural_refusals_ = 0;
     mirrored_ = false;
     cadence_.Resume();
   }
-  return certified;
 }
 
 bool CertifiedTrigger::Judge(const TriggerInput& in) {
@@ -387,6 +395,7 @@ bool CertifiedTrigger::Judge(const TriggerInput& in) {
   const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> axes(covariance);
   // The residuals' statistics at the estimate, once for every test below (MakeCredible used them
   // for its covariance only).
+  const bool reads_unit_covariance = height_prior_ || EstimatedTags(in.tag_id, in.range_m.size()).size() > 1;
   const NoiseStats noise{
       ResidualScale(fitted.p_world_tag, fitted.range_m, noise_only.p_world_anchor, noise_only.bias_m),
       covariance_.correlated_noise
@@ -394,7 +403,8 @@ bool CertifiedTrigger::Judge(const TriggerInput& in) {
           : 1.0,
       travel_bias_ ? travel_bias_(DifferenceScale(fitted.p_world_tag, fitted.range_m, fitted.tag_id,
                                                   noise_only.p_world_anchor, noise_only.bias_m))
-                   : 0.0};
+                   : 0.0,
+      reads_unit_covariance ? UnitCovariance(fitted.p_world_tag, noise_only.p_world_anchor) : std::nullopt};
   ShareRegion(fitted, noise_only, noise, axes.eigenvectors().col(2), axes.eigenvalues()(2));
   const double limit = d_m * d_m / region_chi2_;  // of the largest variance
   if (!(axes.eigenvalues().maxCoeff() <= limit)) return blocked("region", judgement_.region_m, d_m);

@@ -172,12 +172,23 @@ TEST(CertifiedTrigger, SaysWhichTestHoldsTheAnchorBack) {
 }
 
 // A solver that answers the true anchor with the given status and a covariance of sigma_m per axis
-// (counting its calls).
+// (counting its fresh solves and its solves from a previous estimate).
 class FixedAnswer : public Solver {
  public:
   FixedAnswer(SolveStatus status, double sigma_m) : status_(status), sigma_m_(sigma_m) {}
   SolveResult Solve(std::span<const Eigen::Vector3d>, std::span<const double>) const override {
     ++calls;
+    return Answer();
+  }
+  SolveResult SolveNear(std::span<const Eigen::Vector3d>, std::span<const double>, const SolveResult&) const override {
+    ++near_calls;
+    return Answer();
+  }
+  mutable int calls = 0;
+  mutable int near_calls = 0;
+
+ private:
+  SolveResult Answer() const {
     SolveResult result;
     result.p_world_anchor = kAnchor;
     result.bias_m = 0.1;
@@ -185,16 +196,6 @@ class FixedAnswer : public Solver {
     result.status = status_;
     return result;
   }
-  SolveResult SolveNear(std::span<const Eigen::Vector3d> p, std::span<const double> d,
-                        const SolveResult&) const override {
-    ++near_calls;
-    --calls;
-    return Solve(p, d);
-  }
-  mutable int calls = 0;       // fresh solves
-  mutable int near_calls = 0;  // solves from a previous estimate
-
- private:
   SolveStatus status_;
   double sigma_m_;
 };

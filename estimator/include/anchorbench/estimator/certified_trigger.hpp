@@ -94,14 +94,19 @@ class CertifiedTrigger : public InitTrigger {
   };
   enum class Verdict { kRuledOut, kMirror, kOtherMinimum };
   // The estimate's residuals, read once per evaluation: their RMS, the correlation factor and the
-  // consistency check's travel bias (credible_covariance.hpp).
+  // consistency check's travel bias (credible_covariance.hpp); and the one-bias unit-weight
+  // covariance (J^T J)^-1 of (p_A, gamma) at the estimate where a test reads it (several tags' share,
+  // a height prior's gap), absent where singular.
   struct NoiseStats {
     double residual_scale_m;
     double correlation_factor;
     double travel_bias_m;
+    std::optional<Eigen::Matrix4d> unit_covariance;
   };
   // The four tests on one evaluation; Evaluate adds the cadence's back-off.
   bool Judge(const TriggerInput& in);
+  // The cadence after the judgement: backed off on a refusal that repeats, restored on progress.
+  void PaceCadence();
   // Where other minima of the fit may lie: the mirror, and 3 D along the covariance's axes and
   // towards and away from the tags' centroid (with the bias that fits best there).
   std::vector<Alternative> Alternatives(std::span<const Eigen::Vector3d> p_world_tag, std::span<const double> range_m,

@@ -26,8 +26,7 @@ class Solver {
   // the ranges less slightly different offsets), which a solver may start from instead of from
   // scratch. By default it solves from scratch.
   virtual SolveResult SolveNear(std::span<const Eigen::Vector3d> p_world_tag, std::span<const double> range_m,
-                                const SolveResult& previous) const {
-    static_cast<void>(previous);
+                                const SolveResult& /*previous*/) const {
     return Solve(p_world_tag, range_m);
   }
 };
