@@ -1,6 +1,6 @@
 # One library target per layer (README, Architecture): anchorbench_<NAME> with the alias
 # anchorbench::<NAME>, its headers in <NAME>/include/anchorbench/<NAME>/, C++20 for its consumers
-# too, and its tests/ and bench/ folders when present.
+# too, and its tests/ folder when present (the benchmarks sit above every layer, in bench/).
 #   anchorbench_add_library(NAME SOURCES file... DEPENDS target... [PRIVATE_DEPENDS target...])
 function(anchorbench_add_library name)
   cmake_parse_arguments(ARG "" "" "SOURCES;DEPENDS;PRIVATE_DEPENDS" ${ARGN})
@@ -17,9 +17,6 @@ function(anchorbench_add_library name)
   install(DIRECTORY include/ DESTINATION ${CMAKE_INSTALL_INCLUDEDIR})
   if(ANCHORBENCH_BUILD_TESTS AND EXISTS ${CMAKE_CURRENT_SOURCE_DIR}/tests/CMakeLists.txt)
     add_subdirectory(tests)
-  endif()
-  if(ANCHORBENCH_BUILD_BENCHMARKS AND EXISTS ${CMAKE_CURRENT_SOURCE_DIR}/bench/CMakeLists.txt)
-    add_subdirectory(bench)
   endif()
 endfunction()
 

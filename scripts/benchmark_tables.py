@@ -54,7 +54,7 @@ with open(os.path.join(folder, "solvers.csv"), "w", newline="") as f:
                       " | ".join(str(x) for x in fields[3:]) + " |")
 with open(os.path.join(folder, "solvers.md"), "w") as f:
     f.write("Every registered solver and both RANSAC schemes on the same samples (a pass by a wall anchor with "
-            "5, 10 and 20% NLOS outliers, registry/bench/bench_compare.cpp); times are medians, ratios within this "
+            "5, 10 and 20% NLOS outliers, bench/bench_compare.cpp); times are medians, ratios within this "
             "run.\n\n")
     f.write("\n".join(md) + "\n")
 

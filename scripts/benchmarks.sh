@@ -38,12 +38,11 @@ staging=$(mktemp -d "$(dirname "$out")/.$(basename "$out").partial-XXXXXX")
 trap 'rm -rf "$staging"' EXIT
 
 for bench in $benches; do
-  program=$(find "$build" -name "$bench" -type f -perm -u+x | head -n 1)
-  "$program" --benchmark_min_time="$min_time" --benchmark_repetitions="$repetitions" \
+  "$build/bench/$bench" --benchmark_min_time="$min_time" --benchmark_repetitions="$repetitions" \
     --benchmark_report_aggregates_only=true --benchmark_format=json >"$staging/$bench.json"
 done
 # The live front end's latency (a minute at the log's rate, then 10x, then unpaced).
-"$(find "$build" -name bench_live -type f -perm -u+x | head -n 1)" --duration-s "$live_duration_s" --out "$staging/live_latency.csv"
+"$build/bench/bench_live" --duration-s "$live_duration_s" --out "$staging/live_latency.csv"
 for threads in 1 2; do
   # shellcheck disable=SC2086  # $realizations is empty or two words
   "$build/app/anchorbench" run configs/table1.yaml --threads "$threads" --quiet $realizations \

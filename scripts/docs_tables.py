@@ -806,7 +806,7 @@ def performance_bullets():
                if r["benchmark"].startswith("BM_ClosestPointPdopPerSample")]
     threads = {r["threads"]: r for r in read("benchmarks/table1_threads.csv")}
     return (
-        "- **Every solver on the same samples** (`solvers.md`, from `registry/bench/bench_compare.cpp`: a\n"
+        "- **Every solver on the same samples** (`solvers.md`, from `bench/bench_compare.cpp`: a\n"
         "  pass by a wall anchor with 5% NLOS outliers), as multiples of a plain Eigen dense LS (unbiased\n"
         f"  multilateration, column-pivoting QR) at 600 / 10^4 samples: `ls_double` {x('ls_double')},\n"
         f"  `lm_l2` {x('lm_l2')}, `lm_cauchy` {x('lm_cauchy')}, `lm_adaptive` {x('lm_adaptive')},\n"
