@@ -123,7 +123,7 @@ CertifiedTrigger::CertifiedTrigger(std::shared_ptr<const Solver> solver, const A
                                    const TagBiasOptions& tag_biases, TravelBias travel_bias, SolveCadence cadence)
     : solver_(std::move(solver)),
       refine_(L2(solver_options.nls)),
-      height_prior_(solver_options.height_prior),
+      height_prior_(solver_->height_prior()),
       mirror_(mirror),
       tag_biases_(tag_biases),
       options_(options),

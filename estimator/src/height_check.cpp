@@ -51,7 +51,7 @@ bool HeightCheckOptions::IsValid(std::string* why) const {
   if (!(min_evidence >= 0.0 && min_evidence <= 1e6)) return fail("min_evidence must be in [0, 1e6]");
   if (!(trim_fraction >= 0.0 && trim_fraction <= 0.5)) return fail("trim_fraction must be in [0, 0.5]");
   if (!(min_separation >= 0.0 && min_separation <= 1e6)) return fail("min_separation must be in [0, 1e6]");
-  return !height_prior || height_prior->IsValid(why);
+  return true;
 }
 
 Mirror MirrorOf(std::span<const Eigen::Vector3d> p_world_tag, std::span<const double> range_m,
@@ -111,15 +111,15 @@ SolveResult HeightCheckedSolver::Solve(std::span<const Eigen::Vector3d> p_world_
   SolveResult result = inner().Solve(p_world_tag, range_m);
   if (!Succeeded(result.status)) return result;
   Mirror mirror = MirrorOf(p_world_tag, range_m, result, options_.trim_fraction);
-  if (mirror.exists && options_.height_prior) {
-    mirror.evidence += options_.height_prior->Chi2(mirror.p_world_mirror.z()) -
-                       options_.height_prior->Chi2(result.p_world_anchor.z());
-  }
+  // The solver's height prior, if it has one: the prior's chi-square of the mirror minus the
+  // estimate's joins the evidence.
+  const std::optional<HeightPrior> prior = height_prior();
+  if (mirror.exists && prior) mirror.evidence += prior->Chi2(mirror.p_world_mirror.z()) - prior->Chi2(result.p_world_anchor.z());
   const auto separated = [&] {
     double squares = 0.0;
     for (const double r : Residuals(p_world_tag, range_m, result.p_world_anchor, result.bias_m)) squares += r * r;
     const double scale_m = std::sqrt(squares / static_cast<double>(std::max<std::size_t>(range_m.size(), 5) - 4));
-    return options_.height_prior || Separation(p_world_tag, result.p_world_anchor, result.bias_m, mirror.p_world_mirror,
+    return prior || Separation(p_world_tag, result.p_world_anchor, result.bias_m, mirror.p_world_mirror,
                                                mirror.bias_mirror_m, scale_m) >= options_.min_separation;
   };
   // The data (and a height prior) decide.

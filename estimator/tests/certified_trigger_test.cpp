@@ -53,9 +53,7 @@ Eigen::Vector3d Line(double t) {  // a straight pass by the anchor
 AnchorInitializer Certified(const CertificateOptions& certificate = {}, const AnchorSolverOptions& solver_options = {},
                             std::shared_ptr<const Solver> solver = nullptr) {
   if (!solver) solver = std::make_shared<AnchorSolver>(solver_options);
-  InitializerOptions initializer;
-  initializer.height_check.height_prior = solver_options.height_prior;  // as the config wires it
-  return AnchorInitializer(7, initializer, std::make_unique<ConsistencyFilter>(),
+  return AnchorInitializer(7, InitializerOptions{}, std::make_unique<ConsistencyFilter>(),
                            std::make_unique<CertifiedTrigger>(solver, solver_options, certificate,
                                                               HeightCheckOptions{}, TagBiasOptions{},
                                                               [](double s) { return ConsistencyFilter().TravelBias(s); },

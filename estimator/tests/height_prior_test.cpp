@@ -12,6 +12,7 @@
 #include "anchorbench/estimator/closest_point_pdop.hpp"
 #include "anchorbench/estimator/height_check.hpp"
 #include "anchorbench/estimator/ls_solver.hpp"
+#include "anchorbench/estimator/scaled_solver.hpp"
 #include "anchorbench/testing/test_data.hpp"
 
 namespace anchorbench::estimator {
@@ -103,11 +104,14 @@ TEST(HeightPrior, WhereTheRangesSeeTheHeightTheyAreWeighedAgainstIt) {
 TEST(HeightPrior, TheMirrorCheckCountsThePrior) {
   const testing::AnchorData flat = Path(0.003, 2);
   const HeightPrior prior{kAnchor.z(), 0.1};
-  auto solver = std::make_shared<AnchorSolver>(Options(prior));
-  HeightCheckOptions check;
-  EXPECT_EQ(HeightCheckedSolver(solver, check).Solve(flat.p_world_tag, flat.range_m).status,
+  const HeightCheckOptions check;
+  EXPECT_EQ(HeightCheckedSolver(std::make_shared<AnchorSolver>(Options(std::nullopt)), check)
+                .Solve(flat.p_world_tag, flat.range_m)
+                .status,
             SolveStatus::kHeightUnobservable);
-  check.height_prior = prior;
+  // The check reads the prior from the solver it wraps, through any decorator between them.
+  auto solver = std::make_shared<ScaledSolver>(std::make_shared<AnchorSolver>(Options(prior)), ScaleOptions{});
+  ASSERT_TRUE(solver->height_prior().has_value());
   const SolveResult checked = HeightCheckedSolver(solver, check).Solve(flat.p_world_tag, flat.range_m);
   ASSERT_TRUE(Succeeded(checked.status)) << ToString(checked.status);
   EXPECT_LT((checked.p_world_anchor - kAnchor).norm(), 0.2);

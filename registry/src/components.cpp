@@ -31,11 +31,11 @@ estimator::AnchorInitializer MakeInitializer(const Components& components, int a
                                              const TriggerMaker& make_trigger, std::uint64_t seed,
                                              const std::optional<Eigen::Vector3d>& p_world_anchor_reference) {
   std::string why;
-  // The anchor's own height prior, for its solver and its height check alike.
+  // The anchor's own height prior goes to its solver, from which the height check and the
+  // certificate read it (Solver::height_prior).
   estimator::AnchorSolverOptions solver_options = config.solver_options;
   solver_options.height_prior = config.height_prior.For(anchor_id, p_world_anchor_reference);
-  estimator::InitializerOptions initializer_options = config.initializer;
-  initializer_options.height_check.height_prior = solver_options.height_prior;
+  const estimator::InitializerOptions& initializer_options = config.initializer;
   std::shared_ptr<const estimator::Solver> solver =
       components.solvers.Create(config.solver, {solver_options, seed, components.tables.get()}, &why);
   if (!solver) throw std::invalid_argument(why);

@@ -40,6 +40,7 @@ class AnchorSolver : public Solver {
                         const SolveResult& previous) const override {
     return nls_.Solve(p_world_tag, range_m, previous.p_world_anchor, previous.bias_m, options_.height_prior);
   }
+  std::optional<HeightPrior> height_prior() const override { return options_.height_prior; }
 
  private:
   AnchorSolverOptions options_;

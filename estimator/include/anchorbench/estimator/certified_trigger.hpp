@@ -74,7 +74,8 @@ double ChiSquare3Quantile(double confidence);
 // cadence off (SolveCadence::BackOff).
 class CertifiedTrigger : public InitTrigger {
  public:
-  // `solver_options` give the L2 refinement of the mirror test its tolerances and the height prior;
+  // `solver_options` give the L2 refinement of the mirror test its tolerances (the height prior is
+  // the solver's, Solver::height_prior);
   // `tag_biases` are the initializer's, so that the certificate judges the estimate it will report.
   CertifiedTrigger(std::shared_ptr<const Solver> solver, const AnchorSolverOptions& solver_options,
                    const CertificateOptions& options, const HeightCheckOptions& mirror,
@@ -137,7 +138,7 @@ class CertifiedTrigger : public InitTrigger {
 
   std::shared_ptr<const Solver> solver_;  // the anchor's
   NlsSolver refine_;                      // L2, for the mirror's basin
-  std::optional<HeightPrior> height_prior_;
+  std::optional<HeightPrior> height_prior_;  // the solver's
   HeightCheckOptions mirror_;
   TagBiasOptions tag_biases_;
   CertificateOptions options_;

@@ -41,9 +41,6 @@ struct HeightCheckOptions {
   double min_separation = 100.0;
   double trim_fraction = 0.1; // the largest residuals of each fit left out of its sum
   Side side = Side::kAny;     // the anchor's side of the tags' plane, if known
-  // The anchor's height prior, if its solver has one (set with the solver's, not configured
-  // here): the prior's chi-square of the mirror minus the estimate's joins the evidence.
-  std::optional<HeightPrior> height_prior;
 
   bool IsValid(std::string* why) const;
 };

@@ -66,6 +66,7 @@ class DoubleDifferenceLsSolver : public Solver {
   SolveResult Solve(std::span<const Eigen::Vector3d> p_world_tag, std::span<const double> range_m) const override {
     return SolveDoubleDifferenceLs(p_world_tag, range_m, options_, height_prior_);
   }
+  std::optional<HeightPrior> height_prior() const override { return height_prior_; }
 
  private:
   LsOptions options_;

@@ -1,10 +1,12 @@
 #pragma once
 
 #include <memory>
+#include <optional>
 #include <span>
 
 #include <Eigen/Core>
 
+#include "anchorbench/estimator/height_prior.hpp"
 #include "anchorbench/estimator/solve_result.hpp"
 
 namespace anchorbench::estimator {
@@ -29,6 +31,9 @@ class Solver {
                                 const SolveResult& /*previous*/) const {
     return Solve(p_world_tag, range_m);
   }
+  // The anchor's known height this solver weighs, if any. The solver is the one place an anchor's
+  // prior is held: the mirror check and the certificate read it from here.
+  virtual std::optional<HeightPrior> height_prior() const { return std::nullopt; }
 };
 
 // A solver around another one, which it calls (once or many times) and whose result it checks or
@@ -41,6 +46,9 @@ class SolverDecorator : public Solver {
  protected:
   explicit SolverDecorator(std::shared_ptr<const Solver> inner) : inner_(std::move(inner)) {}
   const Solver& inner() const { return *inner_; }
+
+ public:
+  std::optional<HeightPrior> height_prior() const override { return inner_->height_prior(); }
 
  private:
   std::shared_ptr<const Solver> inner_;
