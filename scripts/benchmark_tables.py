@@ -62,7 +62,8 @@ with open(os.path.join(folder, "solvers.md"), "w") as f:
 with open(os.path.join(folder, "micro.csv"), "w", newline="") as f:
     w = csv.writer(f, lineterminator="\n")
     w.writerow(["program", "benchmark", "time", "unit", "counters"])
-    for bench in ["bench_solver", "bench_pdop", "bench_filters", "bench_triggers", "bench_front_end", "bench_ingest"]:
+    for bench in ["bench_solver", "bench_pdop", "bench_filters", "bench_triggers", "bench_front_end", "bench_guidance",
+                  "bench_ingest"]:
         _, rows = medians(bench)
         for name, b in rows.items():
             known = {"name", "run_name", "run_type", "repetitions", "repetition_index", "threads", "iterations",

@@ -28,7 +28,7 @@ while [ $# -gt 0 ]; do
     *) echo "benchmarks.sh: unknown option $1 (--out DIR, --quick, --build DIR)" >&2; exit 2 ;;
   esac
 done
-benches="bench_compare bench_solver bench_pdop bench_filters bench_triggers bench_front_end bench_ingest"
+benches="bench_compare bench_solver bench_pdop bench_filters bench_triggers bench_front_end bench_guidance bench_ingest"
 if [ -z "$build" ]; then
   build=build
   bash scripts/build.sh anchorbench anchorbench-mpi _anchorbench $benches bench_live  # anchorbench-mpi: cluster.csv; _anchorbench: python.csv

@@ -162,6 +162,13 @@ std::optional<InitEvent> AnchorInitializer::CompletePendingSolve(const PendingWo
   return std::nullopt;
 }
 
+std::optional<RegionForecast> AnchorInitializer::Forecast() const {
+  if (initialized_) return std::nullopt;
+  const std::optional<RegionBasis> basis = trigger_->region_basis();
+  if (!basis) return std::nullopt;
+  return RegionForecast(*basis, p_world_tag_, tag_id_);
+}
+
 std::optional<Judgement> AnchorInitializer::why_not() const {
   if (initialized_ || n_admitted_ == 0) return std::nullopt;
   auto own = [this](std::string_view test, double limit) {

@@ -228,30 +228,24 @@ double CertifiedTrigger::LargestVariance(std::span<const Eigen::Vector3d> p_worl
                                          double noise_variance, double travel_bias_m, double height_information,
                                          double height_weight) const {
   // The noise part: the (p_A, gamma) block of the information's inverse, with each tag's offset
-  // among the unknowns where they are estimated (tag_biases.hpp).
-  // the prior's information beside the ranges' (height_information = 0: none; the plain scaling keeps
-  // the bytes of runs without one).
-  Eigen::MatrixXd information =
+  // among the unknowns where they are estimated (tag_biases.hpp), and the prior's information.
+  const Eigen::MatrixXd information =
       TagInformation(p_world_tag, tags.size() > 1 ? tag_id : std::span<const int>(), tags, point);
-  double scale = noise_variance;
-  if (height_information > 0.0) {
-    information /= noise_variance;
-    information(2, 2) += height_information;
-    scale = 1.0;
-  }
-  Eigen::Matrix4d noise;
-  if (tags.size() == 1) {
-    if (!internal::InvertNormalMatrix(information.topLeftCorner<4, 4>(), &noise)) return kInf;
-  } else {
-    const Eigen::LDLT<Eigen::MatrixXd> ldlt(information);
-    if (ldlt.info() != Eigen::Success) return kInf;
-    noise = ldlt.solve(Eigen::MatrixXd::Identity(information.rows(), information.cols())).topLeftCorner<4, 4>();
-  }
-  const Eigen::Matrix4d p =
-      scale * noise + ModelErrorCovariance(p_world_tag, tag_id, point, covariance_, travel_bias_m, height_weight);
-  const Eigen::Matrix3d position = p.topLeftCorner<3, 3>();
-  if (!position.allFinite() || !(position.diagonal().minCoeff() > 0.0)) return kInf;
-  return Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d>(position, Eigen::EigenvaluesOnly).eigenvalues().maxCoeff();
+  return LargestPositionVariance(information, noise_variance, height_information,
+                                 ModelErrorCovariance(p_world_tag, tag_id, point, covariance_, travel_bias_m, height_weight));
+}
+
+void CertifiedTrigger::KeepBasis(const SolveResult& estimate, const NoiseStats& noise) {
+  const double scale_m = std::max(noise.residual_scale_m, covariance_.model_error_m);  // as RegionFromEnds
+  basis_ = RegionBasis{estimate.p_world_anchor,
+                       noise.correlation_factor * scale_m * scale_m,
+                       noise.travel_bias_m,
+                       estimate.height_information,
+                       estimate.height_weight,
+                       tag_biases_.estimate,
+                       region_chi2_,
+                       options_.accuracy_m,
+                       covariance_};
 }
 
 double CertifiedTrigger::RegionFromEnds(const TriggerInput& in, const SolveResult& estimate,
@@ -357,6 +351,7 @@ void CertifiedTrigger::PaceCadence() {
 bool CertifiedTrigger::Judge(const TriggerInput& in) {
   ++evaluations_;
   judgement_ = Judgement{};
+  basis_.reset();
   judgement_.t_s = in.t_s;
   judgement_.samples = in.range_m.size();
   const double d_m = options_.accuracy_m;
@@ -406,6 +401,7 @@ bool CertifiedTrigger::Judge(const TriggerInput& in) {
                    : 0.0,
       reads_unit_covariance ? UnitCovariance(fitted.p_world_tag, noise_only.p_world_anchor) : std::nullopt};
   ShareRegion(fitted, noise_only, noise, axes.eigenvectors().col(2), axes.eigenvalues()(2));
+  KeepBasis(estimate, noise);
   const double limit = d_m * d_m / region_chi2_;  // of the largest variance
   if (!(axes.eigenvalues().maxCoeff() <= limit)) return blocked("region", judgement_.region_m, d_m);
   const double from_ends_m = RegionFromEnds(fitted, estimate, axes, noise);

@@ -2,7 +2,11 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <vector>
+
+#include <Eigen/Cholesky>
+#include <Eigen/Eigenvalues>
 
 #include "numerics.hpp"
 
@@ -10,7 +14,6 @@ namespace anchorbench::estimator {
 namespace {
 
 constexpr int kMaxDegree = 3;
-constexpr int kMaxHarmonics = 15;
 
 // The unit direction anchor -> tag and its row j = [-u^T, 1] of the range Jacobian.
 struct Row {
@@ -78,6 +81,54 @@ void Harmonics(const Eigen::Vector3d& u, int degree, double* out) {
   out[14] = a * x * (x * x - 3.0 * y * y);
 }
 
+ErrorSums SumErrorRows(std::span<const Eigen::Vector3d> p_world_tag, std::span<const int> tag_id,
+                        const Eigen::Vector3d& p_world_anchor, const CovarianceOptions& options, double travel_bias_m) {
+  ErrorSums sums;
+  sums.harmonics = options.model_error_m > 0.0 ? HarmonicCount(options.model_error_degree) : 0;
+  sums.travel = options.travel_bias && travel_bias_m != 0.0;
+  // The tags in the data, a handful at most (a robot's); one tag's offset is the bias itself.
+  std::vector<int> tags;
+  if (options.link_offset_m > 0.0 && tag_id.size() == p_world_tag.size()) {
+    for (const int tag : tag_id) {
+      if (std::find(tags.begin(), tags.end(), tag) == tags.end()) tags.push_back(tag);
+    }
+  }
+  if (tags.size() >= 2) {
+    sums.tags = std::move(tags);
+    sums.jt_links.assign(sums.tags.size(), Eigen::Vector4d::Zero());
+  }
+  if (sums.harmonics == 0 && !sums.travel && sums.tags.empty()) return sums;
+  double y[ErrorSums::kMaxHarmonics];
+  for (std::size_t k = 0; k < p_world_tag.size(); ++k) {
+    Row row;
+    if (!RowAt(p_world_tag[k], p_world_anchor, &row)) continue;
+    sums.a.noalias() += row.j * row.j.transpose();
+    if (sums.harmonics > 0) {
+      Harmonics(row.unit, options.model_error_degree, y);
+      for (int h = 0; h < sums.harmonics; ++h) sums.jt_harmonics.col(h) += row.j * y[h];
+    }
+    if (sums.travel) sums.jt_travel += row.j * RangeRateSign(p_world_tag, p_world_anchor, k);
+    if (!sums.tags.empty()) {
+      sums.jt_links[static_cast<std::size_t>(std::find(sums.tags.begin(), sums.tags.end(), tag_id[k]) - sums.tags.begin())] +=
+          row.j;
+    }
+  }
+  return sums;
+}
+
+void ErrorSums::Add(const Eigen::Vector3d& p_world_tag, const Eigen::Vector3d& p_world_anchor, int model_error_degree,
+                    double count, std::size_t tag_index) {
+  Row row;
+  if (!RowAt(p_world_tag, p_world_anchor, &row)) return;
+  a.noalias() += count * row.j * row.j.transpose();
+  if (harmonics > 0) {
+    double y[kMaxHarmonics];
+    Harmonics(row.unit, model_error_degree, y);
+    for (int h = 0; h < harmonics; ++h) jt_harmonics.col(h) += count * row.j * y[h];
+  }
+  if (tag_index < jt_links.size()) jt_links[tag_index] += count * row.j;
+}
+
 namespace {
 
 // The added terms' range errors projected on the solve, J^T E E^T J for each kind, and A^-1.
@@ -88,57 +139,72 @@ struct ProjectedTerms {
   Eigen::Matrix4d total = Eigen::Matrix4d::Zero();  // the three, summed in the order the reported covariance always has
 };
 
-ProjectedTerms Project(std::span<const Eigen::Vector3d> p_world_tag, std::span<const int> tag_id,
-                       const Eigen::Vector3d& p_world_anchor, const CovarianceOptions& options, double travel_bias_m,
+ProjectedTerms Project(const ErrorSums& sums, const CovarianceOptions& options, double travel_bias_m,
                        double height_weight) {
   ProjectedTerms out;
-  const int harmonics = options.model_error_m > 0.0 ? HarmonicCount(options.model_error_degree) : 0;
-  const bool travel = options.travel_bias && travel_bias_m != 0.0;
-  // The tags in the data, a handful at most (a robot's); one tag's offset is the bias itself.
-  std::vector<int> tags;
-  if (options.link_offset_m > 0.0 && tag_id.size() == p_world_tag.size()) {
-    for (const int tag : tag_id) {
-      if (std::find(tags.begin(), tags.end(), tag) == tags.end()) tags.push_back(tag);
-    }
-  }
-  const bool links = tags.size() >= 2;
-  if (harmonics == 0 && !travel && !links) return out;
-  std::vector<Eigen::Vector4d> jt_links(links ? tags.size() : 0, Eigen::Vector4d::Zero());
-  Eigen::Matrix4d a = Eigen::Matrix4d::Zero();
-  Eigen::Matrix<double, 4, kMaxHarmonics> jt_harmonics = Eigen::Matrix<double, 4, kMaxHarmonics>::Zero();
-  Eigen::Vector4d jt_travel = Eigen::Vector4d::Zero();
-  double y[kMaxHarmonics];
-  for (std::size_t k = 0; k < p_world_tag.size(); ++k) {
-    Row row;
-    if (!RowAt(p_world_tag[k], p_world_anchor, &row)) continue;
-    a.noalias() += row.j * row.j.transpose();
-    if (harmonics > 0) {
-      Harmonics(row.unit, options.model_error_degree, y);
-      for (int h = 0; h < harmonics; ++h) jt_harmonics.col(h) += row.j * y[h];
-    }
-    if (travel) jt_travel += row.j * RangeRateSign(p_world_tag, p_world_anchor, k);
-    if (links) jt_links[static_cast<std::size_t>(std::find(tags.begin(), tags.end(), tag_id[k]) - tags.begin())] += row.j;
-  }
+  const int harmonics = sums.harmonics;
+  if (harmonics == 0 && !sums.travel && sums.tags.empty()) return out;
+  Eigen::Matrix4d a = sums.a;
   a(2, 2) += height_weight;  // a height prior holds the height against the errors as it does against noise
   if (!internal::InvertNormalMatrix(a, &out.a_inverse)) return out;
   out.any = true;
   if (harmonics > 0) {  // equal variances: the RMS over the sphere is model_error_m
     const double variance = options.model_error_m * options.model_error_m / harmonics;
-    out.model.noalias() = variance * jt_harmonics.leftCols(harmonics) * jt_harmonics.leftCols(harmonics).transpose();
-    out.total.noalias() += variance * jt_harmonics.leftCols(harmonics) * jt_harmonics.leftCols(harmonics).transpose();
+    out.model.noalias() = variance * sums.jt_harmonics.leftCols(harmonics) * sums.jt_harmonics.leftCols(harmonics).transpose();
+    out.total.noalias() += variance * sums.jt_harmonics.leftCols(harmonics) * sums.jt_harmonics.leftCols(harmonics).transpose();
   }
-  if (travel) {
-    out.travel.noalias() = travel_bias_m * travel_bias_m * jt_travel * jt_travel.transpose();
-    out.total.noalias() += travel_bias_m * travel_bias_m * jt_travel * jt_travel.transpose();
+  if (sums.travel) {
+    out.travel.noalias() = travel_bias_m * travel_bias_m * sums.jt_travel * sums.jt_travel.transpose();
+    out.total.noalias() += travel_bias_m * travel_bias_m * sums.jt_travel * sums.jt_travel.transpose();
   }
-  for (const Eigen::Vector4d& jt : jt_links) {
+  for (const Eigen::Vector4d& jt : sums.jt_links) {
     out.links.noalias() += options.link_offset_m * options.link_offset_m * jt * jt.transpose();
     out.total.noalias() += options.link_offset_m * options.link_offset_m * jt * jt.transpose();
   }
   return out;
 }
 
+ProjectedTerms Project(std::span<const Eigen::Vector3d> p_world_tag, std::span<const int> tag_id,
+                       const Eigen::Vector3d& p_world_anchor, const CovarianceOptions& options, double travel_bias_m,
+                       double height_weight) {
+  return Project(SumErrorRows(p_world_tag, tag_id, p_world_anchor, options, travel_bias_m), options, travel_bias_m,
+                 height_weight);
+}
+
 }  // namespace
+
+double LargestPositionVariance(const Eigen::MatrixXd& information, double noise_variance, double height_information,
+                               const Eigen::Matrix4d& added) {
+  constexpr double kInfinity = std::numeric_limits<double>::infinity();
+  // The prior's information beside the ranges' (height_information = 0: none; the plain scaling
+  // keeps the bytes of runs without one).
+  Eigen::MatrixXd weighed = information;
+  double scale = noise_variance;
+  if (height_information > 0.0) {
+    weighed /= noise_variance;
+    weighed(2, 2) += height_information;
+    scale = 1.0;
+  }
+  Eigen::Matrix4d noise;
+  if (weighed.rows() == 4) {
+    if (!internal::InvertNormalMatrix(weighed.topLeftCorner<4, 4>(), &noise)) return kInfinity;
+  } else {
+    const Eigen::LDLT<Eigen::MatrixXd> ldlt(weighed);
+    if (ldlt.info() != Eigen::Success) return kInfinity;
+    noise = ldlt.solve(Eigen::MatrixXd::Identity(weighed.rows(), weighed.cols())).topLeftCorner<4, 4>();
+  }
+  const Eigen::Matrix4d p = scale * noise + added;
+  const Eigen::Matrix3d position = p.topLeftCorner<3, 3>();
+  if (!position.allFinite() || !(position.diagonal().minCoeff() > 0.0)) return kInfinity;
+  return Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d>(position, Eigen::EigenvaluesOnly).eigenvalues().maxCoeff();
+}
+
+Eigen::Matrix4d AddedCovariance(const ErrorSums& sums, const CovarianceOptions& options, double travel_bias_m,
+                                double height_weight) {
+  const ProjectedTerms t = Project(sums, options, travel_bias_m, height_weight);
+  if (!t.any) return Eigen::Matrix4d::Zero();
+  return t.a_inverse * t.total * t.a_inverse;
+}
 
 Eigen::Matrix4d ModelErrorCovariance(std::span<const Eigen::Vector3d> p_world_tag, std::span<const int> tag_id,
                                      const Eigen::Vector3d& p_world_anchor, const CovarianceOptions& options,
@@ -164,6 +230,7 @@ double PatternCovariation(std::span<const Eigen::Vector3d> p_world_tag, const Ei
                           const Eigen::Vector3d& p_b, double bias_b_m, const CovarianceOptions& options) {
   if (!(options.model_error_m > 0.0)) return 0.0;
   const int harmonics = HarmonicCount(options.model_error_degree);
+  constexpr int kMaxHarmonics = ErrorSums::kMaxHarmonics;
   Eigen::Matrix<double, kMaxHarmonics, 1> projection = Eigen::Matrix<double, kMaxHarmonics, 1>::Zero();
   double y[kMaxHarmonics];
   for (const Eigen::Vector3d& p : p_world_tag) {

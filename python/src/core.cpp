@@ -8,6 +8,7 @@
 #include "anchorbench/config/load_config.hpp"
 #include "anchorbench/engine/attempt.hpp"
 #include "anchorbench/estimator/closest_point_pdop.hpp"
+#include "anchorbench/estimator/guide.hpp"
 #include "anchorbench/estimator/live_front_end.hpp"
 #include "anchorbench/estimator/pdop.hpp"
 #include "anchorbench/io/format.hpp"
@@ -230,6 +231,45 @@ class PyFrontEnd {
     for (const Waiting& w : waiting) out.append(JudgementDict(w.anchor_id, estimator_.triggers.at(w.chain), w.judgement));
     return out;
   }
+  // Where each waiting anchor's certificate would have the robot range from next (guidance.hpp).
+  py::list Guide(const std::optional<Doubles>& candidates, double samples, std::size_t best, double reach_m, int steps,
+                 double range_rate_hz) const {
+    estimator::GuideRequest request;
+    if (candidates) {
+      const std::span<const Eigen::Vector3d> given = Points(*candidates, "candidates");
+      request.p_world_candidate.assign(given.begin(), given.end());
+    }
+    request.samples = samples;
+    request.best = best;
+    request.reach_m = reach_m;
+    request.steps = steps;
+    request.range_rate_hz = range_rate_hz;
+    const std::vector<estimator::AnchorGuidance> guided = [&] {
+      py::gil_scoped_release release;
+      return front_end_.Inspect([&](const estimator::FrontEnd& front_end) { return estimator::Guide(front_end, request); });
+    }();
+    py::list out;
+    for (const estimator::AnchorGuidance& g : guided) {
+      py::dict d;
+      d["anchor_id"] = g.anchor_id;
+      d["trigger"] = estimator_.triggers.at(g.chain);
+      d["blocked_by"] = std::string(g.blocked_by);
+      d["region_m"] = g.region_m;
+      d["accuracy_m"] = g.accuracy_m;
+      d["seconds_to_certify"] = g.seconds_to_certify;
+      py::list ranked;
+      for (const estimator::CandidateForecast& c : g.best) {
+        py::dict candidate;
+        candidate["p_world_candidate"] = Copy(c.p_world_candidate);
+        candidate["region_m"] = c.region_m;
+        candidate["samples_to_certify"] = c.samples_to_certify;
+        ranked.append(candidate);
+      }
+      d["best"] = ranked;
+      out.append(d);
+    }
+    return out;
+  }
   py::dict Counters() const {
     const estimator::FrontEndCounters c = [this] {
       py::gil_scoped_release release;
@@ -311,6 +351,11 @@ void BindFrontEnd(py::module_& m) {
            "why each anchor's triggers wait: one dict per (anchor, trigger) not yet fired, with the test that "
            "holds it back (blocked_by), its value and limit, and for certified the region's terms, the evidence "
            "and the stability (docs/python.md)")
+      .def("guide", &PyFrontEnd::Guide, py::arg("candidates") = py::none(), py::arg("samples") = 50.0,
+           py::arg("best") = 5, py::arg("reach_m") = 2.0, py::arg("steps") = 2, py::arg("range_rate_hz") = 10.0,
+           "where to range from next: for each anchor a certified chain still waits for, its region now and the "
+           "best candidates (candidates (M, 3), or a grid reach_m around its last tag position) by the region "
+           "after `samples` more ranges there, each with the samples to certify (docs/guidance.md)")
       .def_property_readonly("counters", &PyFrontEnd::Counters);
 }
 

@@ -93,3 +93,29 @@ def test_why_not_says_which_test_holds_each_waiting_anchor_back():
                           p[n:])
     fired = {e.trigger for e in front_end.take_events()}
     assert {w["trigger"] for w in front_end.why_not()}.isdisjoint(fired)  # nothing holds a fired trigger back
+
+
+def test_guide_ranks_where_to_range_from_for_a_waiting_anchor():
+    # A robot's loop on the floor beside an anchor 0.2 m above it: its height is barely seen, so
+    # the certificate waits, and ranging from above the floor is what would close its region.
+    t = np.arange(600) * 0.1
+    p = np.stack([3 + 5 * np.cos(0.2 * t), 4 + 4 * np.sin(0.13 * t), 0.5 + 0.02 * np.sin(0.7 * t)], axis=1)
+    anchor = np.array([15.0, 4.0, 0.7])
+    d = np.linalg.norm(p - anchor, axis=1) + 0.1 + 0.05 * np.random.default_rng(3).standard_normal(len(t))
+    front_end = ab.FrontEnd({"estimator": {"triggers": ["pdop_closest_point", "certified"]}})
+    assert front_end.guide() == []  # nothing judged yet
+    front_end.add_samples(t, np.zeros(len(t), dtype=np.int32), np.full(len(t), 7, dtype=np.int32), d, p)
+    guided = front_end.guide(range_rate_hz=20.0)
+    assert [(g["anchor_id"], g["trigger"]) for g in guided] == [(7, "certified")]
+    g = guided[0]
+    assert len(g["best"]) == 5 and g["region_m"] > g["accuracy_m"]
+    assert g["blocked_by"] == {w["trigger"]: w for w in front_end.why_not()}["certified"]["blocked_by"]
+    regions = [c["region_m"] for c in g["best"]]
+    assert regions == sorted(regions) and regions[0] < g["region_m"]
+    assert all(np.abs(c["p_world_candidate"] - p[-1]).max() <= 2.0 + 1e-9 for c in g["best"])
+    assert g["seconds_to_certify"] == pytest.approx(min(c["samples_to_certify"] for c in g["best"]) / 20.0)
+    # Candidates of the caller's: above the floor ranks first.
+    floor, above = [9.0, 4.0, 0.5], [9.0, 4.0, 2.5]
+    ranked = front_end.guide(candidates=np.array([floor, above]), best=2)[0]["best"]
+    assert list(ranked[0]["p_world_candidate"]) == above
+    assert ranked[0]["region_m"] < ranked[1]["region_m"]

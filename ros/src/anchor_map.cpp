@@ -15,6 +15,7 @@
 #include "anchorbench/config/load_config.hpp"
 #include "anchorbench/io/atomic_file.hpp"
 #include "anchorbench/estimator/certified_trigger.hpp"
+#include "anchorbench/estimator/guide.hpp"
 #include "anchorbench/estimator/live_front_end.hpp"
 #include "anchorbench/io/format.hpp"
 #include "anchorbench/registry/components.hpp"
@@ -187,6 +188,31 @@ std::vector<AnchorState> AnchorMap::States() const {
     }
   }
   return states;
+}
+
+std::vector<AnchorGuide> AnchorMap::Guide(double reach_m, int steps, std::size_t best, double range_rate_hz) const {
+  estimator::GuideRequest request;
+  request.reach_m = reach_m;
+  request.steps = steps;
+  request.best = best;
+  request.range_rate_hz = range_rate_hz;
+  const std::vector<estimator::AnchorGuidance> guided = impl_->front_end.Inspect(
+      [&](const estimator::FrontEnd& front_end) { return estimator::Guide(front_end, request); });
+  std::vector<AnchorGuide> out;
+  for (const estimator::AnchorGuidance& g : guided) {
+    AnchorGuide guide;
+    guide.anchor_id = g.anchor_id;
+    guide.blocked_by = std::string(g.blocked_by);
+    guide.region_m = g.region_m;
+    guide.accuracy_m = g.accuracy_m;
+    for (const estimator::CandidateForecast& c : g.best) {
+      guide.p_world_candidate.push_back(c.p_world_candidate);
+      guide.samples_to_certify.push_back(c.samples_to_certify);
+    }
+    guide.seconds_to_certify = g.seconds_to_certify;
+    out.push_back(std::move(guide));
+  }
+  return out;
 }
 
 void AnchorMap::Reset() {

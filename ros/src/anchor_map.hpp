@@ -40,6 +40,17 @@ struct AnchorState {
   long samples = 0;         // buffered by the published trigger's chain
 };
 
+// Where to range from next for an anchor the published trigger still waits for (docs/guidance.md).
+struct AnchorGuide {
+  int anchor_id = 0;
+  std::string blocked_by;   // the test that holds it now (the forecast is the region's)
+  double region_m = 0.0;    // the region's radius now, and D
+  double accuracy_m = 0.0;
+  std::vector<Eigen::Vector3d> p_world_candidate;  // the best first
+  std::vector<double> samples_to_certify;          // each one's (+inf: never from there alone)
+  double seconds_to_certify = 0.0;                 // the fewest of them at the link's rate
+};
+
 // What came in and what the front end did not use, for the node's diagnostics.
 struct InputCounts {
   long poses = 0, ranges = 0;        // handed to the front end
@@ -66,6 +77,10 @@ class AnchorMap {
   std::vector<AnchorState> Step(std::size_t max_count, Clock::time_point deadline);
   // Every anchor seen, ascending: initialized or what it waits for.
   std::vector<AnchorState> States() const;
+  // Guidance for every waiting anchor whose trigger judges a region (certified): the `best`
+  // candidates on a grid reach_m around its last tag position (`steps` a side), by the region after
+  // 50 more ranges there, at range_rate_hz.
+  std::vector<AnchorGuide> Guide(double reach_m, int steps, std::size_t best, double range_rate_hz) const;
   void Reset();
   bool Reset(int anchor_id);  // false: no such anchor
   const std::string& trigger() const;

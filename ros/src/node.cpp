@@ -46,6 +46,7 @@ class Node {
       SubscribeRanges(nh, tag);
     }
     markers_ = private_nh.advertise<visualization_msgs::MarkerArray>("markers", 1, true);
+    guidance_ = private_nh.advertise<visualization_msgs::MarkerArray>("guidance", 1, true);
     diagnostics_ = nh.advertise<diagnostic_msgs::DiagnosticArray>("/diagnostics", 10);
     reset_ = private_nh.advertiseService("reset", &Node::OnReset, this);
     save_ = private_nh.advertiseService("save", &Node::OnSave, this);
@@ -54,6 +55,7 @@ class Node {
     diagnostics_timer_ =
         nh.createWallTimer(ros::WallDuration(1.0 / settings_.diagnostics_rate_hz), [this](const ros::WallTimerEvent&) {
           PublishDiagnostics();
+          PublishGuidance();
         });
     if (!tf_tags_.empty()) {
       // The node's own listener: each /tf message is in the buffer before its bodies are looked up.
@@ -199,6 +201,22 @@ class Node {
              s.p_world_anchor.x(), s.p_world_anchor.y(), s.p_world_anchor.z(), s.bias_m, anchor.n_used);
   }
 
+  // A text label above a marker (the next id), `height_m` high.
+  static visualization_msgs::Marker LabelOf(const visualization_msgs::Marker& marker, const std::string& text,
+                                            double height_m) {
+    visualization_msgs::Marker label = marker;
+    label.id = marker.id + 1;
+    label.type = visualization_msgs::Marker::TEXT_VIEW_FACING;
+    label.pose.orientation = geometry_msgs::Quaternion();
+    label.pose.orientation.w = 1.0;
+    label.pose.position.z += marker.scale.z / 2 + 0.15;
+    label.scale.x = label.scale.y = 0.0;
+    label.scale.z = height_m;  // text height
+    label.color.a = 1.0f;
+    label.text = text;
+    return label;
+  }
+
   // Per initialized anchor: its 99% ellipsoid, coloured by the solve's status, and a label.
   void PublishMarkers() {
     visualization_msgs::MarkerArray array;
@@ -230,19 +248,45 @@ class Node {
       m.color.b = 0.1f;
       m.color.a = 0.5f;
       array.markers.push_back(m);
-      visualization_msgs::Marker label = m;
-      label.id = 2 * anchor.anchor_id + 1;
-      label.type = visualization_msgs::Marker::TEXT_VIEW_FACING;
-      label.pose.orientation = geometry_msgs::Quaternion();
-      label.pose.orientation.w = 1.0;
-      label.pose.position.z += m.scale.z / 2 + 0.15;
-      label.scale.x = label.scale.y = 0.0;
-      label.scale.z = 0.2;  // text height, m
-      label.color.a = 1.0f;
-      label.text = "anchor " + std::to_string(anchor.anchor_id) + " (" + anchor.status + ")";
-      array.markers.push_back(label);
+      array.markers.push_back(
+          LabelOf(m, "anchor " + std::to_string(anchor.anchor_id) + " (" + anchor.status + ")", 0.2));
     }
     markers_.publish(array);
+  }
+
+  // Per anchor the trigger still waits for, where to range from next (docs/guidance.md): its best
+  // candidate as a sphere, labelled with the seconds to certify and the test that holds it now.
+  void PublishGuidance() {
+    if (!(settings_.guidance_reach_m > 0.0)) return;
+    visualization_msgs::MarkerArray array;
+    visualization_msgs::Marker clear;  // anchors initialized since the last step lose theirs
+    clear.action = visualization_msgs::Marker::DELETEALL;
+    array.markers.push_back(clear);
+    for (const AnchorGuide& guide : map_.Guide(settings_.guidance_reach_m, 2, 1, settings_.guidance_range_rate_hz)) {
+      if (guide.p_world_candidate.empty()) continue;
+      visualization_msgs::Marker m;
+      m.header.frame_id = settings_.frame_id;
+      m.header.stamp = ros::Time::now();
+      m.ns = "anchorbench_guidance";
+      m.id = 2 * guide.anchor_id;
+      m.type = visualization_msgs::Marker::SPHERE;
+      m.pose.position.x = guide.p_world_candidate[0].x();
+      m.pose.position.y = guide.p_world_candidate[0].y();
+      m.pose.position.z = guide.p_world_candidate[0].z();
+      m.pose.orientation.w = 1.0;
+      m.scale.x = m.scale.y = m.scale.z = 0.2;
+      m.color.r = 0.2f;
+      m.color.g = 0.4f;
+      m.color.b = 1.0f;
+      m.color.a = 0.8f;
+      array.markers.push_back(m);
+      const std::string here = std::isfinite(guide.seconds_to_certify)
+                                   ? std::to_string(static_cast<int>(std::ceil(guide.seconds_to_certify))) + " s here"
+                                   : std::string("no candidate closes it");
+      array.markers.push_back(
+          LabelOf(m, "anchor " + std::to_string(guide.anchor_id) + ": " + here + " (held by " + guide.blocked_by + ")", 0.15));
+    }
+    guidance_.publish(array);
   }
 
   void PublishDiagnostics() {
@@ -335,7 +379,7 @@ class Node {
   ros::NodeHandle private_nh_;
   std::vector<ros::Subscriber> subscribers_;
   ros::Subscriber reset_anchor_;
-  ros::Publisher markers_, diagnostics_;
+  ros::Publisher markers_, guidance_, diagnostics_;
   std::map<int, ros::Publisher> anchor_publishers_;
   ros::ServiceServer reset_, save_;
   ros::WallTimer diagnostics_timer_;

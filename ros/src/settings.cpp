@@ -120,6 +120,9 @@ NodeSettings ReadSettings(const ros::NodeHandle& nh) {
   s.solve_budget_s = Positive(nh, "solve_budget_s", s.solve_budget_s, 10.0);
   s.max_solves_per_step = static_cast<int>(Positive(nh, "max_solves_per_step", s.max_solves_per_step, 1e6));
   s.diagnostics_rate_hz = Positive(nh, "diagnostics_rate_hz", s.diagnostics_rate_hz, 100.0);
+  nh.param("guidance_reach_m", s.guidance_reach_m, s.guidance_reach_m);
+  if (!(s.guidance_reach_m >= 0.0 && s.guidance_reach_m <= 1000.0)) Refuse("guidance_reach_m", "must be in [0, 1000]");
+  s.guidance_range_rate_hz = Positive(nh, "guidance_range_rate_hz", s.guidance_range_rate_hz, 10000.0);
   nh.param("solve_max_passes", s.solve_max_passes, s.solve_max_passes);
   if (s.solve_max_passes < 0 || s.solve_max_passes > 100000000) Refuse("solve_max_passes", "must be in [0, 1e8]");
   XmlRpc::XmlRpcValue tags;

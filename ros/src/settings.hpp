@@ -38,6 +38,8 @@ struct NodeSettings {
   int max_solves_per_step = 8;
   int solve_max_passes = 200;          // each solve's work budget (estimator.nls.max_passes); 0: the config's
   double diagnostics_rate_hz = 1.0;
+  double guidance_reach_m = 2.0;        // ~guidance's candidates around the tag (0: no guidance)
+  double guidance_range_rate_hz = 10.0;  // a link's ranging rate: samples to certify -> seconds
   std::vector<TagSettings> tags;
 };
 

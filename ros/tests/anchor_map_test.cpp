@@ -2,6 +2,7 @@
 // others wait for, reset, the saved files, the rviz ellipsoid and the anchor id of a frame.
 #include "anchor_map.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <random>
 
@@ -61,6 +62,24 @@ TEST(AnchorMap, PublishesTheCertifiedAnchorsAndSaysWhatTheOthersWaitFor) {
   EXPECT_FALSE(map.States()[0].initialized);
   map.Reset();
   for (const AnchorState& state : map.States()) EXPECT_FALSE(state.initialized);
+}
+
+// Guidance for the anchors it waits for only: the far one, its best candidates ranked, and the test
+// that holds it.
+TEST(AnchorMap, GuidesOnlyTheAnchorsItWaitsFor) {
+  AnchorMap map("", {}, "");
+  Feed(map, 120.0);
+  RunSolves(map);
+  const std::vector<AnchorGuide> guides = map.Guide(2.0, 2, 3, 10.0);
+  ASSERT_EQ(guides.size(), 1u);
+  EXPECT_EQ(guides[0].anchor_id, 2);
+  EXPECT_EQ(map.States()[2].waiting_for.rfind(guides[0].blocked_by, 0), 0u);  // the same test first
+  ASSERT_EQ(guides[0].p_world_candidate.size(), 3u);
+  ASSERT_EQ(guides[0].samples_to_certify.size(), 3u);
+  EXPECT_GT(guides[0].region_m, guides[0].accuracy_m);
+  double fewest = INFINITY;
+  for (const double samples : guides[0].samples_to_certify) fewest = std::min(fewest, samples);
+  EXPECT_DOUBLE_EQ(guides[0].seconds_to_certify, fewest / 10.0);
 }
 
 TEST(AnchorMap, RefusesAnOfflineOrUnknownTrigger) {

@@ -143,6 +143,11 @@ class AnchorInitializer {
   // else the trigger's own test (InitTrigger::why_not). Nothing once initialized, or for a trigger
   // without a test.
   std::optional<Judgement> why_not() const;
+  // Where to range from next (guidance.hpp): the trigger's region forecast from every buffered
+  // sample, at its last evaluation's estimate. O(N) to build, O(1) per candidate. Nothing once
+  // initialized, or where the trigger has no region basis (not certified, or its last evaluation
+  // had no estimate).
+  std::optional<RegionForecast> Forecast() const;
   // The judgement of an evaluation of the trigger that has run since the last call, if one has
   // (a trigger that solves judges on its cadence: one evaluation per pending solve).
   std::optional<Judgement> TakeJudgement();

@@ -86,6 +86,7 @@ class CertifiedTrigger : public InitTrigger {
   // The last evaluation's tests (Judgement): which one held the anchor back and by how much.
   std::optional<Judgement> why_not() const override { return evaluations_ ? std::optional(judgement_) : std::nullopt; }
   std::size_t evaluations() const override { return evaluations_; }
+  std::optional<RegionBasis> region_basis() const override { return basis_; }
 
  private:
   struct Alternative {
@@ -124,6 +125,8 @@ class CertifiedTrigger : public InitTrigger {
   // The standard deviation the model allows between the estimate's height and its prior (the test
   // `height_prior`).
   double PriorGapSigma(const TriggerInput& in, const SolveResult& estimate, const NoiseStats& noise) const;
+  // What a forecast of the region needs from this evaluation (guidance.hpp).
+  void KeepBasis(const SolveResult& estimate, const NoiseStats& noise);
   // The judgement's account of the region: each term's share of the largest variance.
   void ShareRegion(const TriggerInput& in, const SolveResult& noise_only, const NoiseStats& noise,
                    const Eigen::Vector3d& axis, double largest_variance);
@@ -149,6 +152,7 @@ class CertifiedTrigger : public InitTrigger {
   double prior_quantile_;    // the two-sided normal quantile at the confidence: the height prior's test
   double pattern_quantile_;  // the one-sided one: the model error's share of an alternative's evidence
   std::optional<SolveStatus> refusal_;
+  std::optional<RegionBasis> basis_;  // the last evaluation's, for a forecast of the region
   Judgement judgement_;
   std::size_t evaluations_ = 0;
   struct Evaluated {

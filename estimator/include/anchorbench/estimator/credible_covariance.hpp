@@ -3,6 +3,7 @@
 #include <functional>
 #include <span>
 #include <string>
+#include <vector>
 
 #include <Eigen/Core>
 
@@ -61,6 +62,30 @@ Eigen::Matrix4d ModelErrorCovariance(std::span<const Eigen::Vector3d> p_world_ta
                                      const Eigen::Vector3d& p_world_anchor, const CovarianceOptions& options,
                                      double travel_bias_m, double height_weight = 0.0);
 
+// The sums the added part is built from, over the samples at an anchor position: A = J^T J and,
+// for each kind of range error, J^T of its pattern (each harmonic, the travel bias's signs, each
+// tag's indicator with two or more tags). ModelErrorCovariance is AddedCovariance(SumErrorRows(..));
+// a forecast of the certificate's region (guidance.hpp) adds samples to the sums first.
+struct ErrorSums {
+  static constexpr int kMaxHarmonics = 15;
+  Eigen::Matrix4d a = Eigen::Matrix4d::Zero();
+  int harmonics = 0;  // 0: no model error
+  Eigen::Matrix<double, 4, kMaxHarmonics> jt_harmonics = Eigen::Matrix<double, 4, kMaxHarmonics>::Zero();
+  bool travel = false;
+  Eigen::Vector4d jt_travel = Eigen::Vector4d::Zero();
+  std::vector<int> tags;                  // the tags in the data where there are two or more (links)
+  std::vector<Eigen::Vector4d> jt_links;  // one per tag in `tags`
+
+  // `count` samples more from `p_world_tag`, of the tag `tags[tag_index]` (none: an index past
+  // the end), standing still (no travel bias). O(1).
+  void Add(const Eigen::Vector3d& p_world_tag, const Eigen::Vector3d& p_world_anchor, int model_error_degree,
+           double count, std::size_t tag_index);
+};
+ErrorSums SumErrorRows(std::span<const Eigen::Vector3d> p_world_tag, std::span<const int> tag_id,
+                       const Eigen::Vector3d& p_world_anchor, const CovarianceOptions& options, double travel_bias_m);
+Eigen::Matrix4d AddedCovariance(const ErrorSums& sums, const CovarianceOptions& options, double travel_bias_m,
+                                double height_weight = 0.0);
+
 // The same split by kind (they sum to ModelErrorCovariance up to rounding): for the certificate's
 // account of what its region is made of.
 struct ModelErrorTerms {
@@ -71,6 +96,13 @@ struct ModelErrorTerms {
 ModelErrorTerms ModelErrorCovarianceTerms(std::span<const Eigen::Vector3d> p_world_tag, std::span<const int> tag_id,
                                           const Eigen::Vector3d& p_world_anchor, const CovarianceOptions& options,
                                           double travel_bias_m, double height_weight = 0.0);
+
+// The largest eigenvalue of the position block of the region's covariance: noise_variance times the
+// (p_A, gamma) block of the inverse of `information` (unit weights, of (p_A, gamma) and any tag
+// offsets after them), or with a height prior's information the inverse of information /
+// noise_variance plus it on z, plus `added` (the model error's part). +infinity where singular.
+double LargestPositionVariance(const Eigen::MatrixXd& information, double noise_variance, double height_information,
+                               const Eigen::Matrix4d& added);
 
 // A covariance with the ranges' noise scaled by `factor` (the correlation factor f): f P without
 // a prior; with one, (P^-1 - Lambda) / f + Lambda inverted, so the prior's information stays as it

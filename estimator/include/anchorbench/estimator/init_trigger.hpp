@@ -8,6 +8,7 @@
 
 #include <Eigen/Core>
 
+#include "anchorbench/estimator/guidance.hpp"
 #include "anchorbench/estimator/solve_result.hpp"
 
 namespace anchorbench::estimator {
@@ -89,6 +90,9 @@ class InitTrigger {
   // that each one can be reported (AnchorInitializer::TakeJudgements).
   virtual std::optional<Judgement> why_not() const { return std::nullopt; }
   virtual std::size_t evaluations() const { return 0; }
+  // What a forecast of its region needs from its last evaluation (guidance.hpp), where it judges a
+  // region and its last evaluation reached one (a solve that succeeded).
+  virtual std::optional<RegionBasis> region_basis() const { return std::nullopt; }
 };
 
 }  // namespace anchorbench::estimator
