@@ -1,5 +1,7 @@
 // anchorbench: Monte Carlo simulation and benchmarking of online UWB anchor initialization.
 // The only file that sees CLI11: it maps the command line onto the commands of commands.hpp.
+#include <malloc.h>
+
 #include <charconv>
 #include <iostream>
 #include <limits>
@@ -275,6 +277,12 @@ int RunCommandLine(int argc, char** argv, const anchorbench::registry::Component
 }
 
 int main(int argc, char** argv) {
+  // A solve's O(N) arrays (residuals, trimmed sums, ranges less their offsets) are allocated and
+  // freed at every evaluation; glibc's defaults give the larger ones fresh pages from the kernel
+  // each time (mmap, or a heap top trimmed and grown again). Keeping freed memory in the process
+  // makes a long replay's page faults those of its buffers alone (docs/method.md, "Cost").
+  mallopt(M_MMAP_THRESHOLD, 64 << 20);
+  mallopt(M_TRIM_THRESHOLD, 256 << 20);
   app::InstallInterruptHandlers();
   const anchorbench::registry::Components components = anchorbench::eval::MakeComponentsWithOracles();
 #ifdef ANCHORBENCH_MPI

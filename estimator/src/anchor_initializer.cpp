@@ -34,6 +34,12 @@ AnchorInitializer::AnchorInitializer(int anchor_id, const InitializerOptions& op
       trigger_(std::move(trigger)),
       solver_(filter_->AtSolve(std::move(solver))) {
   if (options_.height_check.enabled) solver_ = std::make_shared<HeightCheckedSolver>(solver_, options_.height_check);
+  // The whole buffer at once: address space only until samples are written, and no sample ever
+  // reallocates it (no O(N) copy inside Feed, no memory returned and touched again as it grows).
+  const auto cap = static_cast<std::size_t>(options_.max_buffered_samples);
+  p_world_tag_.reserve(cap);
+  range_m_.reserve(cap);
+  tag_id_.reserve(cap);
 }
 
 InitEvent AnchorInitializer::SolveNow(double t_s, double pdop) const {

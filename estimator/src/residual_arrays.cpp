@@ -4,22 +4,15 @@
 
 namespace anchorbench::estimator::internal {
 
-SampleArrays::SampleArrays(std::span<const Eigen::Vector3d> p_world_tag, std::span<const double> range_m)
-    : x(range_m.size()), y(range_m.size()), z(range_m.size()), d(range_m.size()) {
-  for (std::size_t k = 0; k < range_m.size(); ++k) {
-    const auto i = static_cast<Eigen::Index>(k);
-    x[i] = p_world_tag[k].x();
-    y[i] = p_world_tag[k].y();
-    z[i] = p_world_tag[k].z();
-    d[i] = range_m[k];
-  }
-}
-
 void ChunkResiduals::At(const SampleArrays& samples, Eigen::Index start, Eigen::Index size,
                         const Eigen::Vector4d& theta, bool with_directions) {
-  ux = theta(0) - samples.x.segment(start, size);
-  uy = theta(1) - samples.y.segment(start, size);
-  uz = theta(2) - samples.z.segment(start, size);
+  if (size == 0) return;
+  // The tag positions' coordinates, read in place with a stride (a Vector3d is 3 packed doubles).
+  using Coordinates = Eigen::Map<const Eigen::ArrayXd, 0, Eigen::InnerStride<3>>;
+  const double* first = samples.p[static_cast<std::size_t>(start)].data();
+  ux = theta(0) - Coordinates(first, size);
+  uy = theta(1) - Coordinates(first + 1, size);
+  uz = theta(2) - Coordinates(first + 2, size);
   r = (ux.square() + uy.square() + uz.square()).sqrt();  // the distances, for now
   if (with_directions) {
     for (Eigen::Index k = 0; k < size; ++k) {
@@ -30,7 +23,7 @@ void ChunkResiduals::At(const SampleArrays& samples, Eigen::Index start, Eigen::
       uz[k] *= inverse;
     }
   }
-  r = (r + theta(3)) - samples.d.segment(start, size);  // Eq. (11), in RangeResidual's order
+  r = (r + theta(3)) - Eigen::Map<const Eigen::ArrayXd>(samples.d.data() + start, size);  // Eq. (11), in RangeResidual's order
 }
 
 void NormalSums::Add(const Chunk& w, const ChunkResiduals& residuals) {

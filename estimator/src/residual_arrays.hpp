@@ -8,12 +8,15 @@
 
 namespace anchorbench::estimator::internal {
 
-// The samples of one solve as a structure of arrays (x, y, z, d): the passes below read them a
-// chunk at a time, vectorized. Built once per solve.
+// The samples of one solve, as the caller holds them: the passes below read them a chunk at a time
+// (the coordinates with a stride) into the chunk's arrays, and compute on those vectorized. No
+// copy of the samples: a solve allocates nothing that grows with N.
 struct SampleArrays {
-  SampleArrays(std::span<const Eigen::Vector3d> p_world_tag, std::span<const double> range_m);
-  Eigen::Index size() const { return d.size(); }
-  Eigen::ArrayXd x, y, z, d;
+  SampleArrays(std::span<const Eigen::Vector3d> p_world_tag, std::span<const double> range_m)
+      : p(p_world_tag), d(range_m) {}
+  Eigen::Index size() const { return static_cast<Eigen::Index>(d.size()); }
+  std::span<const Eigen::Vector3d> p;  // a view: a solve copies nothing per sample
+  std::span<const double> d;
 };
 
 // The residuals of Eq. (11) of the samples [start, start + size) at theta = (p_A, gamma): the

@@ -131,9 +131,11 @@ TEST(AnchorInitializer, TheBufferStaysWithinItsCap) {
     options.height_check.enabled = false;  // the pass is flat: this test is about the buffer
     AnchorInitializer initializer(7, options, std::make_unique<NullFilter>(), std::make_unique<FixedWindowTrigger>(),
                                   std::make_shared<AnchorSolver>());
+    const double* const buffer = initializer.range_m().data();  // reserved when made: never moved
     for (const RangeSample& s : samples) {
       initializer.Feed(s);
       ASSERT_LE(initializer.range_m().size(), 100u);
+      ASSERT_EQ(initializer.range_m().data(), buffer);
     }
     EXPECT_EQ(initializer.pdop().count(), static_cast<int>(samples.size()));
     EXPECT_EQ(initializer.samples_not_buffered() + static_cast<long>(initializer.range_m().size()),

@@ -98,9 +98,9 @@ struct PendingWork {
 // filter's online stage, the PDOP and the queue. Initializers share nothing mutable (solvers are
 // const, kernel tables immutable), so distinct initializers may each live on their own thread.
 //
-// Memory: at most max_buffered_samples samples buffered (36 bytes each, in vectors that may hold
-// up to twice that) plus as many queued behind a deferred solve (56 bytes each): at most ~5.2 MB
-// at the default cap, whatever the run's length.
+// Memory: at most max_buffered_samples samples buffered (36 bytes each, reserved when the
+// initializer is made: address space until written, never reallocated) plus as many queued behind
+// a deferred solve (56 bytes each): at most ~4.6 MB at the default cap, whatever the run's length.
 class AnchorInitializer {
  public:
   AnchorInitializer(int anchor_id, const InitializerOptions& options, std::unique_ptr<OutlierFilter> filter,

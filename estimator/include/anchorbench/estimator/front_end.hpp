@@ -77,7 +77,7 @@ struct FrontEndCounters {
 // LiveFrontEnd (live_front_end.hpp) is the thread-safe wrapper: any thread adds, and solves run
 // outside its lock through TakePendingSolve / WorkPendingSolve / CompletePendingSolve.
 //
-// Memory: at most max_anchors anchors, each with its chains' bounded buffers (~5.2 MB per chain
+// Memory: at most max_anchors anchors, each with its chains' bounded buffers (~4.6 MB per chain
 // at most, at the default caps: AnchorInitializer), max_waiting_ranges waiting ranges (24 bytes each) and
 // the pose history of PoseBufferOptions.
 class FrontEnd {
