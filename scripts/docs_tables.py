@@ -535,7 +535,7 @@ def guidance_cost():
             ["forecast built, 10000 samples", f"{micro['BM_ForecastBuild/10000']:.0f} us"],
             ["125 candidates ranked, 5 best with their samples to certify", f"{micro['BM_RankGrid125']:.0f} us"],
             ["8 anchors, 3000 samples each: forecasts and rankings", f"{eight_ms:.2f} ms"]]
-    return (table(["one call", "time"], rows) + "\n\n"
+    return (table(["one call (`bench_guidance`)", "time"], rows) + "\n\n"
             f"At 1 Hz, 8 anchors cost {eight_ms / 10:.2f}% of one core: within the 1% budget "
             f"(10 ms a second), {10 / eight_ms:.1f}x under it.")
 

@@ -213,14 +213,7 @@ CertifiedTrigger::Verdict CertifiedTrigger::RuleOutAlternatives(std::span<const 
 }
 
 std::vector<int> CertifiedTrigger::EstimatedTags(std::span<const int> tag_id, std::size_t samples) const {
-  std::vector<int> tags;
-  if (tag_biases_.estimate && tag_id.size() == samples) {
-    for (const int tag : tag_id) {
-      if (std::find(tags.begin(), tags.end(), tag) == tags.end()) tags.push_back(tag);
-    }
-  }
-  if (tags.empty()) tags.push_back(0);
-  return tags;
+  return OffsetTags(tag_id, samples, tag_biases_.estimate);
 }
 
 double CertifiedTrigger::LargestVariance(std::span<const Eigen::Vector3d> p_world_tag, std::span<const int> tag_id,

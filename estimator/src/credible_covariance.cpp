@@ -8,6 +8,7 @@
 #include <Eigen/Cholesky>
 #include <Eigen/Eigenvalues>
 
+#include "anchorbench/estimator/tag_biases.hpp"
 #include "numerics.hpp"
 
 namespace anchorbench::estimator {
@@ -87,31 +88,21 @@ ErrorSums SumErrorRows(std::span<const Eigen::Vector3d> p_world_tag, std::span<c
   sums.harmonics = options.model_error_m > 0.0 ? HarmonicCount(options.model_error_degree) : 0;
   sums.travel = options.travel_bias && travel_bias_m != 0.0;
   // The tags in the data, a handful at most (a robot's); one tag's offset is the bias itself.
-  std::vector<int> tags;
   if (options.link_offset_m > 0.0 && tag_id.size() == p_world_tag.size()) {
-    for (const int tag : tag_id) {
-      if (std::find(tags.begin(), tags.end(), tag) == tags.end()) tags.push_back(tag);
+    std::vector<int> tags = TagsInOrder(tag_id);
+    if (tags.size() >= 2) {
+      sums.tags = std::move(tags);
+      sums.jt_links.assign(sums.tags.size(), Eigen::Vector4d::Zero());
     }
   }
-  if (tags.size() >= 2) {
-    sums.tags = std::move(tags);
-    sums.jt_links.assign(sums.tags.size(), Eigen::Vector4d::Zero());
-  }
   if (sums.harmonics == 0 && !sums.travel && sums.tags.empty()) return sums;
-  double y[ErrorSums::kMaxHarmonics];
   for (std::size_t k = 0; k < p_world_tag.size(); ++k) {
     Row row;
     if (!RowAt(p_world_tag[k], p_world_anchor, &row)) continue;
-    sums.a.noalias() += row.j * row.j.transpose();
-    if (sums.harmonics > 0) {
-      Harmonics(row.unit, options.model_error_degree, y);
-      for (int h = 0; h < sums.harmonics; ++h) sums.jt_harmonics.col(h) += row.j * y[h];
-    }
+    const std::size_t link = sums.tags.empty() ? 0
+        : static_cast<std::size_t>(std::find(sums.tags.begin(), sums.tags.end(), tag_id[k]) - sums.tags.begin());
+    sums.AddRow(row.unit, row.j, options.model_error_degree, 1.0, link);
     if (sums.travel) sums.jt_travel += row.j * RangeRateSign(p_world_tag, p_world_anchor, k);
-    if (!sums.tags.empty()) {
-      sums.jt_links[static_cast<std::size_t>(std::find(sums.tags.begin(), sums.tags.end(), tag_id[k]) - sums.tags.begin())] +=
-          row.j;
-    }
   }
   return sums;
 }
@@ -119,14 +110,18 @@ ErrorSums SumErrorRows(std::span<const Eigen::Vector3d> p_world_tag, std::span<c
 void ErrorSums::Add(const Eigen::Vector3d& p_world_tag, const Eigen::Vector3d& p_world_anchor, int model_error_degree,
                     double count, std::size_t tag_index) {
   Row row;
-  if (!RowAt(p_world_tag, p_world_anchor, &row)) return;
-  a.noalias() += count * row.j * row.j.transpose();
+  if (RowAt(p_world_tag, p_world_anchor, &row)) AddRow(row.unit, row.j, model_error_degree, count, tag_index);
+}
+
+void ErrorSums::AddRow(const Eigen::Vector3d& unit, const Eigen::Vector4d& j, int model_error_degree, double count,
+                       std::size_t tag_index) {
+  a.noalias() += count * j * j.transpose();
   if (harmonics > 0) {
     double y[kMaxHarmonics];
-    Harmonics(row.unit, model_error_degree, y);
-    for (int h = 0; h < harmonics; ++h) jt_harmonics.col(h) += count * row.j * y[h];
+    Harmonics(unit, model_error_degree, y);
+    for (int h = 0; h < harmonics; ++h) jt_harmonics.col(h) += count * j * y[h];
   }
-  if (tag_index < jt_links.size()) jt_links[tag_index] += count * row.j;
+  if (tag_index < jt_links.size()) jt_links[tag_index] += count * j;
 }
 
 namespace {

@@ -12,19 +12,7 @@ namespace {
 
 constexpr double kInf = std::numeric_limits<double>::infinity();
 
-// The tags whose offsets are unknowns, in the order they first appear ({0}: one bias for all), as
-// the certificate counts them.
-std::vector<int> OffsetTags(std::span<const int> tag_id, std::size_t samples, bool tag_offsets) {
-  std::vector<int> tags;
-  if (tag_offsets && tag_id.size() == samples) {
-    for (const int tag : tag_id) {
-      if (std::find(tags.begin(), tags.end(), tag) == tags.end()) tags.push_back(tag);
-    }
-  }
-  if (tags.empty()) tags.push_back(0);
-  return tags;
-}
-
+// The index of the last sample's tag in `tags` (0 where it is not there, or there is none).
 std::size_t IndexOf(const std::vector<int>& tags, std::span<const int> tag_id) {
   if (tag_id.empty()) return 0;
   const auto found = std::find(tags.begin(), tags.end(), tag_id.back());
@@ -36,12 +24,12 @@ std::size_t IndexOf(const std::vector<int>& tags, std::span<const int> tag_id) {
 RegionForecast::RegionForecast(const RegionBasis& basis, std::span<const Eigen::Vector3d> p_world_tag,
                                std::span<const int> tag_id)
     : basis_(basis),
-      sums_(SumErrorRows(p_world_tag, tag_id, basis.p_world_anchor, basis.covariance, basis.travel_bias_m)),
-      tags_(OffsetTags(tag_id, p_world_tag.size(), basis.tag_offsets)) {
-  information_ = TagInformation(p_world_tag, tags_.size() > 1 ? tag_id : std::span<const int>(), tags_,
+      sums_(SumErrorRows(p_world_tag, tag_id, basis.p_world_anchor, basis.covariance, basis.travel_bias_m)) {
+  const std::vector<int> tags = OffsetTags(tag_id, p_world_tag.size(), basis.tag_offsets);
+  information_ = TagInformation(p_world_tag, tags.size() > 1 ? tag_id : std::span<const int>(), tags,
                                 basis.p_world_anchor);
-  last_tag_index_ = tags_.size() > 1 ? IndexOf(tags_, tag_id) : 0;
-  last_link_index_ = sums_.tags.empty() ? 0 : IndexOf(sums_.tags, tag_id);
+  last_tag_index_ = tags.size() > 1 ? IndexOf(tags, tag_id) : 0;
+  last_link_index_ = IndexOf(sums_.tags, tag_id);  // 0 without links: none to add to
   region_now_m_ = std::sqrt(basis_.region_chi2 * LargestVariance(information_, sums_));
 }
 
@@ -51,14 +39,18 @@ double RegionForecast::RegionAfter(const Eigen::Vector3d& p_world_candidate, dou
   const double distance_m = diff.norm();
   if (!(distance_m > 0.0)) return region_now_m_;  // at the anchor: a range says nothing of direction
   // Each sample's row [-u, 1, e_tag] joins the information; the added part's sums take it too.
-  Eigen::VectorXd row = Eigen::VectorXd::Zero(information_.rows());
-  row.head<3>() = -diff / distance_m;
-  row(3) = 1.0;
-  if (last_tag_index_ > 0) row(3 + static_cast<Eigen::Index>(last_tag_index_)) = 1.0;
-  const Eigen::MatrixXd information = information_ + samples * row * row.transpose();
+  Eigen::Vector4d j;
+  j << -diff / distance_m, 1.0;
+  Eigen::MatrixXd information = information_;
+  information.topLeftCorner<4, 4>().noalias() += samples * j * j.transpose();
+  if (last_tag_index_ > 0) {  // the tag's own offset column
+    const auto c = 3 + static_cast<Eigen::Index>(last_tag_index_);
+    information.block<4, 1>(0, c) += samples * j;
+    information.block<1, 4>(c, 0) += samples * j.transpose();
+    information(c, c) += samples;
+  }
   ErrorSums sums = sums_;
-  sums.Add(p_world_candidate, basis_.p_world_anchor, basis_.covariance.model_error_degree, samples,
-           sums.tags.empty() ? sums.tags.size() : last_link_index_);
+  sums.AddRow(diff / distance_m, j, basis_.covariance.model_error_degree, samples, last_link_index_);
   return std::sqrt(basis_.region_chi2 * LargestVariance(information, sums));
 }
 

@@ -21,17 +21,27 @@ namespace {
 constexpr double kSettledOffsetM = 1e-4;
 }  // namespace
 
+std::vector<int> TagsInOrder(std::span<const int> tag_id) {
+  std::vector<int> tags;
+  for (const int tag : tag_id) {
+    if (std::find(tags.begin(), tags.end(), tag) == tags.end()) tags.push_back(tag);
+  }
+  return tags;
+}
+
+std::vector<int> OffsetTags(std::span<const int> tag_id, std::size_t samples, bool estimate) {
+  std::vector<int> tags;
+  if (estimate && tag_id.size() == samples) tags = TagsInOrder(tag_id);
+  if (tags.empty()) tags.push_back(0);
+  return tags;
+}
+
 SolveResult SolveWithTagBiases(const Solver& solver, std::span<const Eigen::Vector3d> p_world_tag,
                                std::span<const double> range_m, std::span<const int> tag_id,
                                const TagBiasOptions& options, std::vector<double>* offsets_m,
                                std::vector<double>* corrected_m) {
-  std::vector<int> tags;
-  if (options.estimate && tag_id.size() == range_m.size()) {
-    for (const int tag : tag_id) {
-      if (std::find(tags.begin(), tags.end(), tag) == tags.end()) tags.push_back(tag);
-    }
-  }
-  if (offsets_m) offsets_m->assign(std::max<std::size_t>(tags.size(), 1), 0.0);
+  const std::vector<int> tags = OffsetTags(tag_id, range_m.size(), options.estimate);
+  if (offsets_m) offsets_m->assign(tags.size(), 0.0);
   if (corrected_m) corrected_m->assign(range_m.begin(), range_m.end());
   if (tags.size() < 2) return solver.Solve(p_world_tag, range_m);
   std::vector<std::size_t> index(range_m.size());

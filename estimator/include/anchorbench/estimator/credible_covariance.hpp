@@ -80,6 +80,9 @@ struct ErrorSums {
   // the end), standing still (no travel bias). O(1).
   void Add(const Eigen::Vector3d& p_world_tag, const Eigen::Vector3d& p_world_anchor, int model_error_degree,
            double count, std::size_t tag_index);
+  // The same for a row j = [-u, 1] of the direction u anchor -> tag (SumErrorRows' samples).
+  void AddRow(const Eigen::Vector3d& unit, const Eigen::Vector4d& j, int model_error_degree, double count,
+              std::size_t tag_index);
 };
 ErrorSums SumErrorRows(std::span<const Eigen::Vector3d> p_world_tag, std::span<const int> tag_id,
                        const Eigen::Vector3d& p_world_anchor, const CovarianceOptions& options, double travel_bias_m);

@@ -67,9 +67,8 @@ class RegionForecast {
   RegionBasis basis_;
   ErrorSums sums_;                    // the added part's
   Eigen::MatrixXd information_;       // of (p_A, gamma[, each later tag's offset]), unit weights
-  std::vector<int> tags_;             // with tag offsets: the tags, in the order of their columns
-  std::size_t last_tag_index_ = 0;    // of the last sample's tag, in tags_ and in sums_.tags
-  std::size_t last_link_index_ = 0;
+  std::size_t last_tag_index_ = 0;   // of the last sample's tag among the offset tags (0: the first, no column)
+  std::size_t last_link_index_ = 0;  // and in sums_.tags (without links: none to add to)
   double region_now_m_ = 0.0;
 };
 

@@ -31,6 +31,12 @@ SolveResult SolveWithTagBiases(const Solver& solver, std::span<const Eigen::Vect
                                const TagBiasOptions& options, std::vector<double>* offsets_m = nullptr,
                                std::vector<double>* corrected_m = nullptr);
 
+// The distinct tags of `tag_id`, in the order they first appear.
+std::vector<int> TagsInOrder(std::span<const int> tag_id);
+// The tags whose offsets are among a solve's unknowns: with `estimate` and a tag for each of the
+// `samples`, TagsInOrder; else {0}, one bias for all.
+std::vector<int> OffsetTags(std::span<const int> tag_id, std::size_t samples, bool estimate);
+
 // The information of (p_A, gamma, delta_2..delta_T) at an anchor position: rows [-u_k, 1, e_tag(k)]
 // (the first of `tags` has no offset of its own). O(N T^2).
 Eigen::MatrixXd TagInformation(std::span<const Eigen::Vector3d> p_world_tag, std::span<const int> tag_id,
