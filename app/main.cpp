@@ -98,6 +98,7 @@ struct CommandLine {
   app::SweepArgs sweep;
   app::PdopStudyArgs study;
   app::MonteCarloArgs navigate;
+  app::ExploreArgs explore;
   app::ConvertHanyangArgs convert;
   app::CalibrateArgs calibrate;
   app::MergeArgs merge;
@@ -107,6 +108,7 @@ struct CommandLine {
   CLI::App* sweep_cmd = nullptr;
   CLI::App* study_cmd = nullptr;
   CLI::App* navigate_cmd = nullptr;
+  CLI::App* explore_cmd = nullptr;
   CLI::App* convert_cmd = nullptr;
   CLI::App* calibrate_cmd = nullptr;
   CLI::App* merge_cmd = nullptr;
@@ -213,6 +215,14 @@ void AddMonteCarloCommands(CLI::App& cli, CommandLine& c) {
                              "I/N: compute only shard I of N of the (row, realization) units into a shard folder; "
                              "`anchorbench merge` joins the N folders into the unsharded run's bytes");
 
+  c.explore_cmd = cli.add_subcommand(
+      "explore", "Closed loop: the robot's pattern alone against the pattern with guidance's detours, until every "
+                 "anchor is certified (docs/guidance.md)");
+  c.explore_cmd->add_option("config", c.explore.config, "Experiment config (YAML) with an 'exploration' section")
+      ->required();
+  AddMonteCarloOptions(c.explore_cmd, c.explore);
+  c.explore_cmd->add_option("--set", c.explore.overrides, "Override a config value: KEY=VALUE, KEY a dotted path (repeatable)");
+
   c.calibrate_cmd = cli.add_subcommand(
       "calibrate", "Fit scenario parameters so an experiment's table matches the published one (docs/calibration.md)");
   c.calibrate_cmd->add_option("config", c.calibrate.config, "Calibration file (YAML): experiment, parameters, fit")
@@ -230,6 +240,7 @@ int Dispatch(const CommandLine& c, const app::AppContext& context) {
   if (c.sweep_cmd->parsed()) return app::SweepCommand(c.sweep, context);
   if (c.study_cmd->parsed()) return app::PdopStudyCommand(c.study, context);
   if (c.navigate_cmd->parsed()) return app::NavigateCommand(c.navigate, context);
+  if (c.explore_cmd->parsed()) return app::ExploreCommand(c.explore, context);
   if (c.calibrate_cmd->parsed()) return app::CalibrateCommand(c.calibrate, context);
   if (c.merge_cmd->parsed()) return app::MergeCommand(c.merge, context);
   if (c.convert_cmd->parsed()) return app::ConvertHanyangCommand(c.convert);

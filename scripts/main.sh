@@ -37,6 +37,10 @@ done
 for study in navigation_tunnel navigation_uav_hall navigation_radio_biases; do
   step "$bin" navigate "configs/$study.yaml" --out "results/$study" --quiet --overwrite
 done
+# Guidance in the loop (issue 38): a drone's patterns in the hall, a ground robot in the tunnel
+for study in exploration_uav_hall exploration_tunnel; do
+  step "$bin" explore "configs/$study.yaml" --out "results/$study" --quiet --overwrite
+done
 for sweep in sweep_bias_aware stress stress_ransac; do
   step "$bin" sweep "configs/$sweep.yaml" --out "results/$sweep" --quiet --overwrite
 done

@@ -77,6 +77,11 @@ int PdopStudyCommand(const PdopStudyArgs& args, const AppContext& app);
 // The navigation study (docs/navigation.md): each trigger's anchors in a drifting robot's filter.
 int NavigateCommand(const MonteCarloArgs& args, const AppContext& app);
 
+struct ExploreArgs : MonteCarloArgs {
+  std::vector<std::string> overrides;  // --set KEY=VALUE
+};
+int ExploreCommand(const ExploreArgs& args, const AppContext& app);
+
 // Joins the shard folders of one run or sweep (--shard I/N, every I) into its single folder.
 struct MergeArgs {
   std::string out;

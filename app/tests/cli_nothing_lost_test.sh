@@ -68,6 +68,11 @@ refused "error_bins_below_10_ms_are_refused" "error_bin_s': must be in [0.01, 1e
   "$bin" navigate "$dir/bins.yaml" --out "$dir/o2" --quiet
 printf 'base: small.yaml\nnavigation: {error_bin_s: 0.01}\nscenario: {trajectory: {speed_mps: 0.01}}\n' >"$dir/many_bins.yaml"
 refused "more_error_bins_than_1e5_are_refused" "at most 1e5" "$dir/o2" "$bin" navigate "$dir/many_bins.yaml" --out "$dir/o2" --quiet
+{ cat "$dir/small.yaml"; printf 'exploration: {policies: [pattern, random]}\n'; } >"$dir/explore_bad.yaml"
+refused "an_unknown_exploration_policy_is_refused" "exploration.policies': unknown policy 'random'" "$dir/o2" \
+  "$bin" explore "$dir/explore_bad.yaml" --out "$dir/o2" --quiet
+refused "explore_without_an_exploration_section_is_refused" "no 'exploration' section" "$dir/o2" \
+  "$bin" explore "$dir/small.yaml" --out "$dir/o2" --quiet
 printf 'base: small.yaml\nnavigation: {}\n' >"$dir/nav.yaml"
 for key in navigation.sigma_bias_mps_per_sqrt_s navigation.sigma_start_m scenario.ranging.sigma_range_m \
   scenario.tunnel.width_m estimator.filter.tau_m; do

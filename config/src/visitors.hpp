@@ -261,6 +261,26 @@ void Navigation(V& v, schema::NavigationConfig& o) {
 }
 
 template <typename V>
+void Exploration(V& v, schema::ExplorationConfig& o, const registry::Components& components) {
+  v.NameList("policies", o.policies, [](const std::string& name, std::string* why) {
+    if (name == schema::kPatternPolicy || name == schema::kGuidedPolicy) return true;
+    if (why) *why = "unknown policy '" + name + "' (pattern, guided)";
+    return false;
+  });
+  v.Name("trigger", o.trigger, [&](const std::string& name, std::string* why) { return components.triggers.Knows(name, why); });
+  v.Number("max_duration_s", o.max_duration_s);
+  v.Number("decision_period_s", o.decision_period_s);
+  v.Number("reach_m", o.reach_m);
+  v.Integer("grid_steps", o.grid_steps);
+  v.Number("dwell_s", o.dwell_s);
+  v.Integer("detours_per_anchor", o.detours_per_anchor);
+  v.Number("speed_mps", o.speed_mps);
+  v.Number("clearance_m", o.clearance_m);
+  v.Flag("vertical", o.vertical);
+  v.Check(o);
+}
+
+template <typename V>
 void Experiment(V& v, schema::ExperimentConfig& c, const registry::Components& components) {
   v.Unsigned("seed", c.seed, schema::kMaxSeed);
   v.Integer("realizations", c.realizations, 1, 100000000);
@@ -270,6 +290,8 @@ void Experiment(V& v, schema::ExperimentConfig& c, const registry::Components& c
   v.TextList("only_rows", c.only_rows);
   v.TextMap("sweep", c.sweep);
   v.OptionalSection("navigation", c.navigation, [](auto& s, schema::NavigationConfig& o) { Navigation(s, o); });
+  v.OptionalSection("exploration", c.exploration,
+                    [&](auto& s, schema::ExplorationConfig& o) { Exploration(s, o, components); });
   // Rows start from the base read above, so the base must come first in the visit.
   int index = 0;
   v.List("rows", c.rows,

@@ -1,6 +1,5 @@
 #include "anchorbench/engine/navigation.hpp"
 
-#include <mutex>
 #include <sstream>
 
 #include "anchorbench/engine/executor.hpp"
@@ -134,21 +133,7 @@ std::vector<NavigationRecord> RunNavigation(const schema::ExperimentConfig& conf
 std::vector<NavigationRecord> NavigateUnits(int units, int threads,
                                             const std::function<std::vector<NavigationRecord>(int unit)>& unit,
                                             const RunControl& control) {
-  std::vector<std::vector<NavigationRecord>> by_unit(static_cast<std::size_t>(units));
-  std::mutex progress_mutex;
-  long long done = 0;
-  if (control.progress) control.progress(0, units);
-  ParallelFor(units, threads, [&](int u, int) {
-    by_unit[static_cast<std::size_t>(u)] = unit(u);
-    if (!control.progress) return;
-    const std::lock_guard<std::mutex> lock(progress_mutex);
-    control.progress(++done, units);
-  }, control.stop);
-  std::vector<NavigationRecord> records;
-  for (std::vector<NavigationRecord>& records_of_unit : by_unit) {
-    for (NavigationRecord& r : records_of_unit) records.push_back(std::move(r));
-  }
-  return records;
+  return ParallelRecords(units, threads, unit, control);
 }
 
 std::string WriteNavigationTables(const FileWriter& write, const schema::ExperimentConfig& config,

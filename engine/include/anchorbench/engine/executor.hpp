@@ -4,6 +4,7 @@
 // job (app's MpiExecutor) are interchangeable because a chunk's bytes do not depend on either.
 
 #include <functional>
+#include <mutex>
 #include <string>
 #include <vector>
 
@@ -35,6 +36,28 @@ class Executor {
 // the loop ends in Interrupted. The one parallel loop of the engine.
 void ParallelFor(int count, int threads, const std::function<void(int item, int thread)>& work,
                  const StopFlag* stop = nullptr);
+
+// `units` units on `threads` threads (ParallelFor), each giving its records, joined in unit order:
+// the same for any thread count. `control` sees every unit done, and may stop the rest.
+template <typename Record>
+std::vector<Record> ParallelRecords(int units, int threads, const std::function<std::vector<Record>(int unit)>& unit,
+                                    const RunControl& control) {
+  std::vector<std::vector<Record>> by_unit(static_cast<std::size_t>(units));
+  std::mutex progress_mutex;
+  long long done = 0;
+  if (control.progress) control.progress(0, units);
+  ParallelFor(units, threads, [&](int u, int) {
+    by_unit[static_cast<std::size_t>(u)] = unit(u);
+    if (!control.progress) return;
+    const std::lock_guard<std::mutex> lock(progress_mutex);
+    control.progress(++done, units);
+  }, control.stop);
+  std::vector<Record> records;
+  for (std::vector<Record>& records_of_unit : by_unit) {
+    for (Record& r : records_of_unit) records.push_back(std::move(r));
+  }
+  return records;
+}
 
 // This process's threads (OpenMP), one chunk per thread at a time, dynamically scheduled; with
 // `stop`, checked before every unit (run_control.hpp).

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "anchorbench/schema/estimator_config.hpp"
+#include "anchorbench/schema/exploration.hpp"
 #include "anchorbench/schema/navigation.hpp"
 #include "anchorbench/sim/scenario.hpp"
 
@@ -63,6 +64,8 @@ struct ExperimentConfig {
   std::vector<std::pair<std::string, std::string>> sweep;
   // The navigation study (anchorbench navigate; docs/navigation.md): absent unless the file has it.
   std::optional<NavigationConfig> navigation;
+  // The closed-loop exploration study (anchorbench explore; docs/guidance.md): absent unless given.
+  std::optional<ExplorationConfig> exploration;
 };
 
 // The rows `run` executes: config.rows (those in only_rows, if given), or the base as a single

@@ -77,6 +77,14 @@ struct Scenario {
   std::vector<SimRange> ranges;
 };
 
+// A realization's anchors (positions and biases), from their own streams.
+std::vector<SimAnchor> DrawAnchors(const ScenarioOptions& options, std::uint64_t seed, std::uint64_t realization);
+// The body's path of a realization, its kind drawn (Table I's mix of suboptimal runs).
+Trajectory DrawBodyPath(const ScenarioOptions& options, const std::vector<SimAnchor>& anchors, std::uint64_t seed,
+                        std::uint64_t realization);
+// Heading along the direction of travel (central differences; kept while standing still).
+std::vector<double> Headings(const std::vector<Eigen::Vector3d>& p_world_body);
+
 // Deterministic in (options, seed, realization); every noise source draws from its own stream.
 Scenario GenerateScenario(const ScenarioOptions& options, std::uint64_t seed, std::uint64_t realization);
 

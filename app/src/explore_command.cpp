@@ -1,0 +1,35 @@
+#include <iostream>
+
+#include "anchorbench/config/load_config.hpp"
+#include "anchorbench/engine/exploration.hpp"
+#include "monte_carlo_command.hpp"
+
+namespace anchorbench::app {
+
+int ExploreCommand(const ExploreArgs& args, const AppContext& app) {
+  schema::ExperimentConfig config = config::LoadConfig(args.config, args.overrides, app.components);
+  if (args.realizations) config.realizations = *args.realizations;
+  engine::CheckExploration(config, app.components);  // before the result folder is claimed
+  const MonteCarloSetup setup = SetUpMonteCarlo(args, config.name);
+  // A line of ~100 bytes per (row, realization, policy), and the tables.
+  const std::uintmax_t lines = static_cast<std::uintmax_t>(config.realizations) * schema::RowsOf(config).size() *
+                               config.exploration->policies.size();
+  const std::unique_ptr<io::ResultFolder> out = OpenResultFolder(args, setup, 120 * lines + (1 << 16));
+
+  Progress progress("explore " + config.name, args.quiet);
+  const std::vector<engine::ExplorationRecord> records = engine::RunExploration(
+      config, app.components, setup.threads,
+      {[&](long long done, long long total) { progress.Update(done, total); }, app.stop});
+  const double wall_time_s = progress.elapsed_s();
+  progress.Finish(static_cast<long long>(records.size() / config.exploration->policies.size()));
+  std::vector<std::string> command_line{"explore"};
+  for (const std::string& assignment : args.overrides) command_line.push_back("--set " + assignment);
+  const std::string markdown = engine::WriteExplorationFiles(
+      [&](const std::string& name, const std::function<void(std::ostream&)>& write) { out->Write(name, write); },
+      config, records, RunInfoOf(args, setup, app, config, wall_time_s, command_line));
+  out->Commit();
+  if (!args.quiet) std::cout << markdown;
+  return 0;
+}
+
+}  // namespace anchorbench::app

@@ -1,0 +1,367 @@
+#include "anchorbench/engine/exploration.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <iomanip>
+#include <limits>
+#include <map>
+#include <optional>
+#include <sstream>
+#include <stdexcept>
+
+#include "anchorbench/engine/attempt.hpp"
+#include "anchorbench/engine/executor.hpp"
+#include "anchorbench/engine/monte_carlo.hpp"
+#include "anchorbench/estimator/front_end.hpp"
+#include "anchorbench/estimator/guide.hpp"
+#include "anchorbench/report/run_outputs.hpp"
+#include "anchorbench/schema/input_error.hpp"
+#include "anchorbench/sim/range_draws.hpp"
+#include "anchorbench/sim/scenario.hpp"
+
+namespace anchorbench::engine {
+namespace {
+
+constexpr double kInf = std::numeric_limits<double>::infinity();
+
+// The environment's box shrunk by the clearance: where a detour may go.
+struct FreeSpace {
+  Eigen::Vector3d low, high;
+  bool Holds(const Eigen::Vector3d& p) const { return (p.array() >= low.array()).all() && (p.array() <= high.array()).all(); }
+};
+
+FreeSpace FreeSpaceOf(const sim::ScenarioOptions& scenario, double clearance_m) {
+  const Eigen::Vector3d margin = Eigen::Vector3d::Constant(clearance_m);
+  if (scenario.environment == sim::EnvironmentKind::kTunnel) {
+    const sim::TunnelOptions& t = scenario.tunnel;
+    return {Eigen::Vector3d(0.0, -0.5 * t.width_m, 0.0) + margin, Eigen::Vector3d(t.length_m, 0.5 * t.width_m, t.height_m) - margin};
+  }
+  const sim::HallOptions& h = scenario.hall;
+  return {margin, Eigen::Vector3d(h.length_m, h.width_m, h.height_m) - margin};
+}
+
+// The body over one run: the pattern back and forth, or a detour out to a candidate, a dwell
+// there, and back to where it left the pattern. One Step() per epoch.
+class Body {
+ public:
+  Body(const std::vector<Eigen::Vector3d>& pattern, double step_m) : pattern_(pattern), step_m_(step_m), p_(pattern.front()) {}
+
+  const Eigen::Vector3d& p_world_body() const { return p_; }
+  double yaw_rad() const { return yaw_rad_; }
+  double distance_m() const { return distance_m_; }
+  bool on_pattern() const { return leg_ == Leg::kPattern; }
+
+  void Detour(const Eigen::Vector3d& p_world_target, int dwell_epochs) {
+    target_ = p_world_target;
+    dwell_epochs_ = dwell_epochs;
+    leg_ = Leg::kOut;
+  }
+
+  void Step() {
+    const Eigen::Vector3d p_before = p_;
+    switch (leg_) {
+      case Leg::kPattern: AlongPattern(); break;
+      case Leg::kOut:
+        if (Toward(target_)) leg_ = Leg::kDwell;
+        break;
+      case Leg::kDwell:
+        if (--dwell_epochs_ <= 0) leg_ = Leg::kBack;
+        break;
+      case Leg::kBack:
+        if (Toward(pattern_[index_])) leg_ = Leg::kPattern;
+        break;
+    }
+    const Eigen::Vector3d step = p_ - p_before;
+    distance_m_ += step.norm();
+    if (step.head<2>().norm() > 1e-9) yaw_rad_ = std::atan2(step.y(), step.x());
+  }
+
+ private:
+  enum class Leg { kPattern, kOut, kDwell, kBack };
+
+  void AlongPattern() {
+    if (pattern_.size() < 2) return;
+    const long next = static_cast<long>(index_) + direction_;
+    if (next < 0 || next >= static_cast<long>(pattern_.size())) direction_ = -direction_;  // back the way it came
+    index_ = static_cast<std::size_t>(static_cast<long>(index_) + direction_);
+    p_ = pattern_[index_];
+  }
+
+  // One step of step_m_ toward `p_world_target`; true once there.
+  bool Toward(const Eigen::Vector3d& p_world_target) {
+    const Eigen::Vector3d to = p_world_target - p_;
+    if (to.norm() <= step_m_) {
+      p_ = p_world_target;
+      return true;
+    }
+    p_ += step_m_ * to.normalized();
+    return false;
+  }
+
+  const std::vector<Eigen::Vector3d>& pattern_;
+  double step_m_;
+  Eigen::Vector3d p_;
+  Eigen::Vector3d target_ = Eigen::Vector3d::Zero();
+  std::size_t index_ = 0;
+  int direction_ = 1;
+  int dwell_epochs_ = 0;
+  Leg leg_ = Leg::kPattern;
+  double yaw_rad_ = 0.0;
+  double distance_m_ = 0.0;
+};
+
+// Guided: the candidate within reach that certifies a waiting anchor soonest (the flight there at
+// speed_mps plus its forecast samples at the link's rate), among those forecast to certify it
+// within the dwell; none otherwise: a detour costs the pattern's progress, so it is flown only
+// where the forecast says it pays. An anchor whose region is within D already waits for a test
+// the forecast does not see (the mirror, an alternative, the stability): no detour for it either
+// (docs/guidance.md). Nor for an anchor that had detours_per_anchor detours already: the forecast
+// was wrong for it (a test it does not see holds it), and more of them would stall the pattern.
+struct Detour {
+  int anchor_id = 0;
+  Eigen::Vector3d p_world_candidate;
+};
+std::optional<Detour> ChooseCandidate(const estimator::FrontEnd& front_end, const Eigen::Vector3d& p_world_body,
+                                      const schema::ExplorationConfig& ex, const FreeSpace& space, double rate_hz,
+                                      const std::map<int, int>& detours_of) {
+  estimator::GuideRequest request;
+  for (const Eigen::Vector3d& p : estimator::CandidateGrid(p_world_body, ex.reach_m, ex.grid_steps)) {
+    if (space.Holds(p) && (ex.vertical || std::abs(p.z() - p_world_body.z()) < 1e-9)) request.p_world_candidate.push_back(p);
+  }
+  if (request.p_world_candidate.empty()) return std::nullopt;
+  request.samples = std::max(1.0, ex.dwell_s * rate_hz);
+  request.range_rate_hz = rate_hz;
+  std::optional<Detour> soonest;
+  double soonest_s = kInf;
+  for (const estimator::AnchorGuidance& anchor : estimator::Guide(front_end, request)) {
+    if (!(anchor.region_m > anchor.accuracy_m)) continue;  // held by another test
+    if (const auto had = detours_of.find(anchor.anchor_id); had != detours_of.end() && had->second >= ex.detours_per_anchor) {
+      continue;
+    }
+    for (const estimator::CandidateForecast& c : anchor.best) {
+      if (!(c.samples_to_certify <= request.samples)) continue;
+      const double total_s = (c.p_world_candidate - p_world_body).norm() / ex.speed_mps + c.samples_to_certify / rate_hz;
+      if (total_s < soonest_s) {
+        soonest_s = total_s;
+        soonest = Detour{anchor.anchor_id, c.p_world_candidate};
+      }
+    }
+  }
+  return soonest;
+}
+
+// One policy's run on the realization's anchors and pattern.
+ExplorationRecord RunPolicy(const schema::RowConfig& row, std::uint64_t seed, int realization,
+                            const schema::ExplorationConfig& ex, const registry::Components& components,
+                            const std::vector<sim::SimAnchor>& anchors, const std::vector<Eigen::Vector3d>& pattern,
+                            bool guided) {
+  const sim::ScenarioOptions& scenario = row.scenario;
+  const double rate_hz = scenario.trajectory.rate_hz, dt = 1.0 / rate_hz;
+  std::map<int, schema::AnchorTruth> truth;
+  for (const sim::SimAnchor& anchor : anchors) truth[anchor.id] = {anchor.p_world_anchor, anchor.bias_m};
+  estimator::FrontEnd front_end([&](int anchor_id) {
+    std::vector<estimator::AnchorInitializer> chain;
+    chain.push_back(registry::MakeInitializer(components, anchor_id, row.estimator, ex.trigger,
+                                              SolverSeed(seed, static_cast<std::uint64_t>(realization), anchor_id),
+                                              truth.at(anchor_id).p_world_anchor));
+    return chain;
+  });
+  for (const sim::SimAnchor& anchor : anchors) front_end.AddAnchor(anchor.id);
+  // Every policy draws from the same streams: the same link noise, outliers and position errors.
+  sim::RangeDraws draws(scenario.ranging, seed, static_cast<std::uint64_t>(realization), scenario.tag_offsets_m.size(),
+                        anchors);
+  sim::TagPlacement placement(scenario, seed, static_cast<std::uint64_t>(realization));
+  const FreeSpace space = FreeSpaceOf(scenario, ex.clearance_m);
+  Body body(pattern, ex.speed_mps * dt);
+
+  ExplorationRecord record;
+  record.policy = guided ? schema::kGuidedPolicy : schema::kPatternPolicy;
+  record.anchors = static_cast<int>(anchors.size());
+  const double accuracy_m = row.estimator.certificate.accuracy_m;
+  std::vector<Eigen::Vector3d> p_true, p_reported;
+  std::vector<sim::SimRange> ranges;
+  double next_decision_s = ex.decision_period_s;
+  std::map<int, int> detours_of;  // guided: detours flown for each anchor
+  const auto epochs = static_cast<std::size_t>(std::floor(ex.max_duration_s * rate_hz)) + 1;
+  for (std::size_t k = 0; k < epochs; ++k) {
+    const double t_s = static_cast<double>(k) * dt;
+    // This epoch's ranges where the body is, to the front end.
+    placement.Next(body.p_world_body(), body.yaw_rad(), &p_true, &p_reported);
+    ranges.clear();
+    draws.Epoch(k, t_s, p_true, body.yaw_rad(), &ranges);
+    for (const sim::SimRange& r : ranges) {
+      front_end.AddSample({r.t_s, r.tag_id, r.anchor_id, r.range_m, p_reported[static_cast<std::size_t>(r.tag_id)]});
+    }
+    // The certified anchors, judged against the truth.
+    for (const estimator::FrontEndEvent& event : front_end.TakeEvents()) {
+      if (event.kind != estimator::FrontEndEvent::Kind::kInitialized) continue;
+      const double error_m = (event.init.solve.p_world_anchor - truth.at(event.anchor_id).p_world_anchor).norm();
+      ++record.certified;
+      if (error_m > accuracy_m) ++record.beyond_accuracy;
+      record.max_error_m = std::max(record.max_error_m, error_m);
+    }
+    record.duration_s = t_s;
+    if (record.certified == record.anchors) {
+      record.t_all_certified_s = t_s;
+      break;
+    }
+    // Guided: a detour when one is due and a candidate is worth it.
+    if (guided && body.on_pattern() && t_s >= next_decision_s) {
+      next_decision_s = t_s + ex.decision_period_s;
+      if (const std::optional<Detour> detour =
+              ChooseCandidate(front_end, body.p_world_body(), ex, space, rate_hz, detours_of)) {
+        body.Detour(detour->p_world_candidate, static_cast<int>(std::ceil(ex.dwell_s * rate_hz)));
+        ++detours_of[detour->anchor_id];
+        ++record.detours;
+      }
+    }
+    body.Step();
+  }
+  record.distance_m = body.distance_m();
+  return record;
+}
+
+}  // namespace
+
+void CheckExploration(const schema::ExperimentConfig& config, const registry::Components& components) {
+  if (!config.exploration) {
+    throw schema::InputError("config " + config.name + ": no 'exploration' section (docs/guidance.md)");
+  }
+  CheckExperiment(config, components);
+  for (const schema::RowConfig& row : schema::RowsOf(config)) {
+    const double epochs = config.exploration->max_duration_s * row.scenario.trajectory.rate_hz + 1.0;
+    if (!(epochs * row.scenario.tag_offsets_m.size() <= sim::ScenarioOptions::kMaxTagEpochs)) {
+      throw schema::InputError("row " + row.name + ": exploration.max_duration_s x scenario.trajectory.rate_hz x tags "
+                               "exceeds 1e7 tag epochs: shorten the run");
+    }
+  }
+}
+
+std::vector<ExplorationRecord> ExploreRealization(const schema::RowConfig& row, int row_index, std::uint64_t seed,
+                                                  int realization, const schema::ExplorationConfig& exploration,
+                                                  const registry::Components& components) {
+  const std::vector<sim::SimAnchor> anchors = sim::DrawAnchors(row.scenario, seed, static_cast<std::uint64_t>(realization));
+  const sim::Trajectory pattern = sim::DrawBodyPath(row.scenario, anchors, seed, static_cast<std::uint64_t>(realization));
+  std::vector<ExplorationRecord> records;
+  for (const std::string& policy : exploration.policies) {
+    records.push_back(RunPolicy(row, seed, realization, exploration, components, anchors, pattern.p_world_tag,
+                                policy == schema::kGuidedPolicy));
+    records.back().row = row_index;
+    records.back().realization = realization;
+  }
+  return records;
+}
+
+std::vector<ExplorationRecord> RunExploration(const schema::ExperimentConfig& config,
+                                              const registry::Components& components, int threads,
+                                              const RunControl& control) {
+  CheckExploration(config, components);
+  const std::vector<schema::RowConfig> rows = schema::RowsOf(config);
+  const std::function<std::vector<ExplorationRecord>(int)> unit = [&](int u) {
+    const int row = u / config.realizations;
+    return ExploreRealization(rows[static_cast<std::size_t>(row)], row, config.seed, u % config.realizations,
+                              *config.exploration, components);
+  };
+  return ParallelRecords(static_cast<int>(rows.size()) * config.realizations, threads, unit, control);
+}
+
+namespace {
+
+struct PolicySummary {
+  int row = 0;
+  std::string policy;
+  int runs = 0, all_certified = 0, anchors = 0, certified = 0, beyond_accuracy = 0;
+  double median_t_all_s = kInf;  // over the runs, a run not all certified counting as +inf
+  double max_error_m = 0.0, mean_distance_m = 0.0, mean_detours = 0.0;
+};
+
+double Median(std::vector<double> values) {
+  if (values.empty()) return kInf;
+  std::sort(values.begin(), values.end());
+  const std::size_t n = values.size();
+  return n % 2 == 1 ? values[n / 2] : 0.5 * (values[n / 2 - 1] + values[n / 2]);
+}
+
+std::vector<PolicySummary> Summarize(const std::vector<ExplorationRecord>& records, const schema::ExplorationConfig& ex,
+                                     int rows) {
+  std::vector<PolicySummary> summaries;
+  for (int row = 0; row < rows; ++row) {
+    for (const std::string& policy : ex.policies) {
+      PolicySummary s;
+      s.row = row;
+      s.policy = policy;
+      std::vector<double> t_all;
+      for (const ExplorationRecord& r : records) {
+        if (r.row != row || r.policy != policy) continue;
+        ++s.runs;
+        s.anchors += r.anchors;
+        s.certified += r.certified;
+        s.beyond_accuracy += r.beyond_accuracy;
+        s.max_error_m = std::max(s.max_error_m, r.max_error_m);
+        s.mean_distance_m += r.distance_m;
+        s.mean_detours += r.detours;
+        if (r.t_all_certified_s >= 0.0) ++s.all_certified;
+        t_all.push_back(r.t_all_certified_s >= 0.0 ? r.t_all_certified_s : kInf);
+      }
+      if (s.runs > 0) {
+        s.mean_distance_m /= s.runs;
+        s.mean_detours /= s.runs;
+      }
+      s.median_t_all_s = Median(t_all);
+      summaries.push_back(s);
+    }
+  }
+  return summaries;
+}
+
+std::string Fixed(double value, int digits) {
+  if (!std::isfinite(value)) return "inf";
+  std::ostringstream out;
+  out << std::fixed << std::setprecision(digits) << value;
+  return out.str();
+}
+
+}  // namespace
+
+std::string WriteExplorationFiles(const FileWriter& write, const schema::ExperimentConfig& config,
+                                  const std::vector<ExplorationRecord>& records, const report::RunInfo& info) {
+  const std::vector<schema::RowConfig> rows = schema::RowsOf(config);
+  write("exploration.csv", [&](std::ostream& file) {
+    file << "row,realization,policy,anchors,certified,beyond_accuracy,max_error_m,t_all_certified_s,duration_s,"
+            "distance_m,detours\n";
+    for (const ExplorationRecord& r : records) {
+      file << rows[static_cast<std::size_t>(r.row)].name << ',' << r.realization << ',' << r.policy << ',' << r.anchors << ','
+           << r.certified << ',' << r.beyond_accuracy << ',' << Fixed(r.max_error_m, 4) << ','
+           << (r.t_all_certified_s >= 0.0 ? Fixed(r.t_all_certified_s, 1) : "") << ',' << Fixed(r.duration_s, 1) << ','
+           << Fixed(r.distance_m, 2) << ',' << r.detours << '\n';
+    }
+  });
+  const std::vector<PolicySummary> summaries = Summarize(records, *config.exploration, static_cast<int>(rows.size()));
+  write("exploration_summary.csv", [&](std::ostream& file) {
+    file << "row,policy,runs,all_certified_runs,median_t_all_certified_s,anchors,certified,beyond_accuracy,"
+            "max_error_m,mean_distance_m,mean_detours\n";
+    for (const PolicySummary& s : summaries) {
+      file << rows[static_cast<std::size_t>(s.row)].name << ',' << s.policy << ',' << s.runs << ',' << s.all_certified << ','
+           << Fixed(s.median_t_all_s, 1) << ',' << s.anchors << ',' << s.certified << ',' << s.beyond_accuracy << ','
+           << Fixed(s.max_error_m, 3) << ',' << Fixed(s.mean_distance_m, 1) << ',' << Fixed(s.mean_detours, 1) << '\n';
+    }
+  });
+  std::ostringstream md;
+  md << "# " << config.name << ": closed-loop exploration\n\n"
+     << "Time until every anchor is certified (trigger `" << config.exploration->trigger << "`, D = "
+     << Fixed(rows.front().estimator.certificate.accuracy_m, 2) << " m), per policy; a run that ends at "
+     << Fixed(config.exploration->max_duration_s, 0) << " s with an anchor waiting counts as inf in the median.\n\n"
+     << "| row | policy | runs all certified | median time to certify all (s) | anchors certified | beyond D | "
+        "max error (m) | mean distance (m) | mean detours |\n|---|---|---|---|---|---|---|---|---|\n";
+  for (const PolicySummary& s : summaries) {
+    md << "| " << rows[static_cast<std::size_t>(s.row)].name << " | " << s.policy << " | " << s.all_certified << " / "
+       << s.runs << " | " << Fixed(s.median_t_all_s, 1) << " | " << s.certified << " / " << s.anchors << " | "
+       << s.beyond_accuracy << " | " << Fixed(s.max_error_m, 2) << " | " << Fixed(s.mean_distance_m, 0) << " | "
+       << Fixed(s.mean_detours, 1) << " |\n";
+  }
+  write("exploration.md", [&](std::ostream& file) { file << md.str(); });
+  write("manifest.json", [&](std::ostream& file) { file << report::ManifestJson(config, info); });
+  return md.str();
+}
+
+}  // namespace anchorbench::engine
