@@ -561,16 +561,18 @@ def exploration_table(folder):
             rows.append([name, policy, f"{r['all_certified_runs']} / {r['runs']}", seconds(r["median_t_all_certified_s"]),
                          f"{r['certified']} / {r['anchors']}", r["beyond_accuracy"], metres(float(r["max_error_m"])),
                          f"{float(r['mean_distance_m']):.0f} m", r["mean_detours"]])
-        pattern, guided = policies.get("pattern"), policies.get("guided")
-        if pattern and guided:
-            t_p, t_g = pattern["median_t_all_certified_s"], guided["median_t_all_certified_s"]
-            if t_p != "inf" and t_g != "inf":
-                lines.append(f"- {name}: guided certifies every anchor in {float(t_g) / float(t_p):.2f}x the pattern's "
-                             "median time.")
+        pattern = policies.get("pattern")
+        for policy, r in policies.items():
+            if policy == "pattern" or not pattern:
+                continue
+            t_p, t_r = pattern["median_t_all_certified_s"], r["median_t_all_certified_s"]
+            if t_p != "inf" and t_r != "inf":
+                lines.append(f"- {name}, {policy}: every anchor certified in {float(t_r) / float(t_p):.2f}x the "
+                             "pattern's median time.")
             else:
-                lines.append(f"- {name}: median time to certify every anchor: pattern {seconds(t_p)}, guided "
-                             f"{seconds(t_g)}; anchors certified: pattern {pattern['certified']}, guided "
-                             f"{guided['certified']} of {guided['anchors']}.")
+                lines.append(f"- {name}, {policy}: median time to certify every anchor {seconds(t_r)} (pattern "
+                             f"{seconds(t_p)}); anchors certified {r['certified']} (pattern {pattern['certified']}) "
+                             f"of {r['anchors']}.")
     header = ["row", "policy", "runs with every anchor certified", "median time to certify all",
               "anchors certified", "beyond D", "largest error", "mean distance", "mean detours"]
     return table(header, rows) + "\n\n" + "\n".join(lines)

@@ -263,8 +263,8 @@ void Navigation(V& v, schema::NavigationConfig& o) {
 template <typename V>
 void Exploration(V& v, schema::ExplorationConfig& o, const registry::Components& components) {
   v.NameList("policies", o.policies, [](const std::string& name, std::string* why) {
-    if (name == schema::kPatternPolicy || name == schema::kGuidedPolicy) return true;
-    if (why) *why = "unknown policy '" + name + "' (pattern, guided)";
+    if (name == schema::kPatternPolicy || name == schema::kGuidedPolicy || name == schema::kOraclePolicy) return true;
+    if (why) *why = "unknown policy '" + name + "' (pattern, guided, oracle)";
     return false;
   });
   v.Name("trigger", o.trigger, [&](const std::string& name, std::string* why) { return components.triggers.Knows(name, why); });

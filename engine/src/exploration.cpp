@@ -110,36 +110,63 @@ class Body {
   double distance_m_ = 0.0;
 };
 
-// Guided: the candidate within reach that certifies a waiting anchor soonest (the flight there at
-// speed_mps plus its forecast samples at the link's rate), among those forecast to certify it
-// within the dwell; none otherwise: a detour costs the pattern's progress, so it is flown only
-// where the forecast says it pays. An anchor whose region is within D already waits for a test
-// the forecast does not see (the mirror, an alternative, the stability): no detour for it either
-// (docs/guidance.md). Nor for an anchor that had detours_per_anchor detours already: the forecast
-// was wrong for it (a test it does not see holds it), and more of them would stall the pattern.
+// The candidates within reach of the body: a grid inside the free space, at the body's height
+// for a robot without vertical reach.
+std::vector<Eigen::Vector3d> CandidatesAround(const Eigen::Vector3d& p_world_body, const schema::ExplorationConfig& ex,
+                                              const FreeSpace& space) {
+  std::vector<Eigen::Vector3d> candidates;
+  for (const Eigen::Vector3d& p : estimator::CandidateGrid(p_world_body, ex.reach_m, ex.grid_steps)) {
+    if (space.Holds(p) && (ex.vertical || std::abs(p.z() - p_world_body.z()) < 1e-9)) candidates.push_back(p);
+  }
+  return candidates;
+}
+
+// The oracle's guidance: the certificate's own forecast (its noise, its D), taken at the true
+// anchor instead of the estimate, for each anchor still waiting.
+std::vector<estimator::AnchorGuidance> OracleGuidance(const estimator::FrontEnd& front_end,
+                                                      const estimator::GuideRequest& request,
+                                                      const std::map<int, schema::AnchorTruth>& truth) {
+  std::vector<estimator::AnchorGuidance> guidance;
+  for (const int anchor_id : front_end.anchor_ids()) {
+    const estimator::AnchorInitializer& chain = front_end.chains(anchor_id).front();
+    const std::optional<estimator::RegionForecast> forecast = chain.Forecast();
+    if (!forecast) continue;
+    estimator::RegionBasis basis = forecast->basis();
+    basis.p_world_anchor = truth.at(anchor_id).p_world_anchor;
+    const estimator::RegionForecast at_truth(basis, chain.p_world_tag(), chain.tag_id());
+    estimator::AnchorGuidance g;
+    g.anchor_id = anchor_id;
+    g.region_m = at_truth.region_m();
+    g.accuracy_m = basis.accuracy_m;
+    g.best = at_truth.Rank(request.p_world_candidate, request.samples, request.best);
+    guidance.push_back(std::move(g));
+  }
+  return guidance;
+}
+
+// The candidate that certifies a waiting anchor soonest (the flight there at speed_mps plus its
+// forecast samples at the link's rate), among those forecast to certify it within the dwell; none
+// otherwise: a detour costs the pattern's progress, so it is flown only where the forecast says
+// it pays. An anchor whose region is within D already waits for a test the forecast does not see
+// (the mirror, an alternative, the stability): no detour for it either. Nor for an anchor that had
+// detours_per_anchor detours already: the forecast was wrong for it, and more would stall the
+// pattern (docs/guidance.md).
 struct Detour {
   int anchor_id = 0;
   Eigen::Vector3d p_world_candidate;
 };
-std::optional<Detour> ChooseCandidate(const estimator::FrontEnd& front_end, const Eigen::Vector3d& p_world_body,
-                                      const schema::ExplorationConfig& ex, const FreeSpace& space, double rate_hz,
-                                      const std::map<int, int>& detours_of) {
-  estimator::GuideRequest request;
-  for (const Eigen::Vector3d& p : estimator::CandidateGrid(p_world_body, ex.reach_m, ex.grid_steps)) {
-    if (space.Holds(p) && (ex.vertical || std::abs(p.z() - p_world_body.z()) < 1e-9)) request.p_world_candidate.push_back(p);
-  }
-  if (request.p_world_candidate.empty()) return std::nullopt;
-  request.samples = std::max(1.0, ex.dwell_s * rate_hz);
-  request.range_rate_hz = rate_hz;
+std::optional<Detour> Soonest(const std::vector<estimator::AnchorGuidance>& guidance, const Eigen::Vector3d& p_world_body,
+                              const schema::ExplorationConfig& ex, double samples, double rate_hz,
+                              const std::map<int, int>& detours_of) {
   std::optional<Detour> soonest;
   double soonest_s = kInf;
-  for (const estimator::AnchorGuidance& anchor : estimator::Guide(front_end, request)) {
+  for (const estimator::AnchorGuidance& anchor : guidance) {
     if (!(anchor.region_m > anchor.accuracy_m)) continue;  // held by another test
     if (const auto had = detours_of.find(anchor.anchor_id); had != detours_of.end() && had->second >= ex.detours_per_anchor) {
       continue;
     }
     for (const estimator::CandidateForecast& c : anchor.best) {
-      if (!(c.samples_to_certify <= request.samples)) continue;
+      if (!(c.samples_to_certify <= samples)) continue;
       const double total_s = (c.p_world_candidate - p_world_body).norm() / ex.speed_mps + c.samples_to_certify / rate_hz;
       if (total_s < soonest_s) {
         soonest_s = total_s;
@@ -150,11 +177,26 @@ std::optional<Detour> ChooseCandidate(const estimator::FrontEnd& front_end, cons
   return soonest;
 }
 
+// A policy's next detour, if it takes one: guided asks guidance (estimator::Guide) as a robot
+// would, the oracle the forecast at the truth.
+std::optional<Detour> NextDetour(const estimator::FrontEnd& front_end, const Eigen::Vector3d& p_world_body,
+                                 const schema::ExplorationConfig& ex, const FreeSpace& space, double rate_hz,
+                                 const std::map<int, int>& detours_of, const std::map<int, schema::AnchorTruth>* truth) {
+  estimator::GuideRequest request;
+  request.p_world_candidate = CandidatesAround(p_world_body, ex, space);
+  if (request.p_world_candidate.empty()) return std::nullopt;
+  request.samples = std::max(1.0, ex.dwell_s * rate_hz);
+  request.range_rate_hz = rate_hz;
+  const std::vector<estimator::AnchorGuidance> guidance =
+      truth ? OracleGuidance(front_end, request, *truth) : estimator::Guide(front_end, request);
+  return Soonest(guidance, p_world_body, ex, request.samples, rate_hz, detours_of);
+}
+
 // One policy's run on the realization's anchors and pattern.
 ExplorationRecord RunPolicy(const schema::RowConfig& row, std::uint64_t seed, int realization,
                             const schema::ExplorationConfig& ex, const registry::Components& components,
                             const std::vector<sim::SimAnchor>& anchors, const std::vector<Eigen::Vector3d>& pattern,
-                            bool guided) {
+                            const std::string& policy) {
   const sim::ScenarioOptions& scenario = row.scenario;
   const double rate_hz = scenario.trajectory.rate_hz, dt = 1.0 / rate_hz;
   std::map<int, schema::AnchorTruth> truth;
@@ -175,13 +217,15 @@ ExplorationRecord RunPolicy(const schema::RowConfig& row, std::uint64_t seed, in
   Body body(pattern, ex.speed_mps * dt);
 
   ExplorationRecord record;
-  record.policy = guided ? schema::kGuidedPolicy : schema::kPatternPolicy;
+  record.policy = policy;
+  const bool detours = policy != schema::kPatternPolicy;
+  const std::map<int, schema::AnchorTruth>* oracle = policy == schema::kOraclePolicy ? &truth : nullptr;
   record.anchors = static_cast<int>(anchors.size());
   const double accuracy_m = row.estimator.certificate.accuracy_m;
   std::vector<Eigen::Vector3d> p_true, p_reported;
   std::vector<sim::SimRange> ranges;
   double next_decision_s = ex.decision_period_s;
-  std::map<int, int> detours_of;  // guided: detours flown for each anchor
+  std::map<int, int> detours_of;  // detours flown for each anchor
   const auto epochs = static_cast<std::size_t>(std::floor(ex.max_duration_s * rate_hz)) + 1;
   for (std::size_t k = 0; k < epochs; ++k) {
     const double t_s = static_cast<double>(k) * dt;
@@ -205,11 +249,11 @@ ExplorationRecord RunPolicy(const schema::RowConfig& row, std::uint64_t seed, in
       record.t_all_certified_s = t_s;
       break;
     }
-    // Guided: a detour when one is due and a candidate is worth it.
-    if (guided && body.on_pattern() && t_s >= next_decision_s) {
+    // Guided and oracle: a detour when one is due and a candidate is worth it.
+    if (detours && body.on_pattern() && t_s >= next_decision_s) {
       next_decision_s = t_s + ex.decision_period_s;
       if (const std::optional<Detour> detour =
-              ChooseCandidate(front_end, body.p_world_body(), ex, space, rate_hz, detours_of)) {
+              NextDetour(front_end, body.p_world_body(), ex, space, rate_hz, detours_of, oracle)) {
         body.Detour(detour->p_world_candidate, static_cast<int>(std::ceil(ex.dwell_s * rate_hz)));
         ++detours_of[detour->anchor_id];
         ++record.detours;
@@ -244,8 +288,7 @@ std::vector<ExplorationRecord> ExploreRealization(const schema::RowConfig& row, 
   const sim::Trajectory pattern = sim::DrawBodyPath(row.scenario, anchors, seed, static_cast<std::uint64_t>(realization));
   std::vector<ExplorationRecord> records;
   for (const std::string& policy : exploration.policies) {
-    records.push_back(RunPolicy(row, seed, realization, exploration, components, anchors, pattern.p_world_tag,
-                                policy == schema::kGuidedPolicy));
+    records.push_back(RunPolicy(row, seed, realization, exploration, components, anchors, pattern.p_world_tag, policy));
     records.back().row = row_index;
     records.back().realization = realization;
   }

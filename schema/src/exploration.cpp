@@ -9,9 +9,9 @@ bool ExplorationConfig::IsValid(std::string* why) const {
     if (why) *why = message;
     return false;
   };
-  auto known = [](const std::string& p) { return p == kPatternPolicy || p == kGuidedPolicy; };
+  auto known = [](const std::string& p) { return p == kPatternPolicy || p == kGuidedPolicy || p == kOraclePolicy; };
   if (policies.empty() || !std::all_of(policies.begin(), policies.end(), known)) {
-    return fail("policies must list one or more of: pattern, guided");
+    return fail("policies must list one or more of: pattern, guided, oracle");
   }
   if (trigger.empty()) return fail("trigger must name a trigger that judges a region (certified)");
   // Bounds that keep a run's epochs and a decision's candidates finite and few.

@@ -10,6 +10,7 @@ namespace anchorbench::schema {
 
 inline constexpr const char* kPatternPolicy = "pattern";  // the row's trajectory, back and forth
 inline constexpr const char* kGuidedPolicy = "guided";    // the pattern with detours guidance picks
+inline constexpr const char* kOraclePolicy = "oracle";    // the same, ranked at the true anchors
 
 struct ExplorationConfig {
   std::vector<std::string> policies = {kPatternPolicy, kGuidedPolicy};
