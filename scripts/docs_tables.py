@@ -597,7 +597,10 @@ def exploration_headline():
             f"the survey alone certifies {flat['pattern']['certified']} of {flat['pattern']['anchors']} anchors; on "
             f"the paper's sweeping flight they certify every anchor in {ratio:.2f}x the median time "
             f"({seconds(sweep['guided']['median_t_all_certified_s'])} against "
-            f"{seconds(sweep['pattern']['median_t_all_certified_s'])}). Guided anchors beyond D: "
+            f"{seconds(sweep['pattern']['median_t_all_certified_s'])}); waypoints planned offline by a DOP cost "
+            f"(uwb_init's idea, reimplemented) take {seconds(sweep['dop_waypoints']['median_t_all_certified_s'])} on "
+            f"it, flying {float(sweep['dop_waypoints']['mean_distance_m']):.0f} m against guidance's "
+            f"{float(sweep['guided']['mean_distance_m']):.0f} m. Guided anchors beyond D: "
             f"{int(flat['guided']['beyond_accuracy']) + int(sweep['guided']['beyond_accuracy'])}, the largest error "
             f"{metres(max(float(flat['guided']['max_error_m']), float(sweep['guided']['max_error_m'])))}.")
 

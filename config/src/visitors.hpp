@@ -263,8 +263,10 @@ void Navigation(V& v, schema::NavigationConfig& o) {
 template <typename V>
 void Exploration(V& v, schema::ExplorationConfig& o, const registry::Components& components) {
   v.NameList("policies", o.policies, [](const std::string& name, std::string* why) {
-    if (name == schema::kPatternPolicy || name == schema::kGuidedPolicy || name == schema::kOraclePolicy) return true;
-    if (why) *why = "unknown policy '" + name + "' (pattern, guided, oracle)";
+    schema::ExplorationConfig one;
+    one.policies = {name};
+    if (one.IsValid(nullptr)) return true;
+    if (why) *why = "unknown policy '" + name + "' (pattern, guided, oracle, dop_waypoints)";
     return false;
   });
   v.Name("trigger", o.trigger, [&](const std::string& name, std::string* why) { return components.triggers.Knows(name, why); });
@@ -275,6 +277,8 @@ void Exploration(V& v, schema::ExplorationConfig& o, const registry::Components&
   v.Number("dwell_s", o.dwell_s);
   v.Integer("detours_per_anchor", o.detours_per_anchor);
   v.Number("speed_mps", o.speed_mps);
+  v.Number("plan_after_s", o.plan_after_s);
+  v.Integer("waypoints", o.waypoints);
   v.Number("clearance_m", o.clearance_m);
   v.Flag("vertical", o.vertical);
   v.Check(o);

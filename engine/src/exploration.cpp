@@ -18,6 +18,8 @@
 #include "anchorbench/schema/input_error.hpp"
 #include "anchorbench/sim/range_draws.hpp"
 #include "anchorbench/sim/scenario.hpp"
+#include "dop_waypoints.hpp"
+#include "exploration_body.hpp"
 
 namespace anchorbench::engine {
 namespace {
@@ -39,76 +41,6 @@ FreeSpace FreeSpaceOf(const sim::ScenarioOptions& scenario, double clearance_m) 
   const sim::HallOptions& h = scenario.hall;
   return {margin, Eigen::Vector3d(h.length_m, h.width_m, h.height_m) - margin};
 }
-
-// The body over one run: the pattern back and forth, or a detour out to a candidate, a dwell
-// there, and back to where it left the pattern. One Step() per epoch.
-class Body {
- public:
-  Body(const std::vector<Eigen::Vector3d>& pattern, double step_m) : pattern_(pattern), step_m_(step_m), p_(pattern.front()) {}
-
-  const Eigen::Vector3d& p_world_body() const { return p_; }
-  double yaw_rad() const { return yaw_rad_; }
-  double distance_m() const { return distance_m_; }
-  bool on_pattern() const { return leg_ == Leg::kPattern; }
-
-  void Detour(const Eigen::Vector3d& p_world_target, int dwell_epochs) {
-    target_ = p_world_target;
-    dwell_epochs_ = dwell_epochs;
-    leg_ = Leg::kOut;
-  }
-
-  void Step() {
-    const Eigen::Vector3d p_before = p_;
-    switch (leg_) {
-      case Leg::kPattern: AlongPattern(); break;
-      case Leg::kOut:
-        if (Toward(target_)) leg_ = Leg::kDwell;
-        break;
-      case Leg::kDwell:
-        if (--dwell_epochs_ <= 0) leg_ = Leg::kBack;
-        break;
-      case Leg::kBack:
-        if (Toward(pattern_[index_])) leg_ = Leg::kPattern;
-        break;
-    }
-    const Eigen::Vector3d step = p_ - p_before;
-    distance_m_ += step.norm();
-    if (step.head<2>().norm() > 1e-9) yaw_rad_ = std::atan2(step.y(), step.x());
-  }
-
- private:
-  enum class Leg { kPattern, kOut, kDwell, kBack };
-
-  void AlongPattern() {
-    if (pattern_.size() < 2) return;
-    const long next = static_cast<long>(index_) + direction_;
-    if (next < 0 || next >= static_cast<long>(pattern_.size())) direction_ = -direction_;  // back the way it came
-    index_ = static_cast<std::size_t>(static_cast<long>(index_) + direction_);
-    p_ = pattern_[index_];
-  }
-
-  // One step of step_m_ toward `p_world_target`; true once there.
-  bool Toward(const Eigen::Vector3d& p_world_target) {
-    const Eigen::Vector3d to = p_world_target - p_;
-    if (to.norm() <= step_m_) {
-      p_ = p_world_target;
-      return true;
-    }
-    p_ += step_m_ * to.normalized();
-    return false;
-  }
-
-  const std::vector<Eigen::Vector3d>& pattern_;
-  double step_m_;
-  Eigen::Vector3d p_;
-  Eigen::Vector3d target_ = Eigen::Vector3d::Zero();
-  std::size_t index_ = 0;
-  int direction_ = 1;
-  int dwell_epochs_ = 0;
-  Leg leg_ = Leg::kPattern;
-  double yaw_rad_ = 0.0;
-  double distance_m_ = 0.0;
-};
 
 // The candidates within reach of the body: a grid inside the free space, at the body's height
 // for a robot without vertical reach.
@@ -192,6 +124,35 @@ std::optional<Detour> NextDetour(const estimator::FrontEnd& front_end, const Eig
   return Soonest(guidance, p_world_body, ex, request.samples, rate_hz, detours_of);
 }
 
+// The offline-waypoint baseline's route (dop_waypoints.hpp): waypoints on a grid over the free
+// space (the candidates' spacing; at the body's height without vertical reach), planned at each
+// waiting anchor's estimate so far (the certificate's last), nearest first.
+std::vector<Eigen::Vector3d> PlanRoute(const estimator::FrontEnd& front_end, const Eigen::Vector3d& p_world_body,
+                                       const schema::ExplorationConfig& ex, const FreeSpace& space, double rate_hz) {
+  std::vector<PlannedAnchor> anchors;
+  for (const int anchor_id : front_end.anchor_ids()) {
+    const estimator::AnchorInitializer& chain = front_end.chains(anchor_id).front();
+    if (const std::optional<estimator::RegionForecast> forecast = chain.Forecast()) {
+      const Eigen::Vector3d& p_world_anchor = forecast->basis().p_world_anchor;
+      anchors.push_back({p_world_anchor, RangeInformation(chain.p_world_tag(), p_world_anchor)});
+    }
+  }
+  const double spacing_m = ex.reach_m / ex.grid_steps;
+  std::vector<Eigen::Vector3d> grid;
+  const Eigen::Array3d extent = (space.high - space.low).array().max(0.0);
+  const Eigen::Array3i steps = (extent / spacing_m).floor().cast<int>();
+  for (int i = 0; i <= steps.x(); ++i) {
+    for (int j = 0; j <= steps.y(); ++j) {
+      for (int k = 0; k <= (ex.vertical ? steps.z() : 0); ++k) {
+        Eigen::Vector3d p = space.low + spacing_m * Eigen::Vector3d(i, j, k);
+        if (!ex.vertical) p.z() = p_world_body.z();
+        grid.push_back(p);
+      }
+    }
+  }
+  return PlanDopWaypoints(std::move(anchors), grid, ex.waypoints, std::max(1.0, ex.dwell_s * rate_hz), p_world_body);
+}
+
 // One policy's run on the realization's anchors and pattern.
 ExplorationRecord RunPolicy(const schema::RowConfig& row, std::uint64_t seed, int realization,
                             const schema::ExplorationConfig& ex, const registry::Components& components,
@@ -218,7 +179,8 @@ ExplorationRecord RunPolicy(const schema::RowConfig& row, std::uint64_t seed, in
 
   ExplorationRecord record;
   record.policy = policy;
-  const bool detours = policy != schema::kPatternPolicy;
+  const bool detours = policy == schema::kGuidedPolicy || policy == schema::kOraclePolicy;
+  bool plans = policy == schema::kDopWaypointsPolicy;  // once, at plan_after_s
   const std::map<int, schema::AnchorTruth>* oracle = policy == schema::kOraclePolicy ? &truth : nullptr;
   record.anchors = static_cast<int>(anchors.size());
   const double accuracy_m = row.estimator.certificate.accuracy_m;
@@ -249,12 +211,19 @@ ExplorationRecord RunPolicy(const schema::RowConfig& row, std::uint64_t seed, in
       record.t_all_certified_s = t_s;
       break;
     }
+    // The offline baseline: its waypoints, planned once.
+    if (plans && body.on_pattern() && t_s >= ex.plan_after_s) {
+      plans = false;
+      std::vector<Eigen::Vector3d> route = PlanRoute(front_end, body.p_world_body(), ex, space, rate_hz);
+      record.detours = static_cast<int>(route.size());
+      body.Visit(std::move(route), static_cast<int>(std::ceil(ex.dwell_s * rate_hz)));
+    }
     // Guided and oracle: a detour when one is due and a candidate is worth it.
     if (detours && body.on_pattern() && t_s >= next_decision_s) {
       next_decision_s = t_s + ex.decision_period_s;
       if (const std::optional<Detour> detour =
               NextDetour(front_end, body.p_world_body(), ex, space, rate_hz, detours_of, oracle)) {
-        body.Detour(detour->p_world_candidate, static_cast<int>(std::ceil(ex.dwell_s * rate_hz)));
+        body.Visit({detour->p_world_candidate}, static_cast<int>(std::ceil(ex.dwell_s * rate_hz)));
         ++detours_of[detour->anchor_id];
         ++record.detours;
       }

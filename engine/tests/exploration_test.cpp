@@ -62,7 +62,8 @@ TEST(Exploration, EveryPolicyForEachRealizationTheSameOnAnyThreads) {
 
 TEST(Exploration, GuidanceCertifiesWhatAFlatSurveyCannot) {
   schema::ExperimentConfig config = FlatSurvey();
-  config.exploration->policies = {schema::kPatternPolicy, schema::kGuidedPolicy, schema::kOraclePolicy};
+  config.exploration->policies = {schema::kPatternPolicy, schema::kGuidedPolicy, schema::kOraclePolicy,
+                                  schema::kDopWaypointsPolicy};
   std::map<std::string, int> certified;
   for (const ExplorationRecord& r : RunExploration(config, AllComponents(), 2)) {
     EXPECT_EQ(r.anchors, 4);
@@ -79,6 +80,7 @@ TEST(Exploration, GuidanceCertifiesWhatAFlatSurveyCannot) {
   EXPECT_EQ(certified[schema::kPatternPolicy], 0);
   EXPECT_GE(certified[schema::kGuidedPolicy], 10);  // of 12
   EXPECT_GE(certified[schema::kOraclePolicy], 10);
+  EXPECT_GE(certified[schema::kDopWaypointsPolicy], 10);
 }
 
 TEST(Exploration, AGroundRobotKeepsItsHeightAndCannotLeaveThePlane) {

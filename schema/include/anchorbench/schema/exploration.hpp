@@ -11,6 +11,7 @@ namespace anchorbench::schema {
 inline constexpr const char* kPatternPolicy = "pattern";  // the row's trajectory, back and forth
 inline constexpr const char* kGuidedPolicy = "guided";    // the pattern with detours guidance picks
 inline constexpr const char* kOraclePolicy = "oracle";    // the same, ranked at the true anchors
+inline constexpr const char* kDopWaypointsPolicy = "dop_waypoints";  // uwb_init's idea: waypoints planned once
 
 struct ExplorationConfig {
   std::vector<std::string> policies = {kPatternPolicy, kGuidedPolicy};
@@ -23,7 +24,9 @@ struct ExplorationConfig {
   int grid_steps = 2;                // and this many steps to each side (a (2 steps + 1)^3 grid)
   double dwell_s = 5.0;              // guided: ranging at a candidate for this long, then back
   int detours_per_anchor = 2;        // guided: at most this many detours for one anchor
-  double speed_mps = 1.0;            // guided: the detour's speed
+  double speed_mps = 1.0;            // the speed off the pattern (detours, waypoints)
+  double plan_after_s = 60.0;        // dop_waypoints: the waypoints are planned this long into the run
+  int waypoints = 8;                 // dop_waypoints: this many, dwell_s at each
   double clearance_m = 0.5;          // candidates stay this far inside the environment's box
   bool vertical = true;              // candidates may change height (a drone); false: a ground robot
 
