@@ -560,7 +560,8 @@ def exploration_table(folder):
         for policy, r in policies.items():
             rows.append([name, policy, f"{r['all_certified_runs']} / {r['runs']}", seconds(r["median_t_all_certified_s"]),
                          f"{r['certified']} / {r['anchors']}", r["beyond_accuracy"], metres(float(r["max_error_m"])),
-                         f"{float(r['mean_distance_m']):.0f} m", r["mean_detours"]])
+                         f"{float(r['mean_distance_m']):.0f} m", r["mean_detours"],
+                         metres(float(r["mean_navigation_rmse_m"])) if r["mean_navigation_rmse_m"] else "-"])
         pattern = policies.get("pattern")
         for policy, r in policies.items():
             if policy == "pattern" or not pattern:
@@ -574,7 +575,8 @@ def exploration_table(folder):
                              f"{seconds(t_p)}); anchors certified {r['certified']} (pattern {pattern['certified']}) "
                              f"of {r['anchors']}.")
     header = ["row", "policy", "runs with every anchor certified", "median time to certify all",
-              "anchors certified", "beyond D", "largest error", "mean distance", "mean detours"]
+              "anchors certified", "beyond D", "largest error", "mean distance", "mean detours",
+              "navigation RMSE"]
     return table(header, rows) + "\n\n" + "\n".join(lines)
 
 
@@ -600,7 +602,11 @@ def exploration_headline():
             f"{seconds(sweep['pattern']['median_t_all_certified_s'])}); waypoints planned offline by a DOP cost "
             f"(uwb_init's idea, reimplemented) take {seconds(sweep['dop_waypoints']['median_t_all_certified_s'])} on "
             f"it, flying {float(sweep['dop_waypoints']['mean_distance_m']):.0f} m against guidance's "
-            f"{float(sweep['guided']['mean_distance_m']):.0f} m. Guided anchors beyond D: "
+            f"{float(sweep['guided']['mean_distance_m']):.0f} m. Navigating with the certified anchors, a VIO's "
+            f"position RMSE over the flight is {metres(float(sweep['guided']['mean_navigation_rmse_m']))} with "
+            f"guidance against {metres(float(sweep['pattern']['mean_navigation_rmse_m']))} without (flat survey: "
+            f"{metres(float(flat['guided']['mean_navigation_rmse_m']))} against "
+            f"{metres(float(flat['pattern']['mean_navigation_rmse_m']))}). Guided anchors beyond D: "
             f"{int(flat['guided']['beyond_accuracy']) + int(sweep['guided']['beyond_accuracy'])}, the largest error "
             f"{metres(max(float(flat['guided']['max_error_m']), float(sweep['guided']['max_error_m'])))}.")
 

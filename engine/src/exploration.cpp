@@ -12,10 +12,13 @@
 #include "anchorbench/engine/attempt.hpp"
 #include "anchorbench/engine/executor.hpp"
 #include "anchorbench/engine/monte_carlo.hpp"
+#include "anchorbench/engine/navigation.hpp"
 #include "anchorbench/estimator/front_end.hpp"
 #include "anchorbench/estimator/guide.hpp"
+#include "anchorbench/report/navigation_report.hpp"
 #include "anchorbench/report/run_outputs.hpp"
 #include "anchorbench/schema/input_error.hpp"
+#include "anchorbench/schema/random_streams.hpp"
 #include "anchorbench/sim/range_draws.hpp"
 #include "anchorbench/sim/scenario.hpp"
 #include "dop_waypoints.hpp"
@@ -157,7 +160,7 @@ std::vector<Eigen::Vector3d> PlanRoute(const estimator::FrontEnd& front_end, con
 ExplorationRecord RunPolicy(const schema::RowConfig& row, std::uint64_t seed, int realization,
                             const schema::ExplorationConfig& ex, const registry::Components& components,
                             const std::vector<sim::SimAnchor>& anchors, const std::vector<Eigen::Vector3d>& pattern,
-                            const std::string& policy) {
+                            const std::string& policy, const std::optional<schema::NavigationConfig>& navigation) {
   const sim::ScenarioOptions& scenario = row.scenario;
   const double rate_hz = scenario.trajectory.rate_hz, dt = 1.0 / rate_hz;
   std::map<int, schema::AnchorTruth> truth;
@@ -188,6 +191,10 @@ ExplorationRecord RunPolicy(const schema::RowConfig& row, std::uint64_t seed, in
   std::vector<sim::SimRange> ranges;
   double next_decision_s = ex.decision_period_s;
   std::map<int, int> detours_of;  // detours flown for each anchor
+  // With a navigation section, the run goes on to max_duration_s (the same time for every policy)
+  // and tag 0's flight, its ranges and the certified anchors go to the navigation filter after.
+  Trajectory flown;
+  std::vector<nav::UsableAnchor> usable;
   const auto epochs = static_cast<std::size_t>(std::floor(ex.max_duration_s * rate_hz)) + 1;
   for (std::size_t k = 0; k < epochs; ++k) {
     const double t_s = static_cast<double>(k) * dt;
@@ -197,6 +204,11 @@ ExplorationRecord RunPolicy(const schema::RowConfig& row, std::uint64_t seed, in
     draws.Epoch(k, t_s, p_true, body.yaw_rad(), &ranges);
     for (const sim::SimRange& r : ranges) {
       front_end.AddSample({r.t_s, r.tag_id, r.anchor_id, r.range_m, p_reported[static_cast<std::size_t>(r.tag_id)]});
+      if (navigation && r.tag_id == 0) flown.ranges.push_back({k, r.anchor_id, r.range_m});
+    }
+    if (navigation) {
+      flown.t_s.push_back(t_s);
+      flown.p_world_tag.push_back(p_true.front());
     }
     // The certified anchors, judged against the truth.
     for (const estimator::FrontEndEvent& event : front_end.TakeEvents()) {
@@ -205,11 +217,14 @@ ExplorationRecord RunPolicy(const schema::RowConfig& row, std::uint64_t seed, in
       ++record.certified;
       if (error_m > accuracy_m) ++record.beyond_accuracy;
       record.max_error_m = std::max(record.max_error_m, error_m);
+      const estimator::SolveResult& solve = event.init.solve;
+      usable.push_back({event.anchor_id, t_s, solve.p_world_anchor, solve.bias_m, solve.covariance, false});
     }
     record.duration_s = t_s;
-    if (record.certified == record.anchors) {
+    if (record.certified == record.anchors && record.t_all_certified_s < 0.0) {
       record.t_all_certified_s = t_s;
-      break;
+      record.distance_m = body.distance_m();
+      if (!navigation) break;
     }
     // The offline baseline: its waypoints, planned once.
     if (plans && body.on_pattern() && t_s >= ex.plan_after_s) {
@@ -230,7 +245,17 @@ ExplorationRecord RunPolicy(const schema::RowConfig& row, std::uint64_t seed, in
     }
     body.Step();
   }
-  record.distance_m = body.distance_m();
+  if (record.t_all_certified_s < 0.0) record.distance_m = body.distance_m();
+  if (navigation) {
+    sim::RandomStream rng(seed, static_cast<std::uint64_t>(realization), schema::kNavigationStream);
+    nav::NavigationOutcome outcome =
+        NavigateMethods(flown, {{policy, usable}}, OptionsOf(*navigation, scenario.ranging.sigma_range_m), rng, 0,
+                        realization)
+            .front()
+            .outcome;
+    record.navigation_rmse_m = outcome.rmse_m;
+    record.navigation_error_by_bin_m = std::move(outcome.error_by_bin_m);
+  }
   return record;
 }
 
@@ -241,6 +266,7 @@ void CheckExploration(const schema::ExperimentConfig& config, const registry::Co
     throw schema::InputError("config " + config.name + ": no 'exploration' section (docs/guidance.md)");
   }
   CheckExperiment(config, components);
+  if (config.navigation) CheckErrorBins(config.exploration->max_duration_s, *config.navigation, config.name);
   for (const schema::RowConfig& row : schema::RowsOf(config)) {
     const double epochs = config.exploration->max_duration_s * row.scenario.trajectory.rate_hz + 1.0;
     if (!(epochs * row.scenario.tag_offsets_m.size() <= sim::ScenarioOptions::kMaxTagEpochs)) {
@@ -252,12 +278,14 @@ void CheckExploration(const schema::ExperimentConfig& config, const registry::Co
 
 std::vector<ExplorationRecord> ExploreRealization(const schema::RowConfig& row, int row_index, std::uint64_t seed,
                                                   int realization, const schema::ExplorationConfig& exploration,
+                                                  const std::optional<schema::NavigationConfig>& navigation,
                                                   const registry::Components& components) {
   const std::vector<sim::SimAnchor> anchors = sim::DrawAnchors(row.scenario, seed, static_cast<std::uint64_t>(realization));
   const sim::Trajectory pattern = sim::DrawBodyPath(row.scenario, anchors, seed, static_cast<std::uint64_t>(realization));
   std::vector<ExplorationRecord> records;
   for (const std::string& policy : exploration.policies) {
-    records.push_back(RunPolicy(row, seed, realization, exploration, components, anchors, pattern.p_world_tag, policy));
+    records.push_back(
+        RunPolicy(row, seed, realization, exploration, components, anchors, pattern.p_world_tag, policy, navigation));
     records.back().row = row_index;
     records.back().realization = realization;
   }
@@ -272,7 +300,7 @@ std::vector<ExplorationRecord> RunExploration(const schema::ExperimentConfig& co
   const std::function<std::vector<ExplorationRecord>(int)> unit = [&](int u) {
     const int row = u / config.realizations;
     return ExploreRealization(rows[static_cast<std::size_t>(row)], row, config.seed, u % config.realizations,
-                              *config.exploration, components);
+                              *config.exploration, config.navigation, components);
   };
   return ParallelRecords(static_cast<int>(rows.size()) * config.realizations, threads, unit, control);
 }
@@ -285,6 +313,7 @@ struct PolicySummary {
   int runs = 0, all_certified = 0, anchors = 0, certified = 0, beyond_accuracy = 0;
   double median_t_all_s = kInf;  // over the runs, a run not all certified counting as +inf
   double max_error_m = 0.0, mean_distance_m = 0.0, mean_detours = 0.0;
+  double mean_navigation_rmse_m = -1.0;  // -1: not navigated
 };
 
 double Median(std::vector<double> values) {
@@ -303,6 +332,8 @@ std::vector<PolicySummary> Summarize(const std::vector<ExplorationRecord>& recor
       s.row = row;
       s.policy = policy;
       std::vector<double> t_all;
+      double rmse_sum_m = 0.0;
+      int navigated = 0;
       for (const ExplorationRecord& r : records) {
         if (r.row != row || r.policy != policy) continue;
         ++s.runs;
@@ -313,12 +344,17 @@ std::vector<PolicySummary> Summarize(const std::vector<ExplorationRecord>& recor
         s.mean_distance_m += r.distance_m;
         s.mean_detours += r.detours;
         if (r.t_all_certified_s >= 0.0) ++s.all_certified;
+        if (r.navigation_rmse_m >= 0.0) {
+          rmse_sum_m += r.navigation_rmse_m;
+          ++navigated;
+        }
         t_all.push_back(r.t_all_certified_s >= 0.0 ? r.t_all_certified_s : kInf);
       }
       if (s.runs > 0) {
         s.mean_distance_m /= s.runs;
         s.mean_detours /= s.runs;
       }
+      if (navigated > 0) s.mean_navigation_rmse_m = rmse_sum_m / navigated;
       s.median_t_all_s = Median(t_all);
       summaries.push_back(s);
     }
@@ -340,22 +376,24 @@ std::string WriteExplorationFiles(const FileWriter& write, const schema::Experim
   const std::vector<schema::RowConfig> rows = schema::RowsOf(config);
   write("exploration.csv", [&](std::ostream& file) {
     file << "row,realization,policy,anchors,certified,beyond_accuracy,max_error_m,t_all_certified_s,duration_s,"
-            "distance_m,detours\n";
+            "distance_m,detours,navigation_rmse_m\n";
     for (const ExplorationRecord& r : records) {
       file << rows[static_cast<std::size_t>(r.row)].name << ',' << r.realization << ',' << r.policy << ',' << r.anchors << ','
            << r.certified << ',' << r.beyond_accuracy << ',' << Fixed(r.max_error_m, 4) << ','
            << (r.t_all_certified_s >= 0.0 ? Fixed(r.t_all_certified_s, 1) : "") << ',' << Fixed(r.duration_s, 1) << ','
-           << Fixed(r.distance_m, 2) << ',' << r.detours << '\n';
+           << Fixed(r.distance_m, 2) << ',' << r.detours << ','
+           << (r.navigation_rmse_m >= 0.0 ? Fixed(r.navigation_rmse_m, 4) : "") << '\n';
     }
   });
   const std::vector<PolicySummary> summaries = Summarize(records, *config.exploration, static_cast<int>(rows.size()));
   write("exploration_summary.csv", [&](std::ostream& file) {
     file << "row,policy,runs,all_certified_runs,median_t_all_certified_s,anchors,certified,beyond_accuracy,"
-            "max_error_m,mean_distance_m,mean_detours\n";
+            "max_error_m,mean_distance_m,mean_detours,mean_navigation_rmse_m\n";
     for (const PolicySummary& s : summaries) {
       file << rows[static_cast<std::size_t>(s.row)].name << ',' << s.policy << ',' << s.runs << ',' << s.all_certified << ','
            << Fixed(s.median_t_all_s, 1) << ',' << s.anchors << ',' << s.certified << ',' << s.beyond_accuracy << ','
-           << Fixed(s.max_error_m, 3) << ',' << Fixed(s.mean_distance_m, 1) << ',' << Fixed(s.mean_detours, 1) << '\n';
+           << Fixed(s.max_error_m, 3) << ',' << Fixed(s.mean_distance_m, 1) << ',' << Fixed(s.mean_detours, 1) << ','
+           << (s.mean_navigation_rmse_m >= 0.0 ? Fixed(s.mean_navigation_rmse_m, 3) : "") << '\n';
     }
   });
   std::ostringstream md;
@@ -364,14 +402,27 @@ std::string WriteExplorationFiles(const FileWriter& write, const schema::Experim
      << Fixed(rows.front().estimator.certificate.accuracy_m, 2) << " m), per policy; a run that ends at "
      << Fixed(config.exploration->max_duration_s, 0) << " s with an anchor waiting counts as inf in the median.\n\n"
      << "| row | policy | runs all certified | median time to certify all (s) | anchors certified | beyond D | "
-        "max error (m) | mean distance (m) | mean detours |\n|---|---|---|---|---|---|---|---|---|\n";
+        "max error (m) | mean distance (m) | mean detours | mean navigation RMSE (m) |\n"
+        "|---|---|---|---|---|---|---|---|---|---|\n";
   for (const PolicySummary& s : summaries) {
     md << "| " << rows[static_cast<std::size_t>(s.row)].name << " | " << s.policy << " | " << s.all_certified << " / "
        << s.runs << " | " << Fixed(s.median_t_all_s, 1) << " | " << s.certified << " / " << s.anchors << " | "
        << s.beyond_accuracy << " | " << Fixed(s.max_error_m, 2) << " | " << Fixed(s.mean_distance_m, 0) << " | "
-       << Fixed(s.mean_detours, 1) << " |\n";
+       << Fixed(s.mean_detours, 1) << " | "
+       << (s.mean_navigation_rmse_m >= 0.0 ? Fixed(s.mean_navigation_rmse_m, 3) : "-") << " |\n";
   }
   write("exploration.md", [&](std::ostream& file) { file << md.str(); });
+  if (config.navigation) {
+    std::vector<nav::NavigationRecord> navigated;
+    for (const ExplorationRecord& r : records) {
+      nav::NavigationRecord n{r.row, r.realization, r.policy, {}};
+      n.outcome.error_by_bin_m = r.navigation_error_by_bin_m;
+      navigated.push_back(std::move(n));
+    }
+    write("navigation_error.csv", [&](std::ostream& file) {
+      report::WriteNavigationErrorCsv(file, navigated, rows, config.navigation->error_bin_s);
+    });
+  }
   write("manifest.json", [&](std::ostream& file) { file << report::ManifestJson(config, info); });
   return md.str();
 }

@@ -83,6 +83,20 @@ TEST(Exploration, GuidanceCertifiesWhatAFlatSurveyCannot) {
   EXPECT_GE(certified[schema::kDopWaypointsPolicy], 10);
 }
 
+TEST(Exploration, WithANavigationSectionEveryRunIsNavigatedOverTheSameTime) {
+  schema::ExperimentConfig config = FlatSurvey();
+  config.navigation.emplace();
+  double pattern_m = 0.0, guided_m = 0.0;
+  for (const ExplorationRecord& r : RunExploration(config, AllComponents(), 2)) {
+    EXPECT_EQ(r.duration_s, config.exploration->max_duration_s);  // not cut at the last certification
+    ASSERT_GE(r.navigation_rmse_m, 0.0);
+    (r.policy == schema::kPatternPolicy ? pattern_m : guided_m) += r.navigation_rmse_m;
+  }
+  // The survey alone certifies no anchor: odometry alone drifts; guidance's anchors hold it.
+  EXPECT_LT(guided_m, 0.5 * pattern_m);
+  for (const ExplorationRecord& r : RunExploration(FlatSurvey(), AllComponents(), 2)) EXPECT_EQ(r.navigation_rmse_m, -1.0);
+}
+
 TEST(Exploration, AGroundRobotKeepsItsHeightAndCannotLeaveThePlane) {
   schema::ExperimentConfig config = FlatSurvey();
   config.exploration->policies = {schema::kGuidedPolicy};

@@ -10,6 +10,7 @@
 //   D soonest, ranges there for dwell_s, and flies back to where it left the pattern.
 // Ranges are drawn where the body actually is (sim::RangeDraws), so a detour's ranges are real.
 
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -30,17 +31,24 @@ struct ExplorationRecord {
   double max_error_m = 0.0;    // the largest error among the certified (0: none)
   double t_all_certified_s = -1.0;  // when the last anchor was certified; -1: not all were
   double duration_s = 0.0;     // the run's end: every anchor certified, or max_duration_s
-  double distance_m = 0.0;     // the body's path length over the run
-  int detours = 0;             // guided: candidates flown to
+  double distance_m = 0.0;     // the body's path length until every anchor was certified (or the run's end)
+  int detours = 0;             // places flown to off the pattern
+  // With the config's navigation section: the navigation filter's position RMSE over the whole
+  // run (max_duration_s for every policy) with the certified anchors from their certification; -1: none.
+  double navigation_rmse_m = -1.0;
+  std::vector<double> navigation_error_by_bin_m;  // its mean error per navigation.error_bin_s bin
 };
 
 // Refuses (InputError) a config without an `exploration` section, one CheckExperiment refuses, or
 // a row whose ranging rate or environment the loop cannot run.
 void CheckExploration(const schema::ExperimentConfig& config, const registry::Components& components);
 
-// One (row, realization): every policy of the config on the same anchors, pattern and streams.
+// One (row, realization): every policy of the config on the same anchors, pattern and streams;
+// with `navigation`, each run then navigated with its certified anchors (the odometry drawn from
+// the stream (seed, realization, schema::kNavigationStream), the same for every policy).
 std::vector<ExplorationRecord> ExploreRealization(const schema::RowConfig& row, int row_index, std::uint64_t seed,
                                                   int realization, const schema::ExplorationConfig& exploration,
+                                                  const std::optional<schema::NavigationConfig>& navigation,
                                                   const registry::Components& components);
 
 // Every row and realization on `threads` threads, ordered by row, realization, policy: the same
@@ -50,7 +58,8 @@ std::vector<ExplorationRecord> RunExploration(const schema::ExperimentConfig& co
                                               const RunControl& control = {});
 
 // exploration.csv (one line per run), exploration_summary.csv and exploration.md (per row and
-// policy), manifest.json; returns the Markdown.
+// policy), with a navigation section navigation_error.csv (the navigation study's format, a policy
+// for each method), manifest.json; returns the Markdown.
 std::string WriteExplorationFiles(const FileWriter& write, const schema::ExperimentConfig& config,
                                   const std::vector<ExplorationRecord>& records, const report::RunInfo& info);
 
