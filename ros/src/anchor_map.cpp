@@ -215,6 +215,20 @@ std::vector<AnchorGuide> AnchorMap::Guide(double reach_m, int steps, std::size_t
   return out;
 }
 
+std::vector<Eigen::Vector3d> WaypointsOf(const std::vector<AnchorGuide>& guides) {
+  std::vector<const AnchorGuide*> closing;
+  for (const AnchorGuide& guide : guides) {
+    if (std::isfinite(guide.seconds_to_certify) && !guide.p_world_candidate.empty()) closing.push_back(&guide);
+  }
+  std::stable_sort(closing.begin(), closing.end(), [](const AnchorGuide* a, const AnchorGuide* b) {
+    return a->seconds_to_certify < b->seconds_to_certify || (a->seconds_to_certify == b->seconds_to_certify &&
+                                                             a->anchor_id < b->anchor_id);
+  });
+  std::vector<Eigen::Vector3d> waypoints;
+  for (const AnchorGuide* guide : closing) waypoints.push_back(guide->p_world_candidate.front());
+  return waypoints;
+}
+
 void AnchorMap::Reset() {
   impl_->front_end.ResetAll();
   std::lock_guard lock(impl_->mutex);

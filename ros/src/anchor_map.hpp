@@ -51,6 +51,11 @@ struct AnchorGuide {
   double seconds_to_certify = 0.0;                 // the fewest of them at the link's rate
 };
 
+// Where to go next, for a planner (the node's ~waypoints): each waiting anchor's best candidate,
+// where ranging there brings its region within D, the soonest first (ties: the lower anchor id).
+// As the closed-loop study flies them (docs/guidance.md): an anchor no candidate closes has none.
+std::vector<Eigen::Vector3d> WaypointsOf(const std::vector<AnchorGuide>& guides);
+
 // What came in and what the front end did not use, for the node's diagnostics.
 struct InputCounts {
   long poses = 0, ranges = 0;        // handed to the front end

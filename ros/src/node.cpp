@@ -11,6 +11,7 @@
 #include <vector>
 
 #include <diagnostic_msgs/DiagnosticArray.h>
+#include <geometry_msgs/PoseArray.h>
 #include <geometry_msgs/PoseStamped.h>
 #include <geometry_msgs/PoseWithCovarianceStamped.h>
 #include <geometry_msgs/TransformStamped.h>
@@ -47,6 +48,7 @@ class Node {
     }
     markers_ = private_nh.advertise<visualization_msgs::MarkerArray>("markers", 1, true);
     guidance_ = private_nh.advertise<visualization_msgs::MarkerArray>("guidance", 1, true);
+    waypoints_ = private_nh.advertise<geometry_msgs::PoseArray>("waypoints", 1, true);
     diagnostics_ = nh.advertise<diagnostic_msgs::DiagnosticArray>("/diagnostics", 10);
     reset_ = private_nh.advertiseService("reset", &Node::OnReset, this);
     save_ = private_nh.advertiseService("save", &Node::OnSave, this);
@@ -255,14 +257,28 @@ class Node {
   }
 
   // Per anchor the trigger still waits for, where to range from next (docs/guidance.md): its best
-  // candidate as a sphere, labelled with the seconds to certify and the test that holds it now.
+  // candidate as a sphere, labelled with the seconds to certify and the test that holds it now;
+  // and for a planner, those that close a region as waypoints, the soonest first.
   void PublishGuidance() {
     if (!(settings_.guidance_reach_m > 0.0)) return;
+    const std::vector<AnchorGuide> guides = map_.Guide(settings_.guidance_reach_m, 2, 1, settings_.guidance_range_rate_hz);
+    geometry_msgs::PoseArray waypoints;
+    waypoints.header.frame_id = settings_.frame_id;
+    waypoints.header.stamp = ros::Time::now();
+    for (const Eigen::Vector3d& p : WaypointsOf(guides)) {
+      geometry_msgs::Pose pose;
+      pose.position.x = p.x();
+      pose.position.y = p.y();
+      pose.position.z = p.z();
+      pose.orientation.w = 1.0;
+      waypoints.poses.push_back(pose);
+    }
+    waypoints_.publish(waypoints);
     visualization_msgs::MarkerArray array;
     visualization_msgs::Marker clear;  // anchors initialized since the last step lose theirs
     clear.action = visualization_msgs::Marker::DELETEALL;
     array.markers.push_back(clear);
-    for (const AnchorGuide& guide : map_.Guide(settings_.guidance_reach_m, 2, 1, settings_.guidance_range_rate_hz)) {
+    for (const AnchorGuide& guide : guides) {
       if (guide.p_world_candidate.empty()) continue;
       visualization_msgs::Marker m;
       m.header.frame_id = settings_.frame_id;
@@ -379,7 +395,7 @@ class Node {
   ros::NodeHandle private_nh_;
   std::vector<ros::Subscriber> subscribers_;
   ros::Subscriber reset_anchor_;
-  ros::Publisher markers_, guidance_, diagnostics_;
+  ros::Publisher markers_, guidance_, waypoints_, diagnostics_;
   std::map<int, ros::Publisher> anchor_publishers_;
   ros::ServiceServer reset_, save_;
   ros::WallTimer diagnostics_timer_;

@@ -82,6 +82,24 @@ TEST(AnchorMap, GuidesOnlyTheAnchorsItWaitsFor) {
   EXPECT_DOUBLE_EQ(guides[0].seconds_to_certify, fewest / 10.0);
 }
 
+// The waypoints: each anchor's best candidate that closes its region, the soonest first.
+TEST(AnchorMap, WaypointsAreTheCandidatesThatCertifySoonestFirst) {
+  auto guide = [](int anchor_id, double seconds, double x) {
+    AnchorGuide g;
+    g.anchor_id = anchor_id;
+    g.seconds_to_certify = seconds;
+    g.p_world_candidate = {Eigen::Vector3d(x, 0.0, 0.0), Eigen::Vector3d(-x, 0.0, 0.0)};
+    return g;
+  };
+  const std::vector<Eigen::Vector3d> waypoints =
+      WaypointsOf({guide(1, 4.0, 1.0), guide(2, INFINITY, 2.0), guide(3, 0.5, 3.0), guide(4, 4.0, 4.0)});
+  ASSERT_EQ(waypoints.size(), 3u);  // anchor 2: no candidate closes it
+  EXPECT_EQ(waypoints[0].x(), 3.0);
+  EXPECT_EQ(waypoints[1].x(), 1.0);  // a tie: the lower anchor first
+  EXPECT_EQ(waypoints[2].x(), 4.0);
+  EXPECT_TRUE(WaypointsOf({}).empty());
+}
+
 TEST(AnchorMap, RefusesAnOfflineOrUnknownTrigger) {
   EXPECT_THROW(AnchorMap("", {}, "fixed_window"), BadSetting);
   EXPECT_THROW(AnchorMap("", {}, "no_such_trigger"), BadSetting);

@@ -1,6 +1,6 @@
 """Plays a simulated log into anchorbench_ros through a real master and checks what comes out:
 each initialized anchor on ~anchor_<id> within D of the log's anchors, a diagnostic per anchor,
-and ~save writing anchors.csv. Usage: ros_node_check.py LOG_FOLDER SAVE_DIR"""
+~waypoints, and ~save writing anchors.csv. Usage: ros_node_check.py LOG_FOLDER SAVE_DIR"""
 import csv
 import math
 import os
@@ -9,7 +9,7 @@ import time
 
 import rospy
 from diagnostic_msgs.msg import DiagnosticArray
-from geometry_msgs.msg import PoseStamped, PoseWithCovarianceStamped
+from geometry_msgs.msg import PoseArray, PoseStamped, PoseWithCovarianceStamped
 from sensor_msgs.msg import Range
 from std_srvs.srv import Trigger
 
@@ -26,12 +26,13 @@ truth = {int(r["anchor_id"]): (float(r["x"]), float(r["y"]), float(r["z"])) for 
 rospy.init_node("anchorbench_check", anonymous=True)
 poses = rospy.Publisher("/tag0/pose", PoseStamped, queue_size=10000)
 ranges = rospy.Publisher("/tag0/ranges", Range, queue_size=10000)
-estimates, diagnostics = {}, {}
+estimates, diagnostics, waypoints = {}, {}, []
 for anchor_id in truth:
     rospy.Subscriber(f"/anchorbench/anchor_{anchor_id}", PoseWithCovarianceStamped,
                      lambda m, a=anchor_id: estimates.__setitem__(a, m))
 rospy.Subscriber("/diagnostics", DiagnosticArray,
                  lambda m: diagnostics.update({s.name: s for s in m.status if s.name.startswith("anchorbench: anchor")}))
+rospy.Subscriber("/anchorbench/waypoints", PoseArray, waypoints.append)
 deadline = time.time() + 20
 while (poses.get_num_connections() == 0 or ranges.get_num_connections() == 0) and time.time() < deadline:
     time.sleep(0.1)
@@ -65,6 +66,9 @@ for anchor_id, m in estimates.items():
     assert error < D, f"anchor {anchor_id} published {error:.2f} m off"
     assert m.pose.covariance[0] > 0 and m.header.frame_id == "world"
 assert len(diagnostics) == len(truth), f"diagnostics for {sorted(diagnostics)}"
+# ~waypoints, beside ~guidance: a pose per waiting anchor a candidate certifies (none once all are)
+assert waypoints and waypoints[-1].header.frame_id == "world", "no ~waypoints"
+assert len(waypoints[-1].poses) <= len(truth) - len(estimates)
 for status in diagnostics.values():
     keys = {kv.key for kv in status.values}
     assert "trigger" in keys and "samples" in keys, keys
