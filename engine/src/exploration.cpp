@@ -127,9 +127,35 @@ std::optional<Detour> NextDetour(const estimator::FrontEnd& front_end, const Eig
   return Soonest(guidance, p_world_body, ex, request.samples, rate_hz, detours_of);
 }
 
-// The offline-waypoint baseline's route (dop_waypoints.hpp): waypoints on a grid over the free
-// space (the candidates' spacing; at the body's height without vertical reach), planned at each
-// waiting anchor's estimate so far (the certificate's last), nearest first.
+// The waypoints' candidates: a grid over the free space at `spacing_m` (at `z_m` without vertical
+// reach), coarsened by half steps until it has at most kMaxPlanPoints points, so that a large
+// environment with a fine reach costs a bounded plan.
+std::vector<Eigen::Vector3d> PlanGrid(const FreeSpace& space, double spacing_m, bool vertical, double z_m) {
+  constexpr double kMaxPlanPoints = 1e5;
+  const Eigen::Array3d extent = (space.high - space.low).array().max(0.0);
+  auto points_along = [&](double spacing) {
+    Eigen::Array3d n = (extent / spacing).floor() + 1.0;
+    if (!vertical) n.z() = 1.0;
+    return n;
+  };
+  while (!(points_along(spacing_m).prod() <= kMaxPlanPoints)) spacing_m *= 1.5;
+  const Eigen::Array3i n = points_along(spacing_m).cast<int>();
+  std::vector<Eigen::Vector3d> grid;
+  for (int i = 0; i < n.x(); ++i) {
+    for (int j = 0; j < n.y(); ++j) {
+      for (int k = 0; k < n.z(); ++k) {
+        Eigen::Vector3d p = space.low + spacing_m * Eigen::Vector3d(i, j, k);
+        if (!vertical) p.z() = z_m;
+        grid.push_back(p);
+      }
+    }
+  }
+  return grid;
+}
+
+// The offline-waypoint baseline's route (dop_waypoints.hpp): waypoints on PlanGrid at the
+// candidates' spacing, planned at each waiting anchor's estimate so far (the certificate's last),
+// nearest first.
 std::vector<Eigen::Vector3d> PlanRoute(const estimator::FrontEnd& front_end, const Eigen::Vector3d& p_world_body,
                                        const schema::ExplorationConfig& ex, const FreeSpace& space, double rate_hz) {
   std::vector<PlannedAnchor> anchors;
@@ -140,19 +166,7 @@ std::vector<Eigen::Vector3d> PlanRoute(const estimator::FrontEnd& front_end, con
       anchors.push_back({p_world_anchor, RangeInformation(chain.p_world_tag(), p_world_anchor)});
     }
   }
-  const double spacing_m = ex.reach_m / ex.grid_steps;
-  std::vector<Eigen::Vector3d> grid;
-  const Eigen::Array3d extent = (space.high - space.low).array().max(0.0);
-  const Eigen::Array3i steps = (extent / spacing_m).floor().cast<int>();
-  for (int i = 0; i <= steps.x(); ++i) {
-    for (int j = 0; j <= steps.y(); ++j) {
-      for (int k = 0; k <= (ex.vertical ? steps.z() : 0); ++k) {
-        Eigen::Vector3d p = space.low + spacing_m * Eigen::Vector3d(i, j, k);
-        if (!ex.vertical) p.z() = p_world_body.z();
-        grid.push_back(p);
-      }
-    }
-  }
+  const std::vector<Eigen::Vector3d> grid = PlanGrid(space, ex.reach_m / ex.grid_steps, ex.vertical, p_world_body.z());
   return PlanDopWaypoints(std::move(anchors), grid, ex.waypoints, std::max(1.0, ex.dwell_s * rate_hz), p_world_body);
 }
 

@@ -104,6 +104,25 @@ TEST(Exploration, AGroundRobotKeepsItsHeightAndCannotLeaveThePlane) {
   for (const ExplorationRecord& r : RunExploration(config, AllComponents(), 2)) EXPECT_EQ(r.certified, 0);
 }
 
+// The offline waypoints' grid over a 10 km tunnel at 1 mm steps would hold ~1e15 points: it is
+// coarsened to at most 1e5, so the plan is made (the old grid never finished).
+TEST(Exploration, AHugeEnvironmentWithAFineReachPlansOnABoundedGrid) {
+  schema::ExperimentConfig config = FlatSurvey();
+  config.realizations = 1;
+  config.scenario.environment = sim::EnvironmentKind::kTunnel;
+  config.scenario.tunnel.length_m = 10000.0;
+  config.scenario.tunnel.num_anchors = 4;
+  config.scenario.trajectory.kind = sim::TrajectoryKind::kRandom;
+  config.exploration->policies = {schema::kDopWaypointsPolicy};
+  config.exploration->reach_m = 0.01;
+  config.exploration->grid_steps = 10;
+  config.exploration->plan_after_s = 0.0;
+  config.exploration->max_duration_s = 2.0;
+  const std::vector<ExplorationRecord> records = RunExploration(config, AllComponents(), 1);
+  ASSERT_EQ(records.size(), 1u);
+  EXPECT_EQ(records[0].duration_s, 2.0);
+}
+
 TEST(Exploration, AConfigWithoutAnExplorationSectionIsRefused) {
   schema::ExperimentConfig config = FlatSurvey();
   config.exploration.reset();
