@@ -2,12 +2,9 @@
 
 #include <algorithm>
 #include <cmath>
-#include <iomanip>
 #include <limits>
 #include <map>
 #include <optional>
-#include <sstream>
-#include <stdexcept>
 
 #include "anchorbench/engine/attempt.hpp"
 #include "anchorbench/engine/executor.hpp"
@@ -15,8 +12,6 @@
 #include "anchorbench/engine/navigation.hpp"
 #include "anchorbench/estimator/front_end.hpp"
 #include "anchorbench/estimator/guide.hpp"
-#include "anchorbench/report/navigation_report.hpp"
-#include "anchorbench/report/run_outputs.hpp"
 #include "anchorbench/schema/input_error.hpp"
 #include "anchorbench/schema/random_streams.hpp"
 #include "anchorbench/sim/range_draws.hpp"
@@ -170,108 +165,168 @@ std::vector<Eigen::Vector3d> PlanRoute(const estimator::FrontEnd& front_end, con
   return PlanDopWaypoints(std::move(anchors), grid, ex.waypoints, std::max(1.0, ex.dwell_s * rate_hz), p_world_body);
 }
 
-// One policy's run on the realization's anchors and pattern.
-ExplorationRecord RunPolicy(const schema::RowConfig& row, std::uint64_t seed, int realization,
-                            const schema::ExplorationConfig& ex, const registry::Components& components,
-                            const std::vector<sim::SimAnchor>& anchors, const std::vector<Eigen::Vector3d>& pattern,
-                            const std::string& policy, const std::optional<schema::NavigationConfig>& navigation) {
-  const sim::ScenarioOptions& scenario = row.scenario;
-  const double rate_hz = scenario.trajectory.rate_hz, dt = 1.0 / rate_hz;
-  std::map<int, schema::AnchorTruth> truth;
-  for (const sim::SimAnchor& anchor : anchors) truth[anchor.id] = {anchor.p_world_anchor, anchor.bias_m};
-  estimator::FrontEnd front_end([&](int anchor_id) {
-    std::vector<estimator::AnchorInitializer> chain;
-    chain.push_back(registry::MakeInitializer(components, anchor_id, row.estimator, ex.trigger,
-                                              SolverSeed(seed, static_cast<std::uint64_t>(realization), anchor_id),
-                                              truth.at(anchor_id).p_world_anchor));
-    return chain;
-  });
-  for (const sim::SimAnchor& anchor : anchors) front_end.AddAnchor(anchor.id);
-  // Every policy draws from the same streams: the same link noise, outliers and position errors.
-  sim::RangeDraws draws(scenario.ranging, seed, static_cast<std::uint64_t>(realization), scenario.tag_offsets_m.size(),
-                        anchors);
-  sim::TagPlacement placement(scenario, seed, static_cast<std::uint64_t>(realization));
-  const FreeSpace space = FreeSpaceOf(scenario, ex.clearance_m);
-  Body body(pattern, ex.speed_mps * dt);
+// The realization one policy flies: its row, anchors and pattern, and the streams they came from.
+struct Realization {
+  const schema::RowConfig& row;
+  std::uint64_t seed;
+  int index;
+  const std::vector<sim::SimAnchor>& anchors;
+  const std::vector<Eigen::Vector3d>& pattern;
+};
 
-  ExplorationRecord record;
-  record.policy = policy;
-  const bool detours = policy == schema::kGuidedPolicy || policy == schema::kOraclePolicy;
-  bool plans = policy == schema::kDopWaypointsPolicy;  // once, at plan_after_s
-  const std::map<int, schema::AnchorTruth>* oracle = policy == schema::kOraclePolicy ? &truth : nullptr;
-  record.anchors = static_cast<int>(anchors.size());
-  const double accuracy_m = row.estimator.certificate.accuracy_m;
-  std::vector<Eigen::Vector3d> p_true, p_reported;
-  std::vector<sim::SimRange> ranges;
-  double next_decision_s = ex.decision_period_s;
-  std::map<int, int> detours_of;  // detours flown for each anchor
-  // With a navigation section, the run goes on to max_duration_s (the same time for every policy)
-  // and tag 0's flight, its ranges and the certified anchors go to the navigation filter after.
-  Trajectory flown;
-  std::vector<nav::UsableAnchor> usable;
-  const auto epochs = static_cast<std::size_t>(std::floor(ex.max_duration_s * rate_hz)) + 1;
-  for (std::size_t k = 0; k < epochs; ++k) {
-    const double t_s = static_cast<double>(k) * dt;
-    // This epoch's ranges where the body is, to the front end.
-    placement.Next(body.p_world_body(), body.yaw_rad(), &p_true, &p_reported);
-    ranges.clear();
-    draws.Epoch(k, t_s, p_true, body.yaw_rad(), &ranges);
-    for (const sim::SimRange& r : ranges) {
-      front_end.AddSample({r.t_s, r.tag_id, r.anchor_id, r.range_m, p_reported[static_cast<std::size_t>(r.tag_id)]});
-      if (navigation && r.tag_id == 0) flown.ranges.push_back({k, r.anchor_id, r.range_m});
+// One policy's run, epoch by epoch: the ranges drawn where the body is and fed to the front end,
+// the certified anchors judged against the truth, the policy's decision, one step of the body.
+class PolicyRun {
+ public:
+  PolicyRun(const Realization& r, const schema::ExplorationConfig& ex, const registry::Components& components,
+            const std::string& policy, bool navigated)
+      : r_(r),
+        ex_(ex),
+        rate_hz_(r.row.scenario.trajectory.rate_hz),
+        dt_s_(1.0 / rate_hz_),
+        navigated_(navigated),
+        truth_(TruthOf(r.anchors)),
+        front_end_(ChainsOf(r, ex, components, truth_)),
+        // Every policy draws from the same streams: the same link noise, outliers and position errors.
+        draws_(r.row.scenario.ranging, r.seed, static_cast<std::uint64_t>(r.index), r.row.scenario.tag_offsets_m.size(),
+               r.anchors),
+        placement_(r.row.scenario, r.seed, static_cast<std::uint64_t>(r.index)),
+        space_(FreeSpaceOf(r.row.scenario, ex.clearance_m)),
+        body_(r.pattern, ex.speed_mps * dt_s_),
+        detours_(policy == schema::kGuidedPolicy || policy == schema::kOraclePolicy),
+        plans_(policy == schema::kDopWaypointsPolicy),
+        oracle_(policy == schema::kOraclePolicy ? &truth_ : nullptr),
+        next_decision_s_(ex.decision_period_s) {
+    for (const sim::SimAnchor& anchor : r.anchors) front_end_.AddAnchor(anchor.id);
+    record_.realization = r.index;
+    record_.policy = policy;
+    record_.anchors = static_cast<int>(r.anchors.size());
+  }
+
+  // Until every anchor is certified, or (navigated: the same time for every policy) to the end.
+  ExplorationRecord Run(const std::optional<schema::NavigationConfig>& navigation) {
+    const auto epochs = static_cast<std::size_t>(std::floor(ex_.max_duration_s * rate_hz_)) + 1;
+    for (std::size_t k = 0; k < epochs; ++k) {
+      const double t_s = static_cast<double>(k) * dt_s_;
+      RangeFromBody(k, t_s);
+      TakeCertified(t_s);
+      if (record_.certified == record_.anchors && record_.t_all_certified_s < 0.0) {
+        record_.t_all_certified_s = t_s;
+        record_.distance_m = body_.distance_m();
+        if (!navigated_) break;
+      }
+      Decide(t_s);
+      body_.Step();
     }
-    if (navigation) {
-      flown.t_s.push_back(t_s);
-      flown.p_world_tag.push_back(p_true.front());
+    if (record_.t_all_certified_s < 0.0) record_.distance_m = body_.distance_m();
+    if (navigation) Navigate(*navigation);
+    return std::move(record_);
+  }
+
+ private:
+  static std::map<int, schema::AnchorTruth> TruthOf(const std::vector<sim::SimAnchor>& anchors) {
+    std::map<int, schema::AnchorTruth> truth;
+    for (const sim::SimAnchor& anchor : anchors) truth[anchor.id] = {anchor.p_world_anchor, anchor.bias_m};
+    return truth;
+  }
+
+  static estimator::FrontEnd::ChainFactory ChainsOf(const Realization& r, const schema::ExplorationConfig& ex,
+                                                    const registry::Components& components,
+                                                    const std::map<int, schema::AnchorTruth>& truth) {
+    return [&r, &ex, &components, &truth](int anchor_id) {
+      std::vector<estimator::AnchorInitializer> chain;
+      chain.push_back(registry::MakeInitializer(components, anchor_id, r.row.estimator, ex.trigger,
+                                                SolverSeed(r.seed, static_cast<std::uint64_t>(r.index), anchor_id),
+                                                truth.at(anchor_id).p_world_anchor));
+      return chain;
+    };
+  }
+
+  // This epoch's ranges where the body is, to the front end (and tag 0's to the navigation after).
+  void RangeFromBody(std::size_t k, double t_s) {
+    placement_.Next(body_.p_world_body(), body_.yaw_rad(), &p_true_, &p_reported_);
+    ranges_.clear();
+    draws_.Epoch(k, t_s, p_true_, body_.yaw_rad(), &ranges_);
+    for (const sim::SimRange& range : ranges_) {
+      front_end_.AddSample(
+          {range.t_s, range.tag_id, range.anchor_id, range.range_m, p_reported_[static_cast<std::size_t>(range.tag_id)]});
+      if (navigated_ && range.tag_id == 0) flown_.ranges.push_back({k, range.anchor_id, range.range_m});
     }
-    // The certified anchors, judged against the truth.
-    for (const estimator::FrontEndEvent& event : front_end.TakeEvents()) {
+    if (navigated_) {
+      flown_.t_s.push_back(t_s);
+      flown_.p_world_tag.push_back(p_true_.front());
+    }
+    record_.duration_s = t_s;
+  }
+
+  // The anchors certified this epoch, judged against the truth, and usable by the navigation.
+  void TakeCertified(double t_s) {
+    for (const estimator::FrontEndEvent& event : front_end_.TakeEvents()) {
       if (event.kind != estimator::FrontEndEvent::Kind::kInitialized) continue;
-      const double error_m = (event.init.solve.p_world_anchor - truth.at(event.anchor_id).p_world_anchor).norm();
-      ++record.certified;
-      if (error_m > accuracy_m) ++record.beyond_accuracy;
-      record.max_error_m = std::max(record.max_error_m, error_m);
       const estimator::SolveResult& solve = event.init.solve;
-      usable.push_back({event.anchor_id, t_s, solve.p_world_anchor, solve.bias_m, solve.covariance, false});
+      const double error_m = (solve.p_world_anchor - truth_.at(event.anchor_id).p_world_anchor).norm();
+      ++record_.certified;
+      if (error_m > r_.row.estimator.certificate.accuracy_m) ++record_.beyond_accuracy;
+      record_.max_error_m = std::max(record_.max_error_m, error_m);
+      usable_.push_back({event.anchor_id, t_s, solve.p_world_anchor, solve.bias_m, solve.covariance, false});
     }
-    record.duration_s = t_s;
-    if (record.certified == record.anchors && record.t_all_certified_s < 0.0) {
-      record.t_all_certified_s = t_s;
-      record.distance_m = body.distance_m();
-      if (!navigation) break;
+  }
+
+  // The offline baseline's waypoints, planned once; guided's and the oracle's detour when one is
+  // due and a candidate is worth it.
+  void Decide(double t_s) {
+    const int dwell_epochs = static_cast<int>(std::ceil(ex_.dwell_s * rate_hz_));
+    if (plans_ && body_.on_pattern() && t_s >= ex_.plan_after_s) {
+      plans_ = false;
+      std::vector<Eigen::Vector3d> route = PlanRoute(front_end_, body_.p_world_body(), ex_, space_, rate_hz_);
+      record_.detours = static_cast<int>(route.size());
+      body_.Visit(std::move(route), dwell_epochs);
     }
-    // The offline baseline: its waypoints, planned once.
-    if (plans && body.on_pattern() && t_s >= ex.plan_after_s) {
-      plans = false;
-      std::vector<Eigen::Vector3d> route = PlanRoute(front_end, body.p_world_body(), ex, space, rate_hz);
-      record.detours = static_cast<int>(route.size());
-      body.Visit(std::move(route), static_cast<int>(std::ceil(ex.dwell_s * rate_hz)));
-    }
-    // Guided and oracle: a detour when one is due and a candidate is worth it.
-    if (detours && body.on_pattern() && t_s >= next_decision_s) {
-      next_decision_s = t_s + ex.decision_period_s;
+    if (detours_ && body_.on_pattern() && t_s >= next_decision_s_) {
+      next_decision_s_ = t_s + ex_.decision_period_s;
       if (const std::optional<Detour> detour =
-              NextDetour(front_end, body.p_world_body(), ex, space, rate_hz, detours_of, oracle)) {
-        body.Visit({detour->p_world_candidate}, static_cast<int>(std::ceil(ex.dwell_s * rate_hz)));
-        ++detours_of[detour->anchor_id];
-        ++record.detours;
+              NextDetour(front_end_, body_.p_world_body(), ex_, space_, rate_hz_, detours_of_, oracle_)) {
+        body_.Visit({detour->p_world_candidate}, dwell_epochs);
+        ++detours_of_[detour->anchor_id];
+        ++record_.detours;
       }
     }
-    body.Step();
   }
-  if (record.t_all_certified_s < 0.0) record.distance_m = body.distance_m();
-  if (navigation) {
-    sim::RandomStream rng(seed, static_cast<std::uint64_t>(realization), schema::kNavigationStream);
+
+  // Tag 0's flight through the navigation filter with the anchors certified, each from then on.
+  void Navigate(const schema::NavigationConfig& navigation) {
+    sim::RandomStream rng(r_.seed, static_cast<std::uint64_t>(r_.index), schema::kNavigationStream);
     nav::NavigationOutcome outcome =
-        NavigateMethods(flown, {{policy, usable}}, OptionsOf(*navigation, scenario.ranging.sigma_range_m), rng, 0,
-                        realization)
+        NavigateMethods(flown_, {{record_.policy, usable_}},
+                        OptionsOf(navigation, r_.row.scenario.ranging.sigma_range_m), rng, 0, r_.index)
             .front()
             .outcome;
-    record.navigation_rmse_m = outcome.rmse_m;
-    record.navigation_error_by_bin_m = std::move(outcome.error_by_bin_m);
+    record_.navigation_rmse_m = outcome.rmse_m;
+    record_.navigation_error_by_bin_m = std::move(outcome.error_by_bin_m);
   }
-  return record;
-}
+
+  const Realization& r_;
+  const schema::ExplorationConfig& ex_;
+  const double rate_hz_;
+  const double dt_s_;
+  const bool navigated_;
+  const std::map<int, schema::AnchorTruth> truth_;
+  estimator::FrontEnd front_end_;
+  sim::RangeDraws draws_;
+  sim::TagPlacement placement_;
+  const FreeSpace space_;
+  Body body_;
+  const bool detours_;
+  bool plans_;
+  const std::map<int, schema::AnchorTruth>* oracle_;
+  ExplorationRecord record_;
+  double next_decision_s_;
+  std::map<int, int> detours_of_;  // detours flown for each anchor
+  std::vector<Eigen::Vector3d> p_true_, p_reported_;
+  std::vector<sim::SimRange> ranges_;
+  Trajectory flown_;                      // navigated: tag 0's flight and ranges
+  std::vector<nav::UsableAnchor> usable_;  // and the anchors certified
+};
 
 }  // namespace
 
@@ -297,11 +352,10 @@ std::vector<ExplorationRecord> ExploreRealization(const schema::RowConfig& row, 
   const std::vector<sim::SimAnchor> anchors = sim::DrawAnchors(row.scenario, seed, static_cast<std::uint64_t>(realization));
   const sim::Trajectory pattern = sim::DrawBodyPath(row.scenario, anchors, seed, static_cast<std::uint64_t>(realization));
   std::vector<ExplorationRecord> records;
+  const Realization r{row, seed, realization, anchors, pattern.p_world_tag};
   for (const std::string& policy : exploration.policies) {
-    records.push_back(
-        RunPolicy(row, seed, realization, exploration, components, anchors, pattern.p_world_tag, policy, navigation));
+    records.push_back(PolicyRun(r, exploration, components, policy, navigation.has_value()).Run(navigation));
     records.back().row = row_index;
-    records.back().realization = realization;
   }
   return records;
 }
@@ -317,128 +371,6 @@ std::vector<ExplorationRecord> RunExploration(const schema::ExperimentConfig& co
                               *config.exploration, config.navigation, components);
   };
   return ParallelRecords(static_cast<int>(rows.size()) * config.realizations, threads, unit, control);
-}
-
-namespace {
-
-struct PolicySummary {
-  int row = 0;
-  std::string policy;
-  int runs = 0, all_certified = 0, anchors = 0, certified = 0, beyond_accuracy = 0;
-  double median_t_all_s = kInf;  // over the runs, a run not all certified counting as +inf
-  double max_error_m = 0.0, mean_distance_m = 0.0, mean_detours = 0.0;
-  double mean_navigation_rmse_m = -1.0;  // -1: not navigated
-};
-
-double Median(std::vector<double> values) {
-  if (values.empty()) return kInf;
-  std::sort(values.begin(), values.end());
-  const std::size_t n = values.size();
-  return n % 2 == 1 ? values[n / 2] : 0.5 * (values[n / 2 - 1] + values[n / 2]);
-}
-
-std::vector<PolicySummary> Summarize(const std::vector<ExplorationRecord>& records, const schema::ExplorationConfig& ex,
-                                     int rows) {
-  std::vector<PolicySummary> summaries;
-  for (int row = 0; row < rows; ++row) {
-    for (const std::string& policy : ex.policies) {
-      PolicySummary s;
-      s.row = row;
-      s.policy = policy;
-      std::vector<double> t_all;
-      double rmse_sum_m = 0.0;
-      int navigated = 0;
-      for (const ExplorationRecord& r : records) {
-        if (r.row != row || r.policy != policy) continue;
-        ++s.runs;
-        s.anchors += r.anchors;
-        s.certified += r.certified;
-        s.beyond_accuracy += r.beyond_accuracy;
-        s.max_error_m = std::max(s.max_error_m, r.max_error_m);
-        s.mean_distance_m += r.distance_m;
-        s.mean_detours += r.detours;
-        if (r.t_all_certified_s >= 0.0) ++s.all_certified;
-        if (r.navigation_rmse_m >= 0.0) {
-          rmse_sum_m += r.navigation_rmse_m;
-          ++navigated;
-        }
-        t_all.push_back(r.t_all_certified_s >= 0.0 ? r.t_all_certified_s : kInf);
-      }
-      if (s.runs > 0) {
-        s.mean_distance_m /= s.runs;
-        s.mean_detours /= s.runs;
-      }
-      if (navigated > 0) s.mean_navigation_rmse_m = rmse_sum_m / navigated;
-      s.median_t_all_s = Median(t_all);
-      summaries.push_back(s);
-    }
-  }
-  return summaries;
-}
-
-std::string Fixed(double value, int digits) {
-  if (!std::isfinite(value)) return "inf";
-  std::ostringstream out;
-  out << std::fixed << std::setprecision(digits) << value;
-  return out.str();
-}
-
-}  // namespace
-
-std::string WriteExplorationFiles(const FileWriter& write, const schema::ExperimentConfig& config,
-                                  const std::vector<ExplorationRecord>& records, const report::RunInfo& info) {
-  const std::vector<schema::RowConfig> rows = schema::RowsOf(config);
-  write("exploration.csv", [&](std::ostream& file) {
-    file << "row,realization,policy,anchors,certified,beyond_accuracy,max_error_m,t_all_certified_s,duration_s,"
-            "distance_m,detours,navigation_rmse_m\n";
-    for (const ExplorationRecord& r : records) {
-      file << rows[static_cast<std::size_t>(r.row)].name << ',' << r.realization << ',' << r.policy << ',' << r.anchors << ','
-           << r.certified << ',' << r.beyond_accuracy << ',' << Fixed(r.max_error_m, 4) << ','
-           << (r.t_all_certified_s >= 0.0 ? Fixed(r.t_all_certified_s, 1) : "") << ',' << Fixed(r.duration_s, 1) << ','
-           << Fixed(r.distance_m, 2) << ',' << r.detours << ','
-           << (r.navigation_rmse_m >= 0.0 ? Fixed(r.navigation_rmse_m, 4) : "") << '\n';
-    }
-  });
-  const std::vector<PolicySummary> summaries = Summarize(records, *config.exploration, static_cast<int>(rows.size()));
-  write("exploration_summary.csv", [&](std::ostream& file) {
-    file << "row,policy,runs,all_certified_runs,median_t_all_certified_s,anchors,certified,beyond_accuracy,"
-            "max_error_m,mean_distance_m,mean_detours,mean_navigation_rmse_m\n";
-    for (const PolicySummary& s : summaries) {
-      file << rows[static_cast<std::size_t>(s.row)].name << ',' << s.policy << ',' << s.runs << ',' << s.all_certified << ','
-           << Fixed(s.median_t_all_s, 1) << ',' << s.anchors << ',' << s.certified << ',' << s.beyond_accuracy << ','
-           << Fixed(s.max_error_m, 3) << ',' << Fixed(s.mean_distance_m, 1) << ',' << Fixed(s.mean_detours, 1) << ','
-           << (s.mean_navigation_rmse_m >= 0.0 ? Fixed(s.mean_navigation_rmse_m, 3) : "") << '\n';
-    }
-  });
-  std::ostringstream md;
-  md << "# " << config.name << ": closed-loop exploration\n\n"
-     << "Time until every anchor is certified (trigger `" << config.exploration->trigger << "`, D = "
-     << Fixed(rows.front().estimator.certificate.accuracy_m, 2) << " m), per policy; a run that ends at "
-     << Fixed(config.exploration->max_duration_s, 0) << " s with an anchor waiting counts as inf in the median.\n\n"
-     << "| row | policy | runs all certified | median time to certify all (s) | anchors certified | beyond D | "
-        "max error (m) | mean distance (m) | mean detours | mean navigation RMSE (m) |\n"
-        "|---|---|---|---|---|---|---|---|---|---|\n";
-  for (const PolicySummary& s : summaries) {
-    md << "| " << rows[static_cast<std::size_t>(s.row)].name << " | " << s.policy << " | " << s.all_certified << " / "
-       << s.runs << " | " << Fixed(s.median_t_all_s, 1) << " | " << s.certified << " / " << s.anchors << " | "
-       << s.beyond_accuracy << " | " << Fixed(s.max_error_m, 2) << " | " << Fixed(s.mean_distance_m, 0) << " | "
-       << Fixed(s.mean_detours, 1) << " | "
-       << (s.mean_navigation_rmse_m >= 0.0 ? Fixed(s.mean_navigation_rmse_m, 3) : "-") << " |\n";
-  }
-  write("exploration.md", [&](std::ostream& file) { file << md.str(); });
-  if (config.navigation) {
-    std::vector<nav::NavigationRecord> navigated;
-    for (const ExplorationRecord& r : records) {
-      nav::NavigationRecord n{r.row, r.realization, r.policy, {}};
-      n.outcome.error_by_bin_m = r.navigation_error_by_bin_m;
-      navigated.push_back(std::move(n));
-    }
-    write("navigation_error.csv", [&](std::ostream& file) {
-      report::WriteNavigationErrorCsv(file, navigated, rows, config.navigation->error_bin_s);
-    });
-  }
-  write("manifest.json", [&](std::ostream& file) { file << report::ManifestJson(config, info); });
-  return md.str();
 }
 
 }  // namespace anchorbench::engine
