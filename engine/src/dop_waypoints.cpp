@@ -1,54 +1,44 @@
 #include "dop_waypoints.hpp"
 
-#include <cmath>
+#include <algorithm>
 #include <limits>
 
-#include <Eigen/Cholesky>
+#include "anchorbench/estimator/pdop.hpp"
 
 namespace anchorbench::engine {
 namespace {
 
 constexpr double kInf = std::numeric_limits<double>::infinity();
 
-Eigen::Vector4d RowAt(const Eigen::Vector3d& p_world_tag, const Eigen::Vector3d& p_world_anchor) {
-  const Eigen::Vector3d diff = p_world_tag - p_world_anchor;
-  const double distance_m = diff.norm();
-  Eigen::Vector4d row = Eigen::Vector4d::Zero();
-  if (distance_m > 0.0) row << -diff / distance_m, 1.0;
-  return row;
-}
-
-// sqrt(trace of the position block of the inverse information): +inf where it is singular.
-double Pdop(const Eigen::Matrix4d& information) {
-  const Eigen::LDLT<Eigen::Matrix4d> ldlt(information);
-  if (ldlt.info() != Eigen::Success || !ldlt.isPositive() || ldlt.vectorD().minCoeff() <= 1e-12 * information.trace()) {
-    return kInf;
-  }
-  const Eigen::Matrix4d covariance = ldlt.solve(Eigen::Matrix4d::Identity());
-  return std::sqrt(covariance.topLeftCorner<3, 3>().trace());
-}
-
 // The summed PDOP with `samples` more from `p`; an anchor still singular counts a large constant,
 // so that a waypoint that makes it observable is worth more than any other improvement.
 double CostWith(const std::vector<PlannedAnchor>& anchors, const Eigen::Vector3d& p, double samples) {
   constexpr double kSingularPdop = 1e6;
   double cost = 0.0;
-  for (const PlannedAnchor& a : anchors) {
-    const Eigen::Vector4d row = RowAt(p, a.p_world_anchor);
-    cost += std::min(kSingularPdop, Pdop(a.information + samples * row * row.transpose()));
+  for (PlannedAnchor a : anchors) {
+    a.Add(p, samples);
+    cost += std::min(kSingularPdop, estimator::BiasAwareDopFromSums(a.sum_outer, a.sum_rows, a.samples));
   }
   return cost;
 }
 
 }  // namespace
 
-Eigen::Matrix4d RangeInformation(std::span<const Eigen::Vector3d> p_world_tag, const Eigen::Vector3d& p_world_anchor) {
-  Eigen::Matrix4d information = Eigen::Matrix4d::Zero();
-  for (const Eigen::Vector3d& p : p_world_tag) {
-    const Eigen::Vector4d row = RowAt(p, p_world_anchor);
-    information.noalias() += row * row.transpose();
-  }
-  return information;
+void PlannedAnchor::Add(const Eigen::Vector3d& p_world_tag, double count) {
+  const Eigen::Vector3d diff = p_world_tag - p_world_anchor;
+  const double distance_m = diff.norm();
+  if (!(distance_m > 0.0)) return;  // at the anchor: no direction
+  const Eigen::Vector3d u = diff / distance_m;
+  sum_outer.noalias() += count * u * u.transpose();
+  sum_rows += count * u;
+  samples += count;
+}
+
+PlannedAnchor PlannedAt(const Eigen::Vector3d& p_world_anchor, std::span<const Eigen::Vector3d> p_world_tag) {
+  PlannedAnchor planned;
+  planned.p_world_anchor = p_world_anchor;
+  for (const Eigen::Vector3d& p : p_world_tag) planned.Add(p, 1.0);
+  return planned;
 }
 
 std::vector<Eigen::Vector3d> PlanDopWaypoints(std::vector<PlannedAnchor> anchors,
@@ -70,10 +60,7 @@ std::vector<Eigen::Vector3d> PlanDopWaypoints(std::vector<PlannedAnchor> anchors
     if (best == p_world_candidate.size()) break;
     taken[best] = true;
     chosen.push_back(p_world_candidate[best]);
-    for (PlannedAnchor& a : anchors) {
-      const Eigen::Vector4d row = RowAt(p_world_candidate[best], a.p_world_anchor);
-      a.information.noalias() += samples_each * row * row.transpose();
-    }
+    for (PlannedAnchor& a : anchors) a.Add(p_world_candidate[best], samples_each);
   }
   // Nearest first from the start, then from each waypoint.
   std::vector<Eigen::Vector3d> route;

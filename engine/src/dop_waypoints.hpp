@@ -13,13 +13,21 @@
 
 namespace anchorbench::engine {
 
+// An anchor's geometry at its estimate: the sums of the unit directions u to its samples' tags
+// (sum u u^T, sum u, and their count), from which estimator::BiasAwareDopFromSums gives the PDOP of
+// (p_A, gamma).
 struct PlannedAnchor {
-  Eigen::Vector3d p_world_anchor;           // its estimate
-  Eigen::Matrix4d information;              // of (p_A, gamma): sum of [-u, 1]^T [-u, 1] over its samples
+  Eigen::Vector3d p_world_anchor = Eigen::Vector3d::Zero();  // its estimate
+  Eigen::Matrix3d sum_outer = Eigen::Matrix3d::Zero();
+  Eigen::Vector3d sum_rows = Eigen::Vector3d::Zero();
+  double samples = 0.0;
+
+  // `count` samples more from a tag at `p_world_tag`.
+  void Add(const Eigen::Vector3d& p_world_tag, double count);
 };
 
-// The information of (p_A, gamma) at `p_world_anchor` from ranges at `p_world_tag` (unit weights).
-Eigen::Matrix4d RangeInformation(std::span<const Eigen::Vector3d> p_world_tag, const Eigen::Vector3d& p_world_anchor);
+// The sums at `p_world_anchor` of ranges from `p_world_tag`.
+PlannedAnchor PlannedAt(const Eigen::Vector3d& p_world_anchor, std::span<const Eigen::Vector3d> p_world_tag);
 
 // `count` distinct candidates, greedily the one that lowers the summed PDOP most with
 // `samples_each` samples from it, in the order to fly them from `p_world_start` (nearest first).

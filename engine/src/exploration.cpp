@@ -158,7 +158,7 @@ std::vector<Eigen::Vector3d> PlanRoute(const estimator::FrontEnd& front_end, con
     const estimator::AnchorInitializer& chain = front_end.chains(anchor_id).front();
     if (const std::optional<estimator::RegionForecast> forecast = chain.Forecast()) {
       const Eigen::Vector3d& p_world_anchor = forecast->basis().p_world_anchor;
-      anchors.push_back({p_world_anchor, RangeInformation(chain.p_world_tag(), p_world_anchor)});
+      anchors.push_back(PlannedAt(p_world_anchor, chain.p_world_tag()));
     }
   }
   const std::vector<Eigen::Vector3d> grid = PlanGrid(space, ex.reach_m / ex.grid_steps, ex.vertical, p_world_body.z());
