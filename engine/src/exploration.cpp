@@ -266,6 +266,7 @@ class PolicyRun {
       const estimator::SolveResult& solve = event.init.solve;
       const double error_m = (solve.p_world_anchor - truth_.at(event.anchor_id).p_world_anchor).norm();
       ++record_.certified;
+      if (detour_ && *detour_ == event.anchor_id) detour_.reset();
       if (error_m > r_.row.estimator.certificate.accuracy_m) ++record_.beyond_accuracy;
       record_.max_error_m = std::max(record_.max_error_m, error_m);
       usable_.push_back({event.anchor_id, t_s, solve.p_world_anchor, solve.bias_m, solve.covariance, false});
@@ -282,12 +283,17 @@ class PolicyRun {
       record_.detours = static_cast<int>(route.size());
       body_.Visit(std::move(route), dwell_epochs);
     }
-    if (detours_ && body_.on_pattern() && t_s >= next_decision_s_) {
+    if (body_.dwelling() && detours_ && !detour_) {
+      body_.Leave();  // the detour's anchor is certified: the rest of the dwell would be idle
+      next_decision_s_ = t_s;
+    }
+    if (detours_ && body_.free() && t_s >= next_decision_s_) {
       next_decision_s_ = t_s + ex_.decision_period_s;
       if (const std::optional<Detour> detour =
               NextDetour(front_end_, body_.p_world_body(), ex_, space_, rate_hz_, detours_of_, oracle_)) {
         body_.Visit({detour->p_world_candidate}, dwell_epochs);
         ++detours_of_[detour->anchor_id];
+        detour_ = detour->anchor_id;
         ++record_.detours;
       }
     }
@@ -322,6 +328,7 @@ class PolicyRun {
   ExplorationRecord record_;
   double next_decision_s_;
   std::map<int, int> detours_of_;  // detours flown for each anchor
+  std::optional<int> detour_;      // the anchor of the detour flown now, until it is certified
   std::vector<Eigen::Vector3d> p_true_, p_reported_;
   std::vector<sim::SimRange> ranges_;
   Trajectory flown_;                      // navigated: tag 0's flight and ranges

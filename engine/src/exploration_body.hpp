@@ -10,7 +10,8 @@
 namespace anchorbench::engine {
 
 // The body over one run: the pattern back and forth, or a route away from it (one candidate, or
-// planned waypoints) with a dwell at each of its places, and back to where it left the pattern.
+// planned waypoints) with a dwell at each of its places, and back to where it left the pattern
+// (a new route may start on the way back: detours chain without the return between them).
 // One Step() per epoch.
 class Body {
  public:
@@ -20,6 +21,14 @@ class Body {
   double yaw_rad() const { return yaw_rad_; }
   double distance_m() const { return distance_m_; }
   bool on_pattern() const { return leg_ == Leg::kPattern; }
+  // On the pattern or on the way back to it: free to take another route.
+  bool free() const { return leg_ == Leg::kPattern || leg_ == Leg::kBack; }
+  bool dwelling() const { return leg_ == Leg::kDwell; }
+
+  // Cuts the dwell at the current place short: on to the route's next place, or back.
+  void Leave() {
+    if (leg_ == Leg::kDwell) leg_ = ++next_ < targets_.size() ? Leg::kOut : Leg::kBack;
+  }
 
   void Visit(std::vector<Eigen::Vector3d> p_world_targets, int dwell_epochs) {
     if (p_world_targets.empty()) return;
@@ -40,7 +49,7 @@ class Body {
         }
         break;
       case Leg::kDwell:
-        if (--dwell_epochs_ <= 0) leg_ = ++next_ < targets_.size() ? Leg::kOut : Leg::kBack;
+        if (--dwell_epochs_ <= 0) Leave();
         break;
       case Leg::kBack:
         if (Toward(pattern_[index_])) leg_ = Leg::kPattern;
