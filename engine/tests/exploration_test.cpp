@@ -1,6 +1,8 @@
 #include "anchorbench/engine/exploration.hpp"
 
+#include <functional>
 #include <map>
+#include <sstream>
 #include <string>
 
 #include <gtest/gtest.h>
@@ -121,6 +123,37 @@ TEST(Exploration, AHugeEnvironmentWithAFineReachPlansOnABoundedGrid) {
   const std::vector<ExplorationRecord> records = RunExploration(config, AllComponents(), 1);
   ASSERT_EQ(records.size(), 1u);
   EXPECT_EQ(records[0].duration_s, 2.0);
+}
+
+// The summary's paired ratio: each realization's time over the pattern's, over the realizations
+// the pattern certifies whole; a policy's run that never does counts +inf.
+TEST(Exploration, TheSummaryPairsEachPolicysTimeWithThePatternsOnTheSameRealization) {
+  const schema::ExperimentConfig config = FlatSurvey();
+  std::vector<ExplorationRecord> records;
+  auto add = [&records](int realization, const char* policy, double t_all_s) {
+    ExplorationRecord r;
+    r.realization = realization;
+    r.policy = policy;
+    r.anchors = 4;
+    r.t_all_certified_s = t_all_s;
+    records.push_back(r);
+  };
+  // Guided over the pattern: 40/100, 30/50, never/80, and a realization the pattern never completes.
+  add(0, schema::kPatternPolicy, 100.0), add(0, schema::kGuidedPolicy, 40.0);
+  add(1, schema::kPatternPolicy, 50.0), add(1, schema::kGuidedPolicy, 30.0);
+  add(2, schema::kPatternPolicy, 80.0), add(2, schema::kGuidedPolicy, -1.0);
+  add(3, schema::kPatternPolicy, -1.0), add(3, schema::kGuidedPolicy, 1.0);
+  std::map<std::string, std::string> files;
+  WriteExplorationFiles([&files](const std::string& name, const std::function<void(std::ostream&)>& write) {
+    std::ostringstream out;
+    write(out);
+    files[name] = out.str();
+  }, config, records, {});
+  const std::string& summary = files.at("exploration_summary.csv");
+  // One row, "base" (RowsOf a config without rows): the medians of {0.4, 0.6, inf}, and none for
+  // the pattern against itself.
+  EXPECT_NE(summary.find("base,guided,4,3,35.0,16,0,0,0.600,"), std::string::npos) << summary;
+  EXPECT_NE(summary.find("base,pattern,4,3,90.0,16,0,0,,"), std::string::npos) << summary;
 }
 
 TEST(Exploration, AConfigWithoutAnExplorationSectionIsRefused) {
