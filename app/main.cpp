@@ -211,6 +211,9 @@ void AddMonteCarloCommands(CLI::App& cli, CommandLine& c) {
   c.navigate_cmd->add_option("config", c.navigate.config, "Experiment config (YAML) with a 'navigation' section")
       ->required();
   AddMonteCarloOptions(c.navigate_cmd, c.navigate);
+  c.navigate_cmd->add_flag("--resume", c.navigate.resume,
+                           "Continue an interrupted run from <out>.chunks/ (its finished units are kept); the results "
+                           "are byte-identical to an uninterrupted run's");
   c.navigate_cmd->add_option("--shard", c.navigate.shard,
                              "I/N: compute only shard I of N of the (row, realization) units into a shard folder; "
                              "`anchorbench merge` joins the N folders into the unsharded run's bytes");

@@ -31,14 +31,10 @@ std::unique_ptr<io::ResultFolder> OpenResultFolder(const MonteCarloArgs& args, c
   return std::make_unique<io::ResultFolder>(setup.out, options);
 }
 
-namespace {
-
 engine::ChunkStore::Mode StoreMode(const MonteCarloArgs& args) {
   if (args.resume) return engine::ChunkStore::Mode::kResume;
   return args.overwrite ? engine::ChunkStore::Mode::kOverwrite : engine::ChunkStore::Mode::kFresh;
 }
-
-}  // namespace
 
 std::optional<engine::Shard> ShardOf(const MonteCarloArgs& args) {
   if (args.shard.empty()) return std::nullopt;

@@ -11,6 +11,7 @@
 #include "anchorbench/io/result_folder.hpp"
 #include "anchorbench/report/run_outputs.hpp"
 #include "anchorbench/schema/experiment.hpp"
+#include "anchorbench/engine/chunk_store.hpp"
 #include "anchorbench/engine/job.hpp"
 #include "anchorbench/engine/shard.hpp"
 #include "commands.hpp"
@@ -32,6 +33,9 @@ std::vector<std::filesystem::path> InputsOf(const MonteCarloArgs& args);
 // one of the command's inputs, checked for being writable, with `expected_bytes` reserved on its disk.
 std::unique_ptr<io::ResultFolder> OpenResultFolder(const MonteCarloArgs& args, const MonteCarloSetup& setup,
                                                   std::uintmax_t expected_bytes);
+
+// How the store beside the result folder is taken: --resume, --overwrite, or fresh.
+engine::ChunkStore::Mode StoreMode(const MonteCarloArgs& args);
 
 // Which share of the plan --shard asks for (none: all of it).
 std::optional<engine::Shard> ShardOf(const MonteCarloArgs& args);

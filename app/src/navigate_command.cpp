@@ -4,6 +4,7 @@
 #include "anchorbench/engine/navigation.hpp"
 #include "anchorbench/engine/navigation_shard.hpp"
 #include "anchorbench/engine/plan.hpp"
+#include "anchorbench/engine/record_journal.hpp"
 #include "monte_carlo_command.hpp"
 
 namespace anchorbench::app {
@@ -19,24 +20,37 @@ int NavigateCommand(const MonteCarloArgs& args, const AppContext& app) {
                                (config.estimator.triggers.size() + 2);
   const std::unique_ptr<io::ResultFolder> out = OpenResultFolder(args, setup, 150 * lines + (1 << 16));
 
+  // Finished units wait in <out>.chunks/'s journal until the results are written: a killed run
+  // resumes from it (--resume).
+  const engine::Plan plan({config});
+  const engine::Shard units_of = shard.value_or(engine::Shard{});
+  engine::RecordJournal journal(setup.out, plan.identity() + " shard " + std::to_string(units_of.index) + "/" +
+                                               std::to_string(units_of.count),
+                                static_cast<long long>(schema::RowsOf(config).size()) * config.realizations,
+                                StoreMode(args), InputsOf(args));
   Progress progress("navigate " + config.name, args.quiet);
   const std::vector<engine::NavigationRecord> records =
-      engine::RunNavigation(config, app.components, setup.threads, shard.value_or(engine::Shard{}), {nullptr, app.stop});
+      engine::RunNavigation(config, app.components, setup.threads, units_of, {nullptr, app.stop}, &journal);
+  if (journal.unreadable() > 0) {
+    std::cerr << "anchorbench: note: " << journal.folder().string() << ": " << journal.unreadable()
+              << " unit(s) did not read back (first: " << journal.first_unreadable() << "); computed again\n";
+  }
   const int units = static_cast<int>(records.size() / (config.estimator.triggers.size() + 2));
   const double wall_time_s = progress.elapsed_s();
   progress.Finish(units);
   if (shard) {
-    const engine::Plan plan({config});
     engine::WriteNavigationShard([&](const std::string& name, const std::string& text) { out->Write(name, text); },
                                  {*shard, units, "navigate", config.name, plan.identity(), app.revision},
                                  {plan.texts().front(), {}}, records);
     out->Commit();
+    journal.Remove();
     return 0;
   }
   const std::string markdown = engine::WriteNavigationFiles(
       [&](const std::string& name, const std::function<void(std::ostream&)>& write) { out->Write(name, write); },
       config, records, RunInfoOf(args, setup, app, config, wall_time_s, {"navigate"}));
   out->Commit();
+  journal.Remove();
   if (!args.quiet) std::cout << markdown;
   return 0;
 }

@@ -61,5 +61,34 @@ kill_after 0.5 "$dir/shard0" "$bin" run "$table" --realizations 40 --shard 0/2 -
 cmp -s "$dir/whole/attempts.csv" "$dir/merged/attempts.csv" || fail "a resumed shard merged: attempts.csv differs"
 echo "ok: a killed shard resumed merges to the whole run's bytes"
 
+# navigate keeps its finished units in <out>.chunks/journal.csv: killed, resumed, the whole run's
+# bytes; a journal edited after the kill is not trusted (its unit computed again, with a note).
+journal_units() {
+  local n
+  n=$(grep -c '^unit,' "$1.chunks/journal.csv" 2>/dev/null)
+  echo "${n:-0}"
+}
+nav="$configs/navigation_uav_hall.yaml"
+"$bin" navigate "$nav" --realizations 60 --out "$dir/nav_whole" --quiet --threads 2 || fail "navigate"
+"$bin" navigate "$nav" --realizations 60 --out "$dir/nav" --quiet --threads 2 >/dev/null 2>&1 &
+pid=$!
+for _ in $(seq 1 100); do [ "$(journal_units "$dir/nav")" -ge 3 ] && break; sleep 0.05; done
+kill -9 "$pid" 2>/dev/null || fail "navigate finished before the kill: make it longer"
+wait "$pid" 2>/dev/null
+[ -e "$dir/nav" ] && fail "killed navigate left a result folder"
+echo "ok: navigate killed with $(journal_units "$dir/nav") units kept"
+refused "an interrupted navigate's journal without --resume" "of an interrupted run: --resume" \
+  "$dir/nav" "$bin" navigate "$nav" --realizations 60 --out "$dir/nav"
+# Edit the first unit's first value after its header: the unit's checksum no longer fits.
+sed -i '2s/^\([0-9]*\),\([0-9]*\),\([a-z_]*\),\([0-9]\)/\1,\2,\3,9\4/' "$dir/nav.chunks/journal.csv"
+"$bin" navigate "$nav" --realizations 60 --out "$dir/nav" --quiet --threads 1 --resume 2>"$dir/nav_note.txt" ||
+  fail "resumed navigate"
+grep -q "did not read back" "$dir/nav_note.txt" || fail "an edited journal resumed without a note: $(cat "$dir/nav_note.txt")"
+for file in navigation.csv navigation_summary.csv navigation_error.csv navigation.md; do
+  cmp -s "$dir/nav_whole/$file" "$dir/nav/$file" || fail "resumed navigate: $file differs from the uninterrupted run's"
+done
+[ -e "$dir/nav.chunks" ] && fail "the journal outlived the finished navigate"
+echo "ok: a killed navigate, its journal edited, resumed writes the uninterrupted run's bytes"
+
 [ "$failures" -eq 0 ] || { echo "$failures failure(s)"; exit 1; }
 echo "all resume cases passed"

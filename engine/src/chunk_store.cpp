@@ -3,12 +3,14 @@
 #include <cerrno>
 #include <cstring>
 #include <fstream>
+#include <functional>
 #include <system_error>
 
 #include "anchorbench/io/atomic_file.hpp"
 #include "anchorbench/io/csv_reader.hpp"
 #include "anchorbench/schema/input_error.hpp"
 #include "anchorbench/io/result_folder.hpp"
+#include "store_folder.hpp"
 
 namespace anchorbench::engine {
 namespace fs = std::filesystem;
@@ -19,13 +21,6 @@ namespace {
 constexpr const char* kPlanFile = "plan.csv";
 constexpr const char* kReservation = ".reserved";
 
-void WritePlanFile(const fs::path& folder, const Plan& plan) {
-  io::AtomicFile file(folder / kPlanFile, false);
-  file.stream() << "identity,chunks,units\n" << plan.identity() << ',' << plan.chunks().size() << ','
-                << plan.units() << '\n';
-  file.Commit();
-}
-
 std::string IdentityIn(const fs::path& folder) {
   const fs::path path = folder / kPlanFile;
   std::ifstream in = io::OpenForReading(path.string());
@@ -34,30 +29,35 @@ std::string IdentityIn(const fs::path& folder) {
   return std::string(csv.Text(csv.Column({"identity"})));
 }
 
-// Whole chunk files (chunk-N.csv), not the temporaries a kill left (chunk-N.csv.partial).
-int CountChunkFiles(const fs::path& folder) {
-  int count = 0;
-  for (const fs::directory_entry& entry : fs::directory_iterator(folder)) {
-    const std::string name = entry.path().filename().string();
-    if (name.rfind("chunk-", 0) == 0 && entry.path().extension() == ".csv") ++count;
-  }
-  return count;
-}
-
-// Whether `folder` holds only what a store writes (its plan, chunk files and their temporaries,
-// the reservation): a store killed before its plan file was in place. Anything else under the
-// store's name is a user's, never removed.
-bool HoldsOnlyStoreFiles(const fs::path& folder) {
+// Whether `folder` holds only what a store writes (its plan, its own files, the reservation): a
+// store killed before its plan file was in place. Anything else under the store's name is a
+// user's, never removed.
+bool HoldsOnlyStoreFiles(const fs::path& folder, const std::function<bool(const std::string&)>& ours) {
   std::error_code error;
   if (!fs::is_directory(fs::symlink_status(folder, error))) return false;
   for (const fs::directory_entry& entry : fs::directory_iterator(folder, error)) {
     const std::string name = entry.path().filename().string();
     // The plan file's temporary is io::AtomicFile's <name>.tmp.<pid>.
-    const bool ours = name == kPlanFile || name == kReservation || name.rfind(std::string(kPlanFile) + ".tmp.", 0) == 0 ||
-                      (name.rfind("chunk-", 0) == 0 && (name.ends_with(".csv") || name.ends_with(".csv.partial")));
-    if (!ours || !entry.is_regular_file(error)) return false;
+    const bool store = name == kPlanFile || name == kReservation || name.rfind(std::string(kPlanFile) + ".tmp.", 0) == 0 ||
+                       ours(name);
+    if (!store || !entry.is_regular_file(error)) return false;
   }
   return !error;
+}
+
+// A chunk file (chunk-N.csv) or the temporary a kill left (chunk-N.csv.partial).
+bool IsChunkFile(const std::string& name) {
+  return name.rfind("chunk-", 0) == 0 && (name.ends_with(".csv") || name.ends_with(".csv.partial"));
+}
+
+// Whole chunk files, not the temporaries.
+int CountChunkFiles(const fs::path& folder) {
+  int count = 0;
+  for (const fs::directory_entry& entry : fs::directory_iterator(folder)) {
+    const std::string name = entry.path().filename().string();
+    if (IsChunkFile(name) && name.ends_with(".csv")) ++count;
+  }
+  return count;
 }
 
 }  // namespace
@@ -68,55 +68,71 @@ fs::path ChunkStorePath(const fs::path& out) {
   return base.parent_path() / (base.filename().string() + ".chunks");
 }
 
-ChunkStore::ChunkStore(const fs::path& out, const Plan& plan, Mode mode, std::uintmax_t expected_bytes,
-                       const std::vector<fs::path>& inputs)
-    : folder_(ChunkStorePath(out)) {
+bool ClaimStoreFolder(const fs::path& folder, const std::string& identity, ChunkStore::Mode mode,
+                      const std::vector<fs::path>& inputs, const std::function<bool(const std::string&)>& ours,
+                      const std::function<std::string()>& held) {
   for (const fs::path& input : inputs) {
-    if (io::IsInside(input, folder_)) {
-      throw InputError(folder_.string() + ": holds " + input.string() + ", an input of this run; choose another "
-                                          "output folder");
+    if (io::IsInside(input, folder)) {
+      throw InputError(folder.string() + ": holds " + input.string() + ", an input of this run; choose another "
+                                         "output folder");
     }
   }
   std::error_code error;
-  if (fs::exists(fs::symlink_status(folder_, error))) {
-    const bool has_plan = fs::is_directory(fs::symlink_status(folder_, error)) &&
-                          fs::is_regular_file(folder_ / kPlanFile, error);
-    if (!has_plan && !HoldsOnlyStoreFiles(folder_)) {
-      throw InputError(folder_.string() + ": is where this run keeps its finished chunks, and holds something else; "
-                                          "move it or choose another output folder");
+  if (fs::exists(fs::symlink_status(folder, error))) {
+    const bool has_plan = fs::is_directory(fs::symlink_status(folder, error)) &&
+                          fs::is_regular_file(folder / kPlanFile, error);
+    if (!has_plan && !HoldsOnlyStoreFiles(folder, ours)) {
+      throw InputError(folder.string() + ": is where this run keeps its finished chunks, and holds something else; "
+                                         "move it or choose another output folder");
     }
     // Killed before its plan file was in place, a store holds nothing to keep.
-    if (mode == Mode::kOverwrite || !has_plan) fs::remove_all(folder_, error);
+    if (mode == ChunkStore::Mode::kOverwrite || !has_plan) fs::remove_all(folder, error);
   }
-  const bool fresh = !fs::exists(folder_, error);
-  if (fresh) {
-    fs::create_directories(folder_, error);
-    if (error) throw InputError(folder_.string() + ": cannot create: " + error.message());
-  } else {
-    TakeOver(plan, mode);
+  if (!fs::exists(folder, error)) {
+    fs::create_directories(folder, error);
+    if (error) throw InputError(folder.string() + ": cannot create: " + error.message());
+    return true;
   }
+  if (mode == ChunkStore::Mode::kFresh) {
+    throw InputError(folder.string() + ": holds " + held() +
+                     " of an interrupted run: --resume continues it, --overwrite discards it");
+  }
+  const std::string stored = IdentityIn(folder);
+  if (stored != identity) {
+    throw InputError(folder.string() + ": holds chunks of another run (plan " + stored + ", this run's " + identity +
+                     "): --overwrite discards them");
+  }
+  return false;
+}
+
+void WriteStorePlan(const fs::path& folder, const std::string& identity, long long chunks, long long units) {
+  io::AtomicFile file(folder / kPlanFile, false);
+  file.stream() << "identity,chunks,units\n" << identity << ',' << chunks << ',' << units << '\n';
+  file.Commit();
+}
+
+ChunkStore::ChunkStore(const fs::path& out, const Plan& plan, Mode mode, std::uintmax_t expected_bytes,
+                       const std::vector<fs::path>& inputs)
+    : folder_(ChunkStorePath(out)) {
+  const bool fresh = ClaimStoreFolder(folder_, plan.identity(), mode, inputs, IsChunkFile, [this] {
+    return std::to_string(CountChunkFiles(folder_)) + " finished chunks";
+  });
+  if (!fresh) TakeOver(plan);
   try {
+    std::error_code error;
     std::uintmax_t held = 0;
     for (const auto& [chunk, result] : finished_) held += fs::file_size(ChunkPath(chunk), error);
     reservation_ = io::Reservation(folder_ / kReservation, expected_bytes > held ? expected_bytes - held : 0,
                                    folder_.string(), "the chunks of this run");
-    if (fresh) WritePlanFile(folder_, plan);
+    if (fresh) WriteStorePlan(folder_, plan.identity(), static_cast<long long>(plan.chunks().size()), plan.units());
   } catch (const InputError&) {
+    std::error_code error;
     if (fresh) fs::remove_all(folder_, error);
     throw;
   }
 }
 
-void ChunkStore::TakeOver(const Plan& plan, Mode mode) {
-  if (mode == Mode::kFresh) {
-    throw InputError(folder_.string() + ": holds " + std::to_string(CountChunkFiles(folder_)) +
-                     " finished chunks of an interrupted run: --resume continues it, --overwrite discards it");
-  }
-  const std::string identity = IdentityIn(folder_);
-  if (identity != plan.identity()) {
-    throw InputError(folder_.string() + ": holds chunks of another run (plan " + identity + ", this run's " +
-                     plan.identity() + "): --overwrite discards them");
-  }
+void ChunkStore::TakeOver(const Plan& plan) {
   std::error_code error;
   for (int chunk = 0; chunk < static_cast<int>(plan.chunks().size()); ++chunk) {
     const fs::path path = ChunkPath(chunk);

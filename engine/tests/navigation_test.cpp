@@ -2,9 +2,11 @@
 
 #include <gtest/gtest.h>
 
+#include "anchorbench/engine/navigation_lines.hpp"
 #include "anchorbench/schema/input_error.hpp"
 #include "anchorbench/testing/components.hpp"
 #include "anchorbench/testing/small_table.hpp"
+#include "anchorbench/testing/temp_dir.hpp"
 
 namespace anchorbench::engine {
 namespace {
@@ -38,6 +40,35 @@ TEST(Navigation, EveryTriggerAndBothBaselinesForEachRowAndRealizationTheSameOnAn
     EXPECT_LT(floor.outcome.rmse_m, drift.outcome.rmse_m);
     EXPECT_EQ(floor.outcome.fix_share, 1.0);
     EXPECT_EQ(drift.outcome.fix_share, 0.0);
+  }
+}
+
+// A run resumed from its journal: the units that read back are taken, a unit whose checksum fits
+// but whose values no run writes is refused and computed again, and the records are the
+// uninterrupted run's, bit for bit.
+TEST(Navigation, AResumedRunTakesItsJournalsUnitsAndGivesTheUninterruptedRecords) {
+  const testing::TempDir dir("navigation_journal");
+  const schema::ExperimentConfig config = Navigated();
+  const std::vector<NavigationRecord> whole = RunNavigation(config, AllComponents(), 2);
+  const std::size_t methods = config.estimator.triggers.size() + 2;
+  const auto unit_records = [&](std::size_t unit) {
+    return std::vector<NavigationRecord>(whole.begin() + static_cast<long>(unit * methods),
+                                         whole.begin() + static_cast<long>((unit + 1) * methods));
+  };
+  {
+    RecordJournal killed(dir.path() / "out", "navigate", 6, ChunkStore::Mode::kFresh);
+    killed.Append(1, NavigationUnitText(unit_records(1)));
+    std::vector<NavigationRecord> forged = unit_records(4);
+    forged[0].outcome.fix_share = 2.0;  // no run writes it; the block's checksum is made to fit
+    killed.Append(4, NavigationUnitText(forged));
+  }
+  RecordJournal journal(dir.path() / "out", "navigate", 6, ChunkStore::Mode::kResume);
+  const std::vector<NavigationRecord> resumed = RunNavigation(config, AllComponents(), 2, {}, {}, &journal);
+  EXPECT_EQ(journal.unreadable(), 1);
+  EXPECT_NE(journal.first_unreadable().find("fix share"), std::string::npos) << journal.first_unreadable();
+  ASSERT_EQ(resumed.size(), whole.size());
+  for (std::size_t i = 0; i < whole.size(); ++i) {
+    EXPECT_EQ(NavigationRecordFields(resumed[i]), NavigationRecordFields(whole[i])) << i;
   }
 }
 

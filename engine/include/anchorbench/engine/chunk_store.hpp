@@ -43,7 +43,7 @@ class ChunkStore {
 
  private:
   std::filesystem::path ChunkPath(int chunk) const;
-  void TakeOver(const Plan& plan, Mode mode);  // an existing store: refused, or its chunks read
+  void TakeOver(const Plan& plan);  // this run's earlier store: its chunks read
 
   std::filesystem::path folder_;
   std::map<int, ChunkResult> finished_;

@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "anchorbench/engine/commit.hpp"
+#include "anchorbench/engine/record_journal.hpp"
 #include "anchorbench/engine/run_control.hpp"
 #include "anchorbench/engine/shard.hpp"
 #include "anchorbench/nav/navigate.hpp"
@@ -71,10 +72,13 @@ void CheckErrorBins(double duration_s, const schema::NavigationConfig& navigatio
 
 // Every row and realization (or the units `shard` holds: unit = row * realizations +
 // realization, as navigation_shard.hpp's) on `threads` threads, ordered by row, realization,
-// method: the same for any thread count. Checks the config first (CheckNavigation).
+// method: the same for any thread count. Checks the config first (CheckNavigation). With a
+// journal, its units that read back are taken as they are (the rest of its blocks refused in it),
+// and each unit computed is appended to it as it finishes: a killed run resumes with the same bytes.
 std::vector<NavigationRecord> RunNavigation(const schema::ExperimentConfig& config,
                                             const registry::Components& components, int threads,
-                                            const Shard& shard = {}, const RunControl& control = {});
+                                            const Shard& shard = {}, const RunControl& control = {},
+                                            RecordJournal* journal = nullptr);
 
 // `units` units on `threads` threads (ParallelFor), their records joined in unit order: the same
 // for any thread count. `control` sees every unit done, and may stop the rest.

@@ -1,0 +1,60 @@
+#pragma once
+// Where a study's finished units wait until its results are written, for studies whose units give
+// records rather than attempts (navigate): <out>.chunks/ beside the result folder, claimed like the
+// chunk store's (the same modes, the same refusals), holding `plan.csv` and one file,
+// `journal.csv`, appended to while it is open: each unit a block, a header line
+// `unit,<index>,<lines>,<checksum>` and its records' lines, written whole and flushed at once. A
+// kill -9 leaves at most the last block torn. A block whose lines or checksum (of the job's identity,
+// the unit and its text) do not read back (torn, edited, of another job) is computed again, never
+// trusted; on resume the journal is rewritten with the blocks that read back before more are added.
+
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <mutex>
+#include <string>
+#include <vector>
+
+#include "anchorbench/engine/chunk_store.hpp"
+
+namespace anchorbench::engine {
+
+class RecordJournal {
+ public:
+  // The journal of the results in `out` for the job `identity` of `units` units, before any work
+  // (ChunkStore's modes and errors).
+  RecordJournal(const std::filesystem::path& out, std::string identity, long long units, ChunkStore::Mode mode,
+                const std::vector<std::filesystem::path>& inputs = {});
+
+  // The units finished before (kResume) that read back: index -> their lines.
+  std::map<long long, std::string> TakeFinished() { return std::move(finished_); }
+  // Blocks found but not read back; the first one's reason.
+  int unreadable() const { return unreadable_; }
+  const std::string& first_unreadable() const { return first_unreadable_; }
+  // Adds a finished unit (`text`: whole lines); from any thread. Throws schema::InputError naming
+  // the file when it cannot be written (a full disk).
+  void Append(long long unit, const std::string& text);
+  // Once the results are in place.
+  void Remove();
+
+  const std::filesystem::path& folder() const { return folder_; }
+  // The one who claims a unit's text as read back (a study's parser) may still refuse it: counted
+  // with the unreadable blocks, and the unit computed again.
+  void Refuse(long long unit, const std::string& why);
+
+ private:
+  void ReadBack(const std::filesystem::path& path);  // the blocks that read back, into finished_
+  std::string Checksum(long long unit, const std::string& text) const;  // of the identity, the unit and its text
+  std::string Block(long long unit, const std::string& text) const;
+
+  std::filesystem::path folder_;
+  std::string identity_;
+  long long units_ = 0;
+  std::map<long long, std::string> finished_;
+  int unreadable_ = 0;
+  std::string first_unreadable_;
+  std::mutex mutex_;
+  std::ofstream file_;
+};
+
+}  // namespace anchorbench::engine
