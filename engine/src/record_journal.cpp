@@ -20,7 +20,10 @@ namespace {
 
 constexpr const char* kJournalFile = "journal.csv";
 
-bool IsJournalFile(const std::string& name) { return name == kJournalFile || name.rfind(std::string(kJournalFile) + ".tmp.", 0) == 0; }
+// The journal, or the temporary of its rewrite (io::AtomicFile's <name>.tmp.<pid>).
+bool IsJournalFile(const std::string& name) {
+  return name == kJournalFile || name.rfind(std::string(kJournalFile) + ".tmp.", 0) == 0;
+}
 
 // The numbers of a block's header line `unit,<index>,<lines>,<checksum>`; false if it is not one.
 bool ParseHeader(std::string_view line, long long* unit, long long* lines, std::string* checksum) {
@@ -107,7 +110,6 @@ void RecordJournal::ReadBack(const fs::path& path) {
 }
 
 void RecordJournal::Refuse(long long unit, const std::string& why) {
-  finished_.erase(unit);
   if (unreadable_++ == 0) first_unreadable_ = (folder_ / kJournalFile).string() + ": unit " + std::to_string(unit) + ": " + why;
 }
 

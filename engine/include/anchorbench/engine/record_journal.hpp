@@ -38,8 +38,8 @@ class RecordJournal {
   void Remove();
 
   const std::filesystem::path& folder() const { return folder_; }
-  // The one who claims a unit's text as read back (a study's parser) may still refuse it: counted
-  // with the unreadable blocks, and the unit computed again.
+  // A unit TakeFinished gave that the study's parser refuses: counted with the unreadable blocks
+  // (the caller computes it again).
   void Refuse(long long unit, const std::string& why);
 
  private:
