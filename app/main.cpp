@@ -10,6 +10,7 @@
 #include <CLI/CLI.hpp>
 
 #include "anchorbench/eval/oracles.hpp"
+#include "anchorbench/example_parts/example_parts.hpp"
 #include "anchorbench/io/format.hpp"
 #include "anchorbench/schema/input_error.hpp"
 #include "commands.hpp"
@@ -298,7 +299,11 @@ int main(int argc, char** argv) {
   mallopt(M_MMAP_THRESHOLD, 64 << 20);
   mallopt(M_TRIM_THRESHOLD, 256 << 20);
   app::InstallInterruptHandlers();
-  const anchorbench::registry::Components components = anchorbench::eval::MakeComponentsWithOracles();
+  const anchorbench::registry::Components components = [] {
+    anchorbench::registry::Components parts = anchorbench::eval::MakeComponentsWithOracles();
+    anchorbench::example_parts::RegisterExampleParts(parts);
+    return parts;
+  }();
 #ifdef ANCHORBENCH_MPI
   app::MpiJob job(argc, argv, components);  // anchorbench-mpi: rank 0 runs the command, the others compute chunks
   if (job.worker()) return job.Serve();

@@ -11,6 +11,13 @@ void Print(const char* heading, const Registry& registry) {
   std::cout << heading << '\n';
   for (const auto& [name, description] : registry.List()) {
     std::cout << "  " << std::left << std::setw(20) << name << description << '\n';
+    // A part's own options: estimator.<name>.<key>, with its default.
+    if (const registry::PartOptions* options = registry.OptionsOf(name)) {
+      for (const registry::OptionSpec& spec : options->specs) {
+        std::cout << "    estimator." << name << '.' << spec.key << " (default " << spec.default_value << "): "
+                  << spec.description << '\n';
+      }
+    }
   }
 }
 

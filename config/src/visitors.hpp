@@ -222,6 +222,11 @@ void Estimator(V& v, schema::EstimatorConfig& o, const registry::Components& com
     s.Number("offset_m", o.height_prior.offset_m);
     s.Check(o.height_prior);
   });
+  // Last: a part's section may not shadow one of the keys above.
+  std::vector<std::string> named = o.triggers;
+  named.push_back(o.solver);
+  named.push_back(o.filter.kind);
+  v.PartOptions(o.part_options, named, components.PartsWithOptions());
 }
 
 template <typename V>

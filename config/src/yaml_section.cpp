@@ -1,5 +1,7 @@
 #include "anchorbench/config/yaml_section.hpp"
 
+#include <algorithm>
+
 #include <charconv>
 #include <cmath>
 #include <sstream>
@@ -168,6 +170,31 @@ void YamlSection::TextMap(std::string_view key, std::vector<std::pair<std::strin
       Fail(std::string(key) + "." + name, "expected a value, a list or a range, got " + Describe(entry.second));
     }
     entries.emplace_back(name, text);
+  }
+}
+
+void YamlSection::PartOptions(std::map<std::string, registry::OptionValues>& values,
+                              const std::vector<std::string>& named, const OwnedOptions& parts) {
+  std::set<std::string, std::less<>> seen;
+  for (const auto& [part, options] : parts) {
+    if (!seen.insert(part).second) FailSection("two parts named '" + part + "' own options: they would share one section");
+    if (asked_.contains(part)) FailSection("the part '" + part + "' owns options but has the name of a key of this section");
+    if (!Has(part)) continue;
+    Section(part, [&, part = part, options = options](YamlSection& own) {
+      registry::OptionValues& set = values[part];
+      for (const registry::OptionSpec& spec : options->specs) {
+        if (!own.Has(spec.key)) continue;
+        double value = spec.default_value;
+        own.Number(spec.key, value);
+        set[spec.key] = value;
+      }
+      std::string why;
+      if (!options->check(set, &why)) own.FailValidation(why);
+    });
+  }
+  for (const auto& [part, options] : parts) {
+    if (std::find(named.begin(), named.end(), part) == named.end()) continue;
+    for (const registry::OptionSpec& spec : options->specs) values[part].try_emplace(spec.key, spec.default_value);
   }
 }
 

@@ -23,6 +23,7 @@ from ._anchorbench import (  # noqa: F401  (the module's API)
     SolveResult,
     closest_point_pdop,
     geometry_pdop,
+    part_options,
     parts,
     register_solver,
     register_trigger,
@@ -32,7 +33,7 @@ from . import plot  # noqa: F401  (ab.plot.anchors, ab.plot.errors_over_time; ma
 
 __all__ = [
     "Config", "Event", "FrontEnd", "InputError", "Result", "SolveResult", "closest_point_pdop", "geometry_pdop",
-    "load_config", "navigate", "parts", "register_solver", "register_trigger", "plot", "replay", "ReplayWarning", "FrontEndWarning", "run",
+    "load_config", "navigate", "part_options", "parts", "register_solver", "register_trigger", "plot", "replay", "ReplayWarning", "FrontEndWarning", "run",
     "simulate", "solve", "sweep",
 ]
 

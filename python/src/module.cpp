@@ -1,13 +1,18 @@
 // The Python module `anchorbench._anchorbench` (docs/python.md). The package's __init__.py turns
 // its results into pandas DataFrames.
 #include "anchorbench/eval/oracles.hpp"
+#include "anchorbench/example_parts/example_parts.hpp"
 #include "anchorbench/schema/input_error.hpp"
 #include "module_parts.hpp"
 
 namespace anchorbench::python {
 
 registry::Components& ModuleComponents() {
-  static registry::Components* components = new registry::Components(eval::MakeComponentsWithOracles());
+  static registry::Components* components = [] {
+    auto* parts = new registry::Components(eval::MakeComponentsWithOracles());
+    example_parts::RegisterExampleParts(*parts);
+    return parts;
+  }();
   return *components;
 }
 

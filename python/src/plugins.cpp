@@ -225,6 +225,25 @@ void BindPlugins(py::module_& m) {
         return out;
       },
       "The parts a config can name: {kind: [(name, description), ...]}.");
+  m.def(
+      "part_options",
+      []() {
+        py::dict out;
+        for (const auto& [name, options] : ModuleComponents().PartsWithOptions()) {
+          py::dict keys;
+          for (const registry::OptionSpec& spec : options->specs) {
+            py::dict field;
+            field["default"] = spec.whole ? py::object(py::int_(static_cast<long long>(spec.default_value)))
+                                          : py::object(py::float_(spec.default_value));
+            field["description"] = spec.description;
+            keys[py::str(spec.key)] = field;
+          }
+          out[py::str(name)] = keys;
+        }
+        return out;
+      },
+      "The options of the parts that own some, set as estimator.<part>.<key>: "
+      "{part: {key: {'default': value, 'description': text}}}.");
 }
 
 }  // namespace anchorbench::python

@@ -59,6 +59,19 @@ def test_sweep_gives_a_line_per_point_row_and_trigger(small_yaml, tmp_path, cli)
     assert set(result.sweep["estimator.trigger.pdop_threshold"]) == {0.5, 2.0}
 
 
+def test_a_parts_own_option_is_listed_and_swept_as_from_the_command_line(small_yaml, tmp_path, cli):
+    assert ab.part_options()["travel_span"]["span_m"]["default"] == 10.0
+    config = tmp_path / "span.yaml"
+    config.write_text(f"base: {small_yaml.name}\nestimator: {{triggers: [pdop_closest_point, travel_span]}}\n")
+    result = ab.sweep(config, {"estimator.travel_span.span_m": [2, 40]}, threads=2)
+    cli("sweep", config, "--set", "estimator.travel_span.span_m=2,40", "--out", tmp_path / "cli", "--quiet")
+    assert result.text("sweep.csv") == (tmp_path / "cli" / "sweep.csv").read_text()
+    span = result.sweep[result.sweep["method"] == "travel_span"]
+    assert set(span["estimator.travel_span.span_m"]) == {2.0, 40.0}
+    with pytest.raises(ab.InputError, match="estimator.travel_span.span_m"):
+        ab.sweep(config, {"estimator.travel_span.span_m": [0]})
+
+
 def test_simulate_then_replay_gives_the_command_lines_bytes(small_yaml, tmp_path, cli):
     recording = ab.simulate(small_yaml, realization=1)
     recording.save(tmp_path / "log")

@@ -12,6 +12,24 @@ bool Components::Check(const schema::EstimatorConfig& config, std::string* why) 
   return true;
 }
 
+std::vector<std::pair<std::string, const PartOptions*>> Components::PartsWithOptions() const {
+  std::vector<std::pair<std::string, const PartOptions*>> parts = solvers.PartsWithOptions();
+  for (auto& part : filters.PartsWithOptions()) parts.push_back(std::move(part));
+  for (auto& part : triggers.PartsWithOptions()) parts.push_back(std::move(part));
+  return parts;
+}
+
+namespace {
+
+// The options the config set for the part `name` (none: its defaults).
+const OptionValues& OwnOptions(const schema::EstimatorConfig& config, const std::string& name) {
+  static const OptionValues kNone;
+  const auto found = config.part_options.find(name);
+  return found == config.part_options.end() ? kNone : found->second;
+}
+
+}  // namespace
+
 void RegisterBuiltins(Components& components) {
   RegisterBuiltinSolvers(components.solvers);
   RegisterBuiltinFilters(components.filters);
@@ -23,7 +41,9 @@ estimator::AnchorInitializer MakeInitializer(const Components& components, int a
                                              const std::optional<Eigen::Vector3d>& p_world_anchor_reference) {
   return MakeInitializer(
       components, anchor_id, config,
-      [&](const TriggerContext& context, std::string* why) { return components.triggers.Create(trigger, context, why); },
+      [&](const TriggerContext& context, std::string* why) {
+        return components.triggers.Create(trigger, context, why, OwnOptions(config, trigger));
+      },
       seed, p_world_anchor_reference);
 }
 
@@ -37,10 +57,12 @@ estimator::AnchorInitializer MakeInitializer(const Components& components, int a
   solver_options.height_prior = config.height_prior.For(anchor_id, p_world_anchor_reference);
   const estimator::InitializerOptions& initializer_options = config.initializer;
   std::shared_ptr<const estimator::Solver> solver =
-      components.solvers.Create(config.solver, {solver_options, seed, components.tables.get()}, &why);
+      components.solvers.Create(config.solver, {solver_options, seed, components.tables.get()}, &why,
+                                OwnOptions(config, config.solver));
   if (!solver) throw std::invalid_argument(why);
   if (solver_options.scale.estimate) solver = std::make_shared<estimator::ScaledSolver>(solver, solver_options.scale);
-  std::unique_ptr<estimator::OutlierFilter> filter = components.filters.Create(config.filter.kind, {config.filter, seed}, &why);
+  std::unique_ptr<estimator::OutlierFilter> filter =
+      components.filters.Create(config.filter.kind, {config.filter, seed}, &why, OwnOptions(config, config.filter.kind));
   if (!filter) throw std::invalid_argument(why);
   const estimator::OutlierFilter* online_filter = filter.get();
   std::unique_ptr<estimator::InitTrigger> made = make_trigger(

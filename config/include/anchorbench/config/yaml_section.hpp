@@ -2,6 +2,7 @@
 
 #include <cstdint>
 #include <functional>
+#include <map>
 #include <optional>
 #include <set>
 #include <string>
@@ -12,6 +13,7 @@
 #include <yaml-cpp/yaml.h>
 
 #include "anchorbench/estimator/enum_names.hpp"
+#include "anchorbench/registry/part_options.hpp"
 
 namespace anchorbench::config {
 
@@ -110,6 +112,14 @@ class YamlSection {
     if (!options.IsValid(&why)) FailValidation(why);
   }
 
+  // The sections of parts that own options (`parts`, from the registries), each key read as its
+  // spec says and the whole checked by the part; then every part of `named` that owns options
+  // gets the defaults of the keys the config did not set. Visited last in its section: a part
+  // may not take the name of one of the section's own keys.
+  using OwnedOptions = std::vector<std::pair<std::string, const registry::PartOptions*>>;
+  void PartOptions(std::map<std::string, registry::OptionValues>& values, const std::vector<std::string>& named,
+                   const OwnedOptions& parts);
+
   // A key that moved to the sibling section `section` (it keeps its name): present, it is refused
   // with the key's new path, so an old file fails in one line that says what to write instead.
   void Moved(std::string_view key, std::string_view section);
@@ -192,6 +202,12 @@ class YamlWriter {
   template <typename Options>
   void Check(const Options&) const {}
   void Moved(std::string_view, std::string_view) {}
+  void PartOptions(std::map<std::string, registry::OptionValues>& values, const std::vector<std::string>&,
+                   const YamlSection::OwnedOptions&) {
+    for (const auto& [part, keys] : values) {
+      for (const auto& [key, value] : keys) node_[part][key] = value;
+    }
+  }
 
  private:
   YAML::Node node_;

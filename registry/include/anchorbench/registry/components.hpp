@@ -67,6 +67,9 @@ struct Components {
 
   // Whether every name of `config` is registered here; *why names the first that is not.
   bool Check(const schema::EstimatorConfig& config, std::string* why) const;
+  // (name, its options) of every solver, filter and trigger that owns some (a name may repeat
+  // across kinds: the config refuses that, since the two would share one section).
+  std::vector<std::pair<std::string, const PartOptions*>> PartsWithOptions() const;
 };
 
 // ls_single, ls_double, lm_l2, lm_huber, lm_cauchy, lm_adaptive, nlopt:<ALGORITHM>.

@@ -1,5 +1,6 @@
 #pragma once
 
+#include <map>
 #include <optional>
 #include <string>
 #include <vector>
@@ -66,6 +67,9 @@ struct HeightPriorConfig {
   std::optional<estimator::HeightPrior> For(int anchor_id, const std::optional<Eigen::Vector3d>& p_world_reference) const;
 };
 
+// A registered part's own options as a config set them (registry/part_options.hpp): key -> value.
+using PartOptionValues = std::map<std::string, double>;
+
 // The estimator as an experiment describes it (the config's `estimator` section): its parts by
 // registry name, and the typed options they are built with. Names are checked against the
 // caller's registries (Components::Check); IsValid checks the typed options.
@@ -79,6 +83,9 @@ struct EstimatorConfig {
   estimator::AnchorSolverOptions solver_options;                         // estimator.ls, estimator.nls
   HeightPriorConfig height_prior;                                        // estimator.height_prior
   estimator::CertificateOptions certificate;                             // estimator.certificate
+  // The options of parts that declare their own (registry::PartOptions), by part name: each named
+  // part's every key (its defaults where the config set none), and whatever else a config set.
+  std::map<std::string, PartOptionValues> part_options;                  // estimator.<part name>
   // Evaluation, not estimation: where the truth is known, one more pass per realization (or replay)
   // finds each anchor's oracle time (eval/oracle_latency.hpp; ~10 solves of each anchor's data).
   // calibrate turns it off: its cells do not use it.
