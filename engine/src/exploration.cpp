@@ -32,12 +32,8 @@ struct FreeSpace {
 
 FreeSpace FreeSpaceOf(const sim::ScenarioOptions& scenario, double clearance_m) {
   const Eigen::Vector3d margin = Eigen::Vector3d::Constant(clearance_m);
-  if (scenario.environment == sim::EnvironmentKind::kTunnel) {
-    const sim::TunnelOptions& t = scenario.tunnel;
-    return {Eigen::Vector3d(0.0, -0.5 * t.width_m, 0.0) + margin, Eigen::Vector3d(t.length_m, 0.5 * t.width_m, t.height_m) - margin};
-  }
-  const sim::HallOptions& h = scenario.hall;
-  return {margin, Eigen::Vector3d(h.length_m, h.width_m, h.height_m) - margin};
+  const sim::Environment::Box bounds = scenario.MakeEnvironment()->Bounds();
+  return {bounds.low + margin, bounds.high - margin};
 }
 
 // The candidates within reach of the body: a grid inside the free space, at the body's height

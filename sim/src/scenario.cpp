@@ -36,9 +36,7 @@ void PlaceTags(const ScenarioOptions& options, std::uint64_t seed, std::uint64_t
 
 std::vector<SimAnchor> DrawAnchors(const ScenarioOptions& options, std::uint64_t seed, std::uint64_t realization) {
   RandomStream layout(seed, realization, StreamId::kLayout);
-  const std::vector<Eigen::Vector3d> positions = options.environment == EnvironmentKind::kTunnel
-                                                     ? TunnelAnchors(options.tunnel, layout)
-                                                     : HallAnchors(options.hall, layout);
+  const std::vector<Eigen::Vector3d> positions = options.MakeEnvironment()->Anchors(layout);
   RandomStream bias_rng(seed, realization, StreamId::kBias);
   std::vector<SimAnchor> anchors;
   for (std::size_t i = 0; i < positions.size(); ++i) {
@@ -52,11 +50,9 @@ Trajectory DrawBodyPath(const ScenarioOptions& options, const std::vector<SimAnc
   RandomStream shape(seed, realization, StreamId::kTrajectory);
   TrajectoryOptions trajectory = options.trajectory;
   trajectory.kind = DrawTrajectoryKind(options.trajectory, shape);
-  if (options.environment == EnvironmentKind::kTunnel) return TunnelTrajectory(options.tunnel, trajectory, shape);
-  if (trajectory.kind == TrajectoryKind::kApproach) {
-    return ApproachTrajectory(options.hall, trajectory, anchors.front().p_world_anchor, shape);
-  }
-  return HallTrajectory(options.hall, trajectory, shape);
+  std::vector<Eigen::Vector3d> p_world_anchors;
+  for (const SimAnchor& anchor : anchors) p_world_anchors.push_back(anchor.p_world_anchor);
+  return options.MakeEnvironment()->Path(trajectory, p_world_anchors, shape);
 }
 
 std::vector<double> Headings(const std::vector<Eigen::Vector3d>& p_world_body) {
@@ -75,12 +71,7 @@ bool ScenarioOptions::IsValid(std::string* why) const {
     if (why) *why = "tag_offsets_m must list 1 to 16 finite offsets [x, y, z]";
     return false;
   }
-  if (environment == EnvironmentKind::kTunnel && trajectory.kind == TrajectoryKind::kApproach) {
-    if (why) *why = "trajectory.kind approach is a hall trajectory (the tunnel has none)";
-    return false;
-  }
-  const bool environment_ok = environment == EnvironmentKind::kTunnel ? tunnel.IsValid(why) : hall.IsValid(why);
-  if (!environment_ok || !trajectory.IsValid(why) || !ranging.IsValid(why)) return false;
+  if (!MakeEnvironment()->IsValid(trajectory, why) || !trajectory.IsValid(why) || !ranging.IsValid(why)) return false;
   const double tag_epochs = MaxEpochs() * static_cast<double>(tag_offsets_m.size());
   if (!(tag_epochs <= kMaxTagEpochs) || !(tag_epochs * NumAnchors() <= kMaxRangeSlots)) {
     if (why) {
@@ -94,11 +85,10 @@ bool ScenarioOptions::IsValid(std::string* why) const {
   return true;
 }
 
-double ScenarioOptions::MaxEpochs() const {
-  const double duration_s = environment == EnvironmentKind::kTunnel
-                                ? tunnel.length_m / (trajectory.speed_mps * (1.0 - trajectory.speed_variation))
-                                : trajectory.hall_duration_s;
-  return duration_s * trajectory.rate_hz + 1.0;
+double ScenarioOptions::MaxEpochs() const { return MakeEnvironment()->LongestRun_s(trajectory) * trajectory.rate_hz + 1.0; }
+
+std::unique_ptr<const Environment> ScenarioOptions::MakeEnvironment() const {
+  return environment == EnvironmentKind::kTunnel ? MakeTunnel(tunnel) : MakeHall(hall);
 }
 
 Scenario GenerateScenario(const ScenarioOptions& options, std::uint64_t seed, std::uint64_t realization) {

@@ -51,7 +51,4 @@ struct HallOptions {
   bool IsValid(std::string* why) const;
 };
 
-std::vector<Eigen::Vector3d> TunnelAnchors(const TunnelOptions& options, RandomStream& layout);
-std::vector<Eigen::Vector3d> HallAnchors(const HallOptions& options, RandomStream& layout);
-
 }  // namespace anchorbench::sim

@@ -10,6 +10,7 @@
 
 #include "anchorbench/estimator/enum_names.hpp"
 #include "anchorbench/sim/environment.hpp"
+#include "anchorbench/sim/environment_model.hpp"
 #include "anchorbench/sim/range_model.hpp"
 #include "anchorbench/sim/trajectory.hpp"
 
@@ -45,7 +46,9 @@ struct ScenarioOptions {
   // The most epochs a realization can have: the tunnel at its slowest speed, or the hall's
   // duration, times the rate. A double: it may be astronomically large before validation.
   double MaxEpochs() const;
-  int NumAnchors() const { return environment == EnvironmentKind::kTunnel ? tunnel.num_anchors : hall.num_anchors; }
+  int NumAnchors() const { return MakeEnvironment()->NumAnchors(); }
+  // The environment `environment` names, with its options (the one place the kind is decided).
+  std::unique_ptr<const sim::Environment> MakeEnvironment() const;
 };
 
 struct SimAnchor {
