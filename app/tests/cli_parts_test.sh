@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
-# A part that owns its options (issue 37), from the command line: the example trigger travel_span
-# is listed with its option, named in a config, swept on its own key, and a bad value of that key
-# is one clear error before any work.
+# Parts that own their options (issue 37), from the command line: the example trigger travel_span
+# and the example environment ceiling_grid are listed with their options, named in a config,
+# swept on their own keys, and a bad value of such a key is one clear error before any work.
 # shellcheck source=common.sh
 source "$(dirname "$0")/common.sh"
 
@@ -28,6 +28,27 @@ refused "a span of 0" "key 'estimator.travel_span.span_m': must be > 0" "$dir/ze
   "$bin" sweep "$dir/span.yaml" --set estimator.travel_span.span_m=0,1 --out "$dir/zero" --quiet
 refused "a key travel_span does not own" "key 'estimator.travel_span.span': unknown key" "$dir/typo" \
   "$bin" run "$dir/span.yaml" --set estimator.travel_span.span=3 --out "$dir/typo" --quiet
+
+# The example environment: named, its options set and swept like a trigger's.
+"$bin" list | grep -qF "scenario.ceiling_grid.rows (default 3)" || fail "list does not show ceiling_grid's options"
+printf 'seed: 3\nrealizations: 2\nscenario:\n  environment: ceiling_grid\n  trajectory: {hall_duration_s: 40, rate_hz: 5}\n' \
+  >"$dir/grid.yaml"
+"$bin" sweep "$dir/grid.yaml" --set scenario.ceiling_grid.rows=2,5 --out "$dir/grid" --quiet || fail "sweep of rows"
+/usr/bin/python3 - "$dir/grid/sweep.csv" <<'PY' || fail "the grid's rows do not set its anchors"
+import csv, sys
+oracle = {r["scenario.ceiling_grid.rows"]: int(r["oracle_n"]) for r in csv.DictReader(open(sys.argv[1]))
+          if r["method"] == "pdop_closest_point"}
+# 2 realizations of rows x 2 columns anchors, each with an oracle time or not: at most that many.
+assert oracle["2"] <= 2 * 2 * 2 < oracle["5"] <= 2 * 5 * 2, oracle
+print("ok: ceiling_grid rows 2 -> 5: anchors with an oracle time", oracle["2"], "->", oracle["5"])
+PY
+"$bin" simulate "$dir/grid.yaml" --set scenario.ceiling_grid.columns=3 --out "$dir/grid_log" ||
+  fail "simulate in ceiling_grid"
+[ "$(tail -n +2 "$dir/grid_log/anchors.csv" | wc -l)" -eq 9 ] || fail "simulate: not 3 x 3 anchors"
+refused "an unknown environment" "key 'scenario.environment': unknown environment 'mine'" "$dir/mine" \
+  "$bin" run "$dir/grid.yaml" --set scenario.environment=mine --out "$dir/mine" --quiet
+refused "a grid of 0 rows" "key 'scenario.ceiling_grid.rows': must be in [1, 100]" "$dir/rows0" \
+  "$bin" run "$dir/grid.yaml" --set scenario.ceiling_grid.rows=0 --out "$dir/rows0" --quiet
 
 [ "$failures" -eq 0 ] || { echo "$failures failure(s)"; exit 1; }
 echo "all part-option cases passed"

@@ -81,14 +81,47 @@ void Ranging(V& v, sim::RangeModelOptions& o) {
   v.Check(o);
 }
 
+// `environment`: the tunnel, the hall, or an environment of the caller's registry, its options
+// in the section scenario.<name>.
 template <typename V>
-void Scenario(V& v, sim::ScenarioOptions& o) {
-  v.Choice("environment", o.environment, sim::kEnvironmentKindNames);
+void EnvironmentName(V& v, sim::ScenarioOptions& o, const registry::Components& components) {
+  std::string name = o.EnvironmentName();
+  v.Name("environment", name, [&](const std::string& n, std::string* why) {
+    sim::EnvironmentKind kind;
+    if (sim::ParseEnvironmentKind(n, &kind) || components.environments.Knows(n, nullptr)) return true;
+    if (why) *why = "unknown environment '" + n + "' (choices: " + sim::kEnvironmentKindNames.Choices() + ", or one registered)";
+    return false;
+  });
+  v.Derive("environment", [&](std::string*) {
+    o.custom_environment = sim::ParseEnvironmentKind(name, &o.environment) ? "" : name;
+    return true;
+  });
+}
+
+// After the scenario's own keys (a registered environment may not take one's name): the caller's
+// environment's section, and the environment its registry builds from it.
+template <typename V>
+void CustomEnvironment(V& v, sim::ScenarioOptions& o, const registry::Components& components) {
+  v.PartOptions(o.environment_options, {o.custom_environment}, components.environments.PartsWithOptions());
+  v.Derive("environment", [&](std::string* why) {
+    o.custom.reset();
+    if (o.custom_environment.empty()) return true;
+    const auto own = o.environment_options.find(o.custom_environment);
+    o.custom = components.environments.Create(o.custom_environment, {}, why,
+                                              own == o.environment_options.end() ? registry::OptionValues{} : own->second);
+    return o.custom != nullptr;
+  });
+}
+
+template <typename V>
+void Scenario(V& v, sim::ScenarioOptions& o, const registry::Components& components) {
+  EnvironmentName(v, o, components);
   v.VectorList("tag_offsets_m", o.tag_offsets_m);
   v.Section("tunnel", [&](auto& s) { Tunnel(s, o.tunnel); });
   v.Section("hall", [&](auto& s) { Hall(s, o.hall); });
   v.Section("trajectory", [&](auto& s) { Trajectory(s, o.trajectory); });
   v.Section("ranging", [&](auto& s) { Ranging(s, o.ranging); });
+  CustomEnvironment(v, o, components);
   v.Check(o);
 }
 
@@ -242,7 +275,7 @@ void Cells(V& v, schema::PaperCells& cells) {
 template <typename V>
 void Row(V& v, schema::RowConfig& row, const registry::Components& components) {
   v.Label("name", row.name);
-  v.Section("scenario", [&](auto& s) { Scenario(s, row.scenario); });
+  v.Section("scenario", [&](auto& s) { Scenario(s, row.scenario, components); });
   v.Section("estimator", [&](auto& s) { Estimator(s, row.estimator, components); });
   v.OptionalSection("paper", row.paper, [](auto& s, schema::PaperRow& paper) {
     s.Section("fixed", [&](auto& cells) { Cells(cells, paper.fixed); });
@@ -294,7 +327,7 @@ void Experiment(V& v, schema::ExperimentConfig& c, const registry::Components& c
   v.Unsigned("seed", c.seed, schema::kMaxSeed);
   v.Integer("realizations", c.realizations, 1, 100000000);
   v.Integer("bootstrap_resamples", c.bootstrap_resamples, 0, 1000000);
-  v.Section("scenario", [&](auto& s) { Scenario(s, c.scenario); });
+  v.Section("scenario", [&](auto& s) { Scenario(s, c.scenario, components); });
   v.Section("estimator", [&](auto& s) { Estimator(s, c.estimator, components); });
   v.TextList("only_rows", c.only_rows);
   v.TextMap("sweep", c.sweep);

@@ -6,6 +6,7 @@
 #include "anchorbench/estimator/triggers.hpp"
 #include "anchorbench/eval/oracles.hpp"
 #include "anchorbench/schema/input_error.hpp"
+#include "anchorbench/sim/scenario.hpp"
 #include "anchorbench/testing/temp_dir.hpp"
 
 namespace anchorbench::config {
@@ -100,6 +101,92 @@ TEST(PartOptionsConfig, APartMayNotTakeTheNameOfAnEstimatorKey) {
               std::string::npos)
         << e.what();
   }
+}
+
+// An environment of the caller's: a line of anchors `count` long, 5 m apart, wandered through as
+// the hall is.
+struct LineOptions {
+  int count = 3;
+};
+
+template <typename V>
+void VisitOptions(V& v, LineOptions& o) {
+  v.Integer("count", o.count, "anchors");
+}
+
+class Line : public sim::Environment {
+ public:
+  explicit Line(int count) : count_(count) {}
+  bool IsValid(const sim::TrajectoryOptions&, std::string* why) const override {
+    if (count_ >= 1) return true;
+    if (why) *why = "count must be >= 1";
+    return false;
+  }
+  int NumAnchors() const override { return count_; }
+  std::vector<Eigen::Vector3d> Anchors(sim::RandomStream&) const override {
+    std::vector<Eigen::Vector3d> anchors;
+    for (int i = 0; i < count_; ++i) anchors.emplace_back(5.0 * i, 0.0, 3.0);
+    return anchors;
+  }
+  sim::Trajectory Path(const sim::TrajectoryOptions& trajectory, std::span<const Eigen::Vector3d>,
+                       sim::RandomStream& shape) const override {
+    return sim::HallTrajectory(sim::HallOptions{}, trajectory, shape);
+  }
+  double LongestRun_s(const sim::TrajectoryOptions& trajectory) const override { return trajectory.hall_duration_s; }
+  Box Bounds() const override { return {Eigen::Vector3d::Zero(), Eigen::Vector3d(40.0, 20.0, 8.0)}; }
+
+ private:
+  int count_;
+};
+
+const registry::Components& WithLine() {
+  static const registry::Components components = [] {
+    registry::Components parts = eval::MakeComponentsWithOracles();
+    parts.environments.RegisterWithOptions<LineOptions>(
+        "line", "anchors in a line", [](const LineOptions& o, const registry::EnvironmentContext&) {
+          return std::make_unique<Line>(o.count);
+        });
+    return parts;
+  }();
+  return components;
+}
+
+schema::ExperimentConfig LoadWithLine(const std::string& yaml, const std::vector<std::string>& overrides = {}) {
+  return LoadConfigText(yaml, "c.yaml", overrides, WithLine());
+}
+
+TEST(EnvironmentConfig, ARegisteredEnvironmentIsBuiltFromItsSectionAndRowsMayChangeIt) {
+  const auto loaded = LoadWithLine(
+      "scenario: {environment: line, line: {count: 4}}\nrows: [{name: a}, {name: b, scenario: {line: {count: 6}}},"
+      " {name: c, scenario: {environment: hall}}]\n");
+  EXPECT_EQ(loaded.scenario.NumAnchors(), 4);
+  EXPECT_EQ(loaded.rows[0].scenario.NumAnchors(), 4);
+  EXPECT_EQ(loaded.rows[1].scenario.NumAnchors(), 6);
+  EXPECT_EQ(loaded.rows[2].scenario.EnvironmentName(), "hall");
+  EXPECT_EQ(loaded.rows[2].scenario.NumAnchors(), sim::HallOptions{}.num_anchors);
+  EXPECT_EQ(sim::GenerateScenario(loaded.rows[1].scenario, 1, 0).anchors.size(), 6u);
+  // Swept like any key, and written into the resolved config, which reads back the same.
+  EXPECT_EQ(LoadWithLine("scenario: {environment: line}\n", {"scenario.line.count=9"}).scenario.NumAnchors(), 9);
+  const std::string yaml = ToYaml(loaded);
+  EXPECT_NE(yaml.find("environment: line"), std::string::npos) << yaml;
+  EXPECT_EQ(ToYaml(LoadWithLine(yaml)), yaml);
+}
+
+TEST(EnvironmentConfig, AnUnknownEnvironmentOrABadOptionNamesItsKey) {
+  const auto error = [](const std::string& yaml) {
+    try {
+      LoadWithLine(yaml);
+    } catch (const schema::InputError& e) {
+      return std::string(e.what());
+    }
+    return std::string();
+  };
+  EXPECT_NE(error("scenario: {environment: mine}\n").find("key 'scenario.environment': unknown environment 'mine'"),
+            std::string::npos)
+      << error("scenario: {environment: mine}\n");
+  EXPECT_NE(error("scenario: {environment: line, line: {count: 1.5}}\n").find("scenario.line.count"), std::string::npos);
+  EXPECT_NE(error("scenario: {environment: line, line: {count: 0}}\n").find("count must be >= 1"), std::string::npos)
+      << error("scenario: {environment: line, line: {count: 0}}\n");
 }
 
 }  // namespace

@@ -229,21 +229,26 @@ void BindPlugins(py::module_& m) {
       "part_options",
       []() {
         py::dict out;
-        for (const auto& [name, options] : ModuleComponents().PartsWithOptions()) {
-          py::dict keys;
-          for (const registry::OptionSpec& spec : options->specs) {
-            py::dict field;
-            field["default"] = spec.whole ? py::object(py::int_(static_cast<long long>(spec.default_value)))
-                                          : py::object(py::float_(spec.default_value));
-            field["description"] = spec.description;
-            keys[py::str(spec.key)] = field;
+        const auto add = [&](const std::string& section, const auto& parts) {
+          for (const auto& [name, options] : parts) {
+            py::dict keys;
+            for (const registry::OptionSpec& spec : options->specs) {
+              py::dict field;
+              field["default"] = spec.whole ? py::object(py::int_(static_cast<long long>(spec.default_value)))
+                                            : py::object(py::float_(spec.default_value));
+              field["description"] = spec.description;
+              field["key"] = section + "." + name + "." + spec.key;
+              keys[py::str(spec.key)] = field;
+            }
+            out[py::str(name)] = keys;
           }
-          out[py::str(name)] = keys;
-        }
+        };
+        add("estimator", ModuleComponents().PartsWithOptions());
+        add("scenario", ModuleComponents().environments.PartsWithOptions());
         return out;
       },
-      "The options of the parts that own some, set as estimator.<part>.<key>: "
-      "{part: {key: {'default': value, 'description': text}}}.");
+      "The options of the parts that own some (solvers, filters, triggers, environments): "
+      "{part: {key: {'default': value, 'description': text, 'key': its config key}}}.");
 }
 
 }  // namespace anchorbench::python

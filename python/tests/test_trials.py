@@ -72,6 +72,22 @@ def test_a_parts_own_option_is_listed_and_swept_as_from_the_command_line(small_y
         ab.sweep(config, {"estimator.travel_span.span_m": [0]})
 
 
+def test_the_example_environment_is_simulated_as_from_the_command_line(tmp_path, cli):
+    assert ab.part_options()["ceiling_grid"]["rows"]["default"] == 3
+    config = {"seed": 3, "scenario": {"environment": "ceiling_grid", "ceiling_grid": {"columns": 3},
+                                      "trajectory": {"hall_duration_s": 30, "rate_hz": 5}}}
+    recording = ab.simulate(config, realization=1)
+    assert len(recording.anchors) == 9
+    path = tmp_path / "grid.yaml"
+    path.write_text("seed: 3\nscenario:\n  environment: ceiling_grid\n  ceiling_grid: {columns: 3}\n"
+                    "  trajectory: {hall_duration_s: 30, rate_hz: 5}\n")
+    cli("simulate", path, "--realization", 1, "--out", tmp_path / "cli")
+    for name in ["poses.csv", "ranges.csv", "anchors.csv"]:
+        assert recording.text(name) == (tmp_path / "cli" / name).read_text(), name
+    with pytest.raises(ab.InputError, match="scenario.ceiling_grid.rows"):
+        ab.simulate({"scenario": {"environment": "ceiling_grid", "ceiling_grid": {"rows": 0}}})
+
+
 def test_simulate_then_replay_gives_the_command_lines_bytes(small_yaml, tmp_path, cli):
     recording = ab.simulate(small_yaml, realization=1)
     recording.save(tmp_path / "log")

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <stdexcept>
 
 #include <Eigen/Geometry>
 
@@ -87,8 +88,17 @@ bool ScenarioOptions::IsValid(std::string* why) const {
 
 double ScenarioOptions::MaxEpochs() const { return MakeEnvironment()->LongestRun_s(trajectory) * trajectory.rate_hz + 1.0; }
 
-std::unique_ptr<const Environment> ScenarioOptions::MakeEnvironment() const {
-  return environment == EnvironmentKind::kTunnel ? MakeTunnel(tunnel) : MakeHall(hall);
+std::shared_ptr<const Environment> ScenarioOptions::MakeEnvironment() const {
+  if (!custom_environment.empty()) {
+    if (!custom) throw std::logic_error("environment '" + custom_environment + "' was never built (config::LoadConfig builds it)");
+    return custom;
+  }
+  return environment == EnvironmentKind::kTunnel ? std::shared_ptr<const Environment>(MakeTunnel(tunnel))
+                                                 : std::shared_ptr<const Environment>(MakeHall(hall));
+}
+
+std::string ScenarioOptions::EnvironmentName() const {
+  return custom_environment.empty() ? std::string(ToString(environment)) : custom_environment;
 }
 
 Scenario GenerateScenario(const ScenarioOptions& options, std::uint64_t seed, std::uint64_t realization) {

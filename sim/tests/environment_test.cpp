@@ -15,7 +15,7 @@ bool Inside(const Environment::Box& box, const Eigen::Vector3d& p, double slack_
 
 // `slack_m`: how far a path may stray beyond the walls.
 void ExpectKeptInItsBox(const ScenarioOptions& options, double slack_m = 1e-9) {
-  const std::unique_ptr<const Environment> environment = options.MakeEnvironment();
+  const std::shared_ptr<const Environment> environment = options.MakeEnvironment();
   const Environment::Box box = environment->Bounds();
   for (std::uint64_t realization = 0; realization < 5; ++realization) {
     const Scenario scenario = GenerateScenario(options, 3, realization);

@@ -120,6 +120,14 @@ class YamlSection {
   void PartOptions(std::map<std::string, registry::OptionValues>& values, const std::vector<std::string>& named,
                    const OwnedOptions& parts);
 
+  // A value derived from what was read (an environment the registry builds from its options):
+  // resolve(&why) false fails on `key` with why. The writer has nothing to derive.
+  template <typename Resolve>
+  void Derive(std::string_view key, Resolve resolve) {
+    std::string why;
+    if (!resolve(&why)) Fail(key, why);
+  }
+
   // A key that moved to the sibling section `section` (it keeps its name): present, it is refused
   // with the key's new path, so an old file fails in one line that says what to write instead.
   void Moved(std::string_view key, std::string_view section);
@@ -201,6 +209,8 @@ class YamlWriter {
   }
   template <typename Options>
   void Check(const Options&) const {}
+  template <typename Resolve>
+  void Derive(std::string_view, Resolve) {}
   void Moved(std::string_view, std::string_view) {}
   void PartOptions(std::map<std::string, registry::OptionValues>& values, const std::vector<std::string>&,
                    const YamlSection::OwnedOptions&) {

@@ -16,6 +16,7 @@
 #include "anchorbench/estimator/robust_kernel.hpp"
 #include "anchorbench/estimator/solver.hpp"
 #include "anchorbench/schema/estimator_config.hpp"
+#include "anchorbench/sim/environment_model.hpp"
 #include "anchorbench/registry/registry.hpp"
 
 namespace anchorbench::registry {
@@ -53,9 +54,15 @@ struct TriggerContext {
   std::function<double(double)> travel_bias;
 };
 
+// What an environment factory gets: nothing beyond its own options (RegisterWithOptions).
+struct EnvironmentContext {};
+
 using SolverRegistry = Registry<estimator::Solver, SolverContext>;
 using FilterRegistry = Registry<estimator::OutlierFilter, FilterContext>;
 using TriggerRegistry = Registry<estimator::InitTrigger, TriggerContext>;
+// Simulated environments beside the tunnel and the hall, named by scenario.environment; their
+// options are the section scenario.<name>.
+using EnvironmentRegistry = Registry<sim::Environment, EnvironmentContext>;
 
 // The registries of named parts an initializer is built from, owned by the caller, and the kernel
 // tables the solvers built from them share.
@@ -63,6 +70,7 @@ struct Components {
   SolverRegistry solvers{"solver"};
   FilterRegistry filters{"filter"};
   TriggerRegistry triggers{"trigger"};
+  EnvironmentRegistry environments{"environment"};
   std::shared_ptr<estimator::LogPartitionTables> tables = std::make_shared<estimator::LogPartitionTables>();
 
   // Whether every name of `config` is registered here; *why names the first that is not.

@@ -2,6 +2,8 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <map>
+#include <memory>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -34,6 +36,12 @@ struct ScenarioOptions {
   static constexpr double kMaxRangeSlots = 2e7;
 
   EnvironmentKind environment = EnvironmentKind::kTunnel;
+  // An environment of the caller's registry (registry::Components::environments) in place of the
+  // tunnel or the hall: its name, its options as the config set them (by environment name), and
+  // the environment the registry built from them when the config was read.
+  std::string custom_environment;
+  std::map<std::string, std::map<std::string, double>> environment_options;
+  std::shared_ptr<const Environment> custom;
   // Tags at rigid offsets in the body frame (x forward along the direction of travel, y left,
   // z up); the trajectory is the body's. Every tag ranges to every anchor in reach at every epoch.
   std::vector<Eigen::Vector3d> tag_offsets_m = {Eigen::Vector3d::Zero()};
@@ -47,8 +55,11 @@ struct ScenarioOptions {
   // duration, times the rate. A double: it may be astronomically large before validation.
   double MaxEpochs() const;
   int NumAnchors() const { return MakeEnvironment()->NumAnchors(); }
-  // The environment `environment` names, with its options (the one place the kind is decided).
-  std::unique_ptr<const sim::Environment> MakeEnvironment() const;
+  // The environment the options name (the one place the kind is decided): the caller's, or the
+  // tunnel or the hall with their options.
+  std::shared_ptr<const sim::Environment> MakeEnvironment() const;
+  // Its name in a config: "tunnel", "hall", or the caller's.
+  std::string EnvironmentName() const;
 };
 
 struct SimAnchor {
