@@ -98,7 +98,7 @@ struct CommandLine {
   app::RunArgs run;
   app::SweepArgs sweep;
   app::PdopStudyArgs study;
-  app::MonteCarloArgs navigate;
+  app::NavigateArgs navigate;
   app::ExploreArgs explore;
   app::ConvertHanyangArgs convert;
   app::CalibrateArgs calibrate;
@@ -202,6 +202,7 @@ void AddMonteCarloCommands(CLI::App& cli, CommandLine& c) {
                                    "Closest-point, LS, NLS and true PDOP side by side along random runs (Figs. 6-8)");
   c.study_cmd->add_option("config", c.study.config, "Experiment config (YAML); its base scenario is used")->required();
   AddMonteCarloOptions(c.study_cmd, c.study);
+  c.study_cmd->add_option("--set", c.study.overrides, "Override a config value: KEY=VALUE, KEY a dotted path (repeatable)");
   c.study_cmd->add_option("--every", c.study.every, "Checkpoint every N accepted samples (default 10)")
       ->check(WholeNumber(1, 1000000));
   c.study_cmd->add_option("--bin-s", c.study.bin_s, "Summary time bins in seconds, 0.01 to 120 (default 10)");
@@ -212,6 +213,7 @@ void AddMonteCarloCommands(CLI::App& cli, CommandLine& c) {
   c.navigate_cmd->add_option("config", c.navigate.config, "Experiment config (YAML) with a 'navigation' section")
       ->required();
   AddMonteCarloOptions(c.navigate_cmd, c.navigate);
+  c.navigate_cmd->add_option("--set", c.navigate.overrides, "Override a config value: KEY=VALUE, KEY a dotted path (repeatable)");
   c.navigate_cmd->add_flag("--resume", c.navigate.resume,
                            "Continue an interrupted run from <out>.chunks/ (its finished units are kept); the results "
                            "are byte-identical to an uninterrupted run's");

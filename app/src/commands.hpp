@@ -69,13 +69,17 @@ struct SweepArgs : MonteCarloArgs {
 int SweepCommand(const SweepArgs& args, const AppContext& app);
 
 struct PdopStudyArgs : MonteCarloArgs {
+  std::vector<std::string> overrides;  // --set KEY=VALUE
   int every = 10;       // a checkpoint (LS and NLS solves) every this many accepted samples
   double bin_s = 10.0;  // time bins of the summary
 };
 int PdopStudyCommand(const PdopStudyArgs& args, const AppContext& app);
 
 // The navigation study (docs/navigation.md): each trigger's anchors in a drifting robot's filter.
-int NavigateCommand(const MonteCarloArgs& args, const AppContext& app);
+struct NavigateArgs : MonteCarloArgs {
+  std::vector<std::string> overrides;  // --set KEY=VALUE
+};
+int NavigateCommand(const NavigateArgs& args, const AppContext& app);
 
 struct ExploreArgs : MonteCarloArgs {
   std::vector<std::string> overrides;  // --set KEY=VALUE

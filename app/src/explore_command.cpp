@@ -22,11 +22,9 @@ int ExploreCommand(const ExploreArgs& args, const AppContext& app) {
       {[&](long long done, long long total) { progress.Update(done, total); }, app.stop});
   const double wall_time_s = progress.elapsed_s();
   progress.Finish(static_cast<long long>(records.size() / config.exploration->policies.size()));
-  std::vector<std::string> command_line{"explore"};
-  for (const std::string& assignment : args.overrides) command_line.push_back("--set " + assignment);
   const std::string markdown = engine::WriteExplorationFiles(
       [&](const std::string& name, const std::function<void(std::ostream&)>& write) { out->Write(name, write); },
-      config, records, RunInfoOf(args, setup, app, config, wall_time_s, command_line));
+      config, records, RunInfoOf(args, setup, app, config, wall_time_s, CommandLine("explore", args.overrides)));
   out->Commit();
   if (!args.quiet) std::cout << markdown;
   return 0;

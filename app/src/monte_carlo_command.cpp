@@ -59,6 +59,13 @@ PlanOutcome ComputePlan(const MonteCarloArgs& args, const MonteCarloSetup& setup
   return outcome;
 }
 
+std::vector<std::string> CommandLine(const std::string& command, const std::vector<std::string>& overrides) {
+  std::vector<std::string> words;
+  if (!command.empty()) words.push_back(command);
+  for (const std::string& assignment : overrides) words.push_back("--set " + assignment);
+  return words;
+}
+
 report::RunInfo RunInfoOf(const MonteCarloArgs& args, const MonteCarloSetup& setup, const AppContext& app,
                           const schema::ExperimentConfig& config, double wall_time_s,
                           std::vector<std::string> more_command_line) {

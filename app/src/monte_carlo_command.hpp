@@ -54,5 +54,7 @@ PlanOutcome ComputePlan(const MonteCarloArgs& args, const MonteCarloSetup& setup
 report::RunInfo RunInfoOf(const MonteCarloArgs& args, const MonteCarloSetup& setup, const AppContext& app,
                           const schema::ExperimentConfig& config, double wall_time_s,
                           std::vector<std::string> more_command_line = {});
+// `command` (if not empty), then "--set KEY=VALUE" for each override: the manifest's words for them.
+std::vector<std::string> CommandLine(const std::string& command, const std::vector<std::string>& overrides);
 
 }  // namespace anchorbench::app

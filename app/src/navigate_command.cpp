@@ -9,8 +9,8 @@
 
 namespace anchorbench::app {
 
-int NavigateCommand(const MonteCarloArgs& args, const AppContext& app) {
-  schema::ExperimentConfig config = config::LoadConfig(args.config, {}, app.components);
+int NavigateCommand(const NavigateArgs& args, const AppContext& app) {
+  schema::ExperimentConfig config = config::LoadConfig(args.config, args.overrides, app.components);
   if (args.realizations) config.realizations = *args.realizations;
   engine::CheckNavigation(config, app.components);  // before the result folder is claimed
   const std::optional<engine::Shard> shard = ShardOf(args);
@@ -48,7 +48,7 @@ int NavigateCommand(const MonteCarloArgs& args, const AppContext& app) {
   }
   const std::string markdown = engine::WriteNavigationFiles(
       [&](const std::string& name, const std::function<void(std::ostream&)>& write) { out->Write(name, write); },
-      config, records, RunInfoOf(args, setup, app, config, wall_time_s, {"navigate"}));
+      config, records, RunInfoOf(args, setup, app, config, wall_time_s, CommandLine("navigate", args.overrides)));
   out->Commit();
   journal.Remove();
   if (!args.quiet) std::cout << markdown;

@@ -12,7 +12,7 @@
 namespace anchorbench::app {
 
 int PdopStudyCommand(const PdopStudyArgs& args, const AppContext& app) {
-  schema::ExperimentConfig config = config::LoadConfig(args.config, {}, app.components);
+  schema::ExperimentConfig config = config::LoadConfig(args.config, args.overrides, app.components);
   if (args.realizations) config.realizations = *args.realizations;
   if (args.every < 1 || args.every > 1000000) throw schema::InputError("--every: must be in [1, 1000000]");
   // The summary's bins cover Fig. 7's first 120 s: at least 0.01 s (12,000 bins), at most all of it.
@@ -33,8 +33,9 @@ int PdopStudyCommand(const PdopStudyArgs& args, const AppContext& app) {
   std::ostringstream md;
   report::WritePdopStudyMarkdown(md, config, study, args.every, args.bin_s);
   out->Write("pdop_study.md", md.str());
-  const std::vector<std::string> command_line = {"--every " + std::to_string(args.every),
-                                                 "--bin-s " + io::FormatNumber(args.bin_s)};
+  std::vector<std::string> command_line = CommandLine("", args.overrides);
+  command_line.push_back("--every " + std::to_string(args.every));
+  command_line.push_back("--bin-s " + io::FormatNumber(args.bin_s));
   out->Write("manifest.json",
              report::ManifestJson(config, RunInfoOf(args, setup, app, config, wall_time_s, command_line)));
   out->Commit();

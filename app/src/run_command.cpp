@@ -18,9 +18,8 @@ int RunCommand(const RunArgs& args, const AppContext& app) {
 
   const PlanOutcome run = ComputePlan(args, setup, {plan, "run", config.name, app.revision, {config::ToYaml(config), {}}}, app, *out);
   if (!run.experiments) return 0;  // a shard: its folder is written
-  std::vector<std::string> command_line;
-  if (args.seed) command_line.push_back("--seed " + std::to_string(*args.seed));
-  for (const std::string& assignment : args.overrides) command_line.push_back("--set " + assignment);
+  std::vector<std::string> command_line = CommandLine("", args.overrides);
+  if (args.seed) command_line.insert(command_line.begin(), "--seed " + std::to_string(*args.seed));
   const std::string markdown =
       engine::CommitRun(*out, config, run.experiments->front(), RunInfoOf(args, setup, app, config, run.wall_time_s, command_line));
   engine::RemoveStore(*out);

@@ -45,6 +45,13 @@ PY
 "$bin" simulate "$dir/grid.yaml" --set scenario.ceiling_grid.columns=3 --out "$dir/grid_log" ||
   fail "simulate in ceiling_grid"
 [ "$(tail -n +2 "$dir/grid_log/anchors.csv" | wc -l)" -eq 9 ] || fail "simulate: not 3 x 3 anchors"
+# navigate and pdop-study take --set like run (the navigation study needs its section).
+printf 'base: grid.yaml\nnavigation: {}\n' >"$dir/grid_nav.yaml"
+"$bin" navigate "$dir/grid_nav.yaml" --set scenario.ceiling_grid.rows=4 --out "$dir/grid_nav" --quiet ||
+  fail "navigate --set in ceiling_grid"
+grep -qF '"--set scenario.ceiling_grid.rows=4"' "$dir/grid_nav/manifest.json" || fail "navigate's manifest lacks its --set"
+"$bin" pdop-study "$dir/grid.yaml" --set scenario.ceiling_grid.rows=4 --out "$dir/grid_pdop" --quiet ||
+  fail "pdop-study --set in ceiling_grid"
 refused "an unknown environment" "key 'scenario.environment': unknown environment 'mine'" "$dir/mine" \
   "$bin" run "$dir/grid.yaml" --set scenario.environment=mine --out "$dir/mine" --quiet
 refused "a grid of 0 rows" "key 'scenario.ceiling_grid.rows': must be in [1, 100]" "$dir/rows0" \
