@@ -106,9 +106,8 @@ void CustomEnvironment(V& v, sim::ScenarioOptions& o, const registry::Components
   v.Derive("environment", [&](std::string* why) {
     o.custom.reset();
     if (o.custom_environment.empty()) return true;
-    const auto own = o.environment_options.find(o.custom_environment);
     o.custom = components.environments.Create(o.custom_environment, {}, why,
-                                              own == o.environment_options.end() ? registry::OptionValues{} : own->second);
+                                              registry::ValuesOf(o.environment_options, o.custom_environment));
     return o.custom != nullptr;
   });
 }

@@ -1,7 +1,6 @@
 #include "anchorbench/config/yaml_section.hpp"
 
 #include <algorithm>
-
 #include <charconv>
 #include <cmath>
 #include <sstream>

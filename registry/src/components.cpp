@@ -19,17 +19,6 @@ std::vector<std::pair<std::string, const PartOptions*>> Components::PartsWithOpt
   return parts;
 }
 
-namespace {
-
-// The options the config set for the part `name` (none: its defaults).
-const OptionValues& OwnOptions(const schema::EstimatorConfig& config, const std::string& name) {
-  static const OptionValues kNone;
-  const auto found = config.part_options.find(name);
-  return found == config.part_options.end() ? kNone : found->second;
-}
-
-}  // namespace
-
 void RegisterBuiltins(Components& components) {
   RegisterBuiltinSolvers(components.solvers);
   RegisterBuiltinFilters(components.filters);
@@ -42,7 +31,7 @@ estimator::AnchorInitializer MakeInitializer(const Components& components, int a
   return MakeInitializer(
       components, anchor_id, config,
       [&](const TriggerContext& context, std::string* why) {
-        return components.triggers.Create(trigger, context, why, OwnOptions(config, trigger));
+        return components.triggers.Create(trigger, context, why, ValuesOf(config.part_options, trigger));
       },
       seed, p_world_anchor_reference);
 }
@@ -58,11 +47,11 @@ estimator::AnchorInitializer MakeInitializer(const Components& components, int a
   const estimator::InitializerOptions& initializer_options = config.initializer;
   std::shared_ptr<const estimator::Solver> solver =
       components.solvers.Create(config.solver, {solver_options, seed, components.tables.get()}, &why,
-                                OwnOptions(config, config.solver));
+                                ValuesOf(config.part_options, config.solver));
   if (!solver) throw std::invalid_argument(why);
   if (solver_options.scale.estimate) solver = std::make_shared<estimator::ScaledSolver>(solver, solver_options.scale);
   std::unique_ptr<estimator::OutlierFilter> filter =
-      components.filters.Create(config.filter.kind, {config.filter, seed}, &why, OwnOptions(config, config.filter.kind));
+      components.filters.Create(config.filter.kind, {config.filter, seed}, &why, ValuesOf(config.part_options, config.filter.kind));
   if (!filter) throw std::invalid_argument(why);
   const estimator::OutlierFilter* online_filter = filter.get();
   std::unique_ptr<estimator::InitTrigger> made = make_trigger(

@@ -17,6 +17,7 @@
 #include <cmath>
 #include <concepts>
 #include <functional>
+#include <map>
 #include <string>
 #include <string_view>
 #include <utility>
@@ -49,6 +50,13 @@ struct PartOptions {
     return nullptr;
   }
 };
+
+// The values a config set for the part `name`, from a map of them by part (none: its defaults).
+inline const OptionValues& ValuesOf(const std::map<std::string, OptionValues>& by_part, const std::string& name) {
+  static const OptionValues kNone;
+  const auto found = by_part.find(name);
+  return found == by_part.end() ? kNone : found->second;
+}
 
 namespace detail {
 
