@@ -1062,7 +1062,7 @@ def cluster_bullets():
     return (f"- c = {compute:.4f} core-seconds a unit: Table I's paper columns, a plain run on 2 threads, times 2, over its "
             f"units (`cluster.csv`).\n"
             f"- r0 = {rank0 * 1e3:.3f} ms a unit: what rank 0 does with every chunk it receives, one at a time "
-            f"(takes its records, splits its text into lines and writes it to the store, parsing no text; "
+            f"(takes its records, copies its lines into one text and appends the chunk to the store's file, parsing no text; "
             f"`bench_ingest`'s BM_RecordsAndStoreChunkPerUnit in `micro.csv`).\n"
             f"- rm = {merge * 1e3:.2f} ms a unit: the 8-shard merge over Table I's units (`cluster.csv`): it reads "
             f"every attempt back, bootstraps the summaries and writes the results, after the shards.\n"

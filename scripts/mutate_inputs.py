@@ -145,12 +145,17 @@ def hostile(folder, n):
     if kind == 3:  # a tampered chunk store, resumed: recomputed to the clean run's bytes
         store = out + ".chunks"
         os.makedirs(store)
-        for chunk in glob.glob(os.path.join(folder, "ref_shard", "chunk-*.csv")):
-            shutil.copy(chunk, store)
+        blocks = []  # the store's file: each chunk a block `chunk,<index>,<bytes>,` and its text
+        for chunk in sorted(glob.glob(os.path.join(folder, "ref_shard", "chunk-*.csv"))):
+            text = open(chunk, "rb").read()
+            index = int(os.path.basename(chunk)[len("chunk-"):-len(".csv")])
+            blocks.append(b"chunk,%d,%d,\n" % (index, len(text)) + text)
         plan = open(os.path.join(folder, "ref_shard", "shard.csv")).read().split("\n")[1].split(",")[5]
         write(os.path.join(store, "plan.csv"), f"identity,chunks,units\n{plan},0,0\n")
-        victim = rng.choice(sorted(glob.glob(os.path.join(store, "chunk-*.csv"))))
-        write(victim, mutate(open(victim).read()))
+        victim = rng.randrange(len(blocks))
+        blocks[victim] = mutate(blocks[victim].decode()).encode()
+        with open(os.path.join(store, "chunks.csv"), "wb") as f:
+            f.write(b"".join(blocks))
         check = lambda: all(filecmp.cmp(os.path.join(out, f), os.path.join(folder, "ref_run", f), shallow=False)
                             for f in ("attempts.csv", "summary.csv"))
         return ["run", config, "--out", out, "--resume", "--quiet", "--threads", "1"], check

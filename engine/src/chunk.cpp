@@ -38,8 +38,7 @@ ChunkResult ComputeChunk(const Plan& plan, int chunk, const registry::Components
     }
   }
   // One line an attempt (row names hold no line break: the config refuses them).
-  result.lines.reserve(result.attempts.size());
-  for (const schema::Attempt& attempt : result.attempts) result.lines.push_back(report::AttemptLine(attempt, rows));
+  for (const schema::Attempt& attempt : result.attempts) result.lines.append(report::AttemptLine(attempt, rows)).push_back('\n');
   return result;
 }
 
@@ -66,8 +65,12 @@ std::string IdentityLine(const Plan& plan, int chunk, std::string_view body) {
 
 std::string ChunkText(const Plan& plan, int chunk, const ChunkResult& result) {
   std::string body = std::string(report::kAttemptsColumns) + ",compute_s\n";
-  for (std::size_t i = 0; i < result.lines.size(); ++i) {
-    body += result.lines[i] + ',' + io::FormatNumber(result.attempts[i].compute_s) + '\n';
+  body.reserve(body.size() + result.lines.size() + 16 * result.attempts.size());
+  std::size_t at = 0;
+  for (const schema::Attempt& attempt : result.attempts) {
+    const std::size_t end = result.lines.find('\n', at);
+    body.append(result.lines, at, end - at).append(",").append(io::FormatNumber(attempt.compute_s)).push_back('\n');
+    at = end + 1;
   }
   return IdentityLine(plan, chunk, body) + '\n' + body;
 }
@@ -203,18 +206,21 @@ ChunkResult FromRecords(const Plan& plan, int chunk, std::string_view text, std:
     a.compute_s = r.compute_s;
   }
   CheckUnits(plan, chunk, result.attempts, source, [&](std::size_t i) { return source + ": record " + std::to_string(i); });
-  // The lines: below the identity and header lines, each without its last field (compute_s).
-  result.lines.reserve(result.attempts.size());
+  // The lines: below the identity and header lines, each without its last field (compute_s),
+  // copied into one text.
+  result.lines.reserve(text.size());
+  std::size_t count = 0;
   std::size_t at = text.find('\n');
   at = at == std::string_view::npos ? text.size() : text.find('\n', at + 1);
   while (at != std::string_view::npos && at + 1 < text.size()) {
     const std::size_t end = std::min(text.find('\n', at + 1), text.size());
     const std::string_view line = text.substr(at + 1, end - at - 1);
-    result.lines.emplace_back(line.substr(0, line.rfind(',')));
+    result.lines.append(line.substr(0, line.rfind(','))).push_back('\n');
+    ++count;
     at = end < text.size() ? end : std::string_view::npos;
   }
-  if (result.lines.size() != result.attempts.size()) {
-    throw schema::InputError(source + ": " + std::to_string(result.lines.size()) + " lines for " +
+  if (count != result.attempts.size()) {
+    throw schema::InputError(source + ": " + std::to_string(count) + " lines for " +
                              std::to_string(result.attempts.size()) + " records");
   }
   return result;

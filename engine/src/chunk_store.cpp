@@ -1,7 +1,5 @@
 #include "anchorbench/engine/chunk_store.hpp"
 
-#include <cerrno>
-#include <cstring>
 #include <fstream>
 #include <functional>
 #include <system_error>
@@ -45,19 +43,12 @@ bool HoldsOnlyStoreFiles(const fs::path& folder, const std::function<bool(const 
   return !error;
 }
 
-// A chunk file (chunk-N.csv) or the temporary a kill left (chunk-N.csv.partial).
-bool IsChunkFile(const std::string& name) {
-  return name.rfind("chunk-", 0) == 0 && (name.ends_with(".csv") || name.ends_with(".csv.partial"));
-}
+constexpr const char* kChunksFile = "chunks.csv";
+constexpr const char* kKind = "chunk";
 
-// Whole chunk files, not the temporaries.
-int CountChunkFiles(const fs::path& folder) {
-  int count = 0;
-  for (const fs::directory_entry& entry : fs::directory_iterator(folder)) {
-    const std::string name = entry.path().filename().string();
-    if (IsChunkFile(name) && name.ends_with(".csv")) ++count;
-  }
-  return count;
+// The store's file, or the temporary of its rewrite (io::AtomicFile's <name>.tmp.<pid>).
+bool IsChunksFile(const std::string& name) {
+  return name == kChunksFile || name.rfind(std::string(kChunksFile) + ".tmp.", 0) == 0;
 }
 
 }  // namespace
@@ -114,17 +105,20 @@ void WriteStorePlan(const fs::path& folder, const std::string& identity, long lo
 ChunkStore::ChunkStore(const fs::path& out, const Plan& plan, Mode mode, std::uintmax_t expected_bytes,
                        const std::vector<fs::path>& inputs)
     : folder_(ChunkStorePath(out)) {
-  const bool fresh = ClaimStoreFolder(folder_, plan.identity(), mode, inputs, IsChunkFile, [this] {
-    return std::to_string(CountChunkFiles(folder_)) + " finished chunks";
+  const fs::path path = folder_ / kChunksFile;
+  const bool fresh = ClaimStoreFolder(folder_, plan.identity(), mode, inputs, IsChunksFile, [&path] {
+    try {
+      return std::to_string(ReadBlockLog(path, kKind).blocks.size()) + " finished chunks";
+    } catch (const InputError&) {
+      return std::string("finished chunks");
+    }
   });
-  if (!fresh) TakeOver(plan);
   try {
-    std::error_code error;
-    std::uintmax_t held = 0;
-    for (const auto& [chunk, result] : finished_) held += fs::file_size(ChunkPath(chunk), error);
+    const std::uintmax_t held = fresh ? 0 : TakeOver(plan);
     reservation_ = io::Reservation(folder_ / kReservation, expected_bytes > held ? expected_bytes - held : 0,
                                    folder_.string(), "the chunks of this run");
     if (fresh) WriteStorePlan(folder_, plan.identity(), static_cast<long long>(plan.chunks().size()), plan.units());
+    log_ = BlockLog(path, kKind);
   } catch (const InputError&) {
     std::error_code error;
     if (fresh) fs::remove_all(folder_, error);
@@ -132,53 +126,47 @@ ChunkStore::ChunkStore(const fs::path& out, const Plan& plan, Mode mode, std::ui
   }
 }
 
-void ChunkStore::TakeOver(const Plan& plan) {
-  std::error_code error;
-  for (int chunk = 0; chunk < static_cast<int>(plan.chunks().size()); ++chunk) {
-    const fs::path path = ChunkPath(chunk);
-    if (!fs::exists(path, error)) continue;
-    if (fs::is_directory(path, error)) {
-      throw InputError(path.string() + ": is a folder where the store keeps a chunk file; remove it, or --overwrite");
+std::uintmax_t ChunkStore::TakeOver(const Plan& plan) {
+  const fs::path path = folder_ / kChunksFile;
+  BlockLogContents contents = ReadBlockLog(path, kKind);
+  const auto refuse = [this](const std::string& why) {
+    if (unreadable_++ == 0) first_unreadable_ = why;
+  };
+  std::vector<LoggedBlock> kept;
+  std::uintmax_t held = 0;
+  for (LoggedBlock& block : contents.blocks) {
+    const std::string source = path.string() + ":" + std::to_string(block.line);
+    if (block.key >= static_cast<long long>(plan.chunks().size()) || finished_.count(static_cast<int>(block.key)) > 0) {
+      refuse(source + ": chunk " + std::to_string(block.key) + " is not a chunk of this plan, or a second copy");
+      continue;
     }
     try {
-      finished_.emplace(chunk, ReadChunkFile(plan, chunk, path.string()));
+      finished_.emplace(static_cast<int>(block.key), ParseChunk(plan, static_cast<int>(block.key), block.text, source));
+      held += block.text.size();
+      kept.push_back(std::move(block));
     } catch (const InputError& e) {
-      // Torn by a crash of the machine (chunks are not flushed), edited, another run's: computed again.
-      if (unreadable_++ == 0) first_unreadable_ = e.what();
+      // Torn by a crash of the machine (the file is not flushed), edited, another run's: computed again.
+      refuse(e.what());
     }
   }
+  if (!contents.damage.empty()) refuse(contents.damage);  // it comes last in the file
+  // What follows a torn block would be read as part of it: the file keeps the chunks that read
+  // back, then grows. A store that reads back whole is appended to as it is.
+  if (unreadable_ > 0) RewriteBlockLog(path, kKind, kept);
+  return held;
 }
 
 std::map<int, ChunkResult> ChunkStore::TakeFinished() { return std::move(finished_); }
 
 void ChunkStore::Save(int chunk, const std::string& text) {
-  // Whole or absent for a killed process: the text goes to a temporary, renamed into place. Not
-  // flushed to the disk (fsync made the flush, not the work, rank 0's bound): after a crash of the
-  // machine a chunk may read back torn, and is then computed again.
-  const fs::path path = ChunkPath(chunk);
-  const fs::path temporary = path.string() + ".partial";
   reservation_.Shrink(text.size());
-  std::ofstream out(temporary, std::ios::binary | std::ios::trunc);
-  out << text;
-  out.close();
-  const int write_error = out ? 0 : errno;
-  std::error_code error;
-  if (!write_error) fs::rename(temporary, path, error);
-  if (write_error || error) {
-    std::error_code ignored;
-    fs::remove(temporary, ignored);
-    throw InputError(path.string() + ": cannot write the chunk: " +
-                     (error ? error.message() : std::string(std::strerror(write_error ? write_error : EIO))));
-  }
+  log_.Append(chunk, "", text);
 }
 
 void ChunkStore::Remove() {
+  log_.Close();
   std::error_code error;
   fs::remove_all(folder_, error);  // the results are in place; a leftover is refused next time
-}
-
-fs::path ChunkStore::ChunkPath(int chunk) const {
-  return folder_ / ChunkFileName(chunk);
 }
 
 }  // namespace anchorbench::engine

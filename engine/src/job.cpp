@@ -12,7 +12,7 @@ std::optional<std::vector<ExperimentAttempts>> ComputeJob(const Job& job, Execut
   ChunkStore store(out.target(), job.plan, options.store_mode, ChunkBytes(job.plan, shard), options.inputs);
   if (store.unreadable() > 0 && options.note) {
     options.note(store.folder().string() + ": " + std::to_string(store.unreadable()) +
-                 " chunk file(s) do not read back (first: " + store.first_unreadable() + "); computing them again");
+                 " stored chunk(s) do not read back (first: " + store.first_unreadable() + "); computing them again");
   }
   std::map<int, ChunkResult> chunks = RunPlan(job.plan, executor, {options.threads, &store, options.progress, shard});
   if (!options.shard) return Join(job.plan, chunks);

@@ -1,13 +1,7 @@
 #include "anchorbench/engine/record_journal.hpp"
 
-#include <algorithm>
-#include <cerrno>
-#include <charconv>
-#include <cstring>
-#include <sstream>
 #include <system_error>
 
-#include "anchorbench/io/atomic_file.hpp"
 #include "anchorbench/io/hash.hpp"
 #include "anchorbench/schema/input_error.hpp"
 #include "store_folder.hpp"
@@ -19,28 +13,12 @@ using schema::InputError;
 namespace {
 
 constexpr const char* kJournalFile = "journal.csv";
+constexpr const char* kKind = "unit";
 
 // The journal, or the temporary of its rewrite (io::AtomicFile's <name>.tmp.<pid>).
 bool IsJournalFile(const std::string& name) {
   return name == kJournalFile || name.rfind(std::string(kJournalFile) + ".tmp.", 0) == 0;
 }
-
-// The numbers of a block's header line `unit,<index>,<lines>,<checksum>`; false if it is not one.
-bool ParseHeader(std::string_view line, long long* unit, long long* lines, std::string* checksum) {
-  if (!line.starts_with("unit,")) return false;
-  line.remove_prefix(5);
-  const auto number = [&line](long long* value) {
-    const auto [end, ec] = std::from_chars(line.data(), line.data() + line.size(), *value);
-    if (ec != std::errc() || end == line.data() + line.size() || *end != ',') return false;
-    line.remove_prefix(static_cast<std::size_t>(end - line.data()) + 1);
-    return true;
-  };
-  if (!number(unit) || !number(lines) || *lines < 1) return false;
-  *checksum = std::string(line);
-  return true;
-}
-
-long long CountLines(const std::string& text) { return std::count(text.begin(), text.end(), '\n'); }
 
 }  // namespace
 
@@ -57,14 +35,8 @@ RecordJournal::RecordJournal(const fs::path& out, std::string identity, long lon
       WriteStorePlan(folder_, identity_, units_, units_);
     } else {
       ReadBack(path);
-      // What follows a torn block would be read as its lines: the journal is rewritten with the
-      // blocks that read back, then added to.
-      io::AtomicFile rewritten(path, true);
-      for (const auto& [unit, text] : finished_) rewritten.stream() << Block(unit, text);
-      rewritten.Commit();
     }
-    file_.open(path, std::ios::binary | std::ios::app);
-    if (!file_) throw InputError(path.string() + ": cannot open for appending: " + std::strerror(errno));
+    log_ = BlockLog(path, kKind);
   } catch (const InputError&) {
     std::error_code error;
     if (fresh) fs::remove_all(folder_, error);
@@ -73,40 +45,27 @@ RecordJournal::RecordJournal(const fs::path& out, std::string identity, long lon
 }
 
 void RecordJournal::ReadBack(const fs::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  std::string line;
-  long long line_number = 0;
-  const auto refuse = [this, &path](long long at, const std::string& why) {
-    if (unreadable_++ == 0) first_unreadable_ = path.string() + ":" + std::to_string(at) + ": " + why;
-  };
-  while (std::getline(in, line)) {
-    const long long header_at = ++line_number;
-    long long unit = 0, lines = 0;
-    std::string checksum;
-    if (!ParseHeader(line, &unit, &lines, &checksum)) {
-      refuse(header_at, "not a unit's header line");
+  BlockLogContents contents = ReadBlockLog(path, kKind);
+  std::vector<LoggedBlock> kept;
+  for (LoggedBlock& block : contents.blocks) {
+    const std::string what = path.string() + ":" + std::to_string(block.line) + ": unit " + std::to_string(block.key);
+    std::string why;
+    if (block.key >= units_ || finished_.count(block.key) > 0) {
+      why = what + " is not a unit of this run, or a second copy";
+    } else if (block.tag != Checksum(block.key, block.text)) {
+      why = what + " does not match its checksum (edited after the run, or another run's?)";
+    }
+    if (!why.empty()) {
+      if (unreadable_++ == 0) first_unreadable_ = why;
       continue;
     }
-    std::string text;
-    long long read = 0;  // a last line without its newline is torn
-    while (read < lines && std::getline(in, line) && !in.eof()) {
-      text.append(line).push_back('\n');
-      ++read;
-    }
-    line_number += read;
-    const std::string what = "unit " + std::to_string(unit);
-    if (read < lines) {
-      refuse(header_at, what + " is torn (the run was killed while writing it)");
-      break;
-    }
-    if (unit < 0 || unit >= units_ || finished_.count(unit) > 0) {
-      refuse(header_at, what + " is not a unit of this run, or a second copy");
-    } else if (checksum != Checksum(unit, text)) {
-      refuse(header_at, what + " does not match its checksum (edited after the run, or another run's?)");
-    } else {
-      finished_.emplace(unit, std::move(text));
-    }
+    finished_.emplace(block.key, block.text);
+    kept.push_back(std::move(block));
   }
+  if (!contents.damage.empty() && unreadable_++ == 0) first_unreadable_ = contents.damage;  // it comes last in the file
+  // What follows a torn block would be read as part of it: the journal keeps the blocks that read
+  // back, then grows.
+  if (unreadable_ > 0) RewriteBlockLog(path, kKind, kept);
 }
 
 void RecordJournal::Refuse(long long unit, const std::string& why) {
@@ -117,22 +76,14 @@ std::string RecordJournal::Checksum(long long unit, const std::string& text) con
   return io::Fingerprint(identity_ + "\n" + std::to_string(unit) + "\n" + text);
 }
 
-std::string RecordJournal::Block(long long unit, const std::string& text) const {
-  return "unit," + std::to_string(unit) + "," + std::to_string(CountLines(text)) + "," + Checksum(unit, text) + "\n" +
-         text;
-}
-
 void RecordJournal::Append(long long unit, const std::string& text) {
-  const std::string block = Block(unit, text);
+  const std::string checksum = Checksum(unit, text);
   const std::lock_guard<std::mutex> lock(mutex_);
-  // One write of the whole block, flushed at once: a kill -9 tears at most this block.
-  file_.write(block.data(), static_cast<std::streamsize>(block.size()));
-  file_.flush();
-  if (!file_) throw InputError((folder_ / kJournalFile).string() + ": cannot append a finished unit: " + std::strerror(errno));
+  log_.Append(unit, checksum, text);
 }
 
 void RecordJournal::Remove() {
-  file_.close();
+  log_.Close();
   std::error_code error;
   fs::remove_all(folder_, error);  // the results are in place; a leftover is refused next time
 }

@@ -13,10 +13,8 @@ std::vector<ExperimentAttempts> Join(const Plan& plan, std::map<int, ChunkResult
   std::vector<ExperimentAttempts> joined(plan.experiments().size());
   for (auto& [chunk, result] : chunks) {  // in chunk order: experiment by experiment, unit by unit
     ExperimentAttempts& into = joined[static_cast<std::size_t>(plan.chunks()[static_cast<std::size_t>(chunk)].experiment)];
-    for (std::size_t i = 0; i < result.attempts.size(); ++i) {
-      into.attempts.push_back(std::move(result.attempts[i]));
-      into.lines.push_back(std::move(result.lines[i]));
-    }
+    for (schema::Attempt& attempt : result.attempts) into.attempts.push_back(std::move(attempt));
+    into.lines += result.lines;
   }
   return joined;
 }

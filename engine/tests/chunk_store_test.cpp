@@ -8,6 +8,8 @@
 #include "anchorbench/testing/temp_dir.hpp"
 #include "anchorbench/engine/run_plan.hpp"
 
+#include <algorithm>
+
 namespace anchorbench::engine {
 namespace {
 
@@ -27,6 +29,14 @@ class SomeChunks final : public Executor {
   std::vector<int> only_;
 };
 
+// The chunks in the store of `out`, in the order they were appended.
+std::vector<long long> StoredChunks(const std::filesystem::path& out) {
+  std::vector<long long> keys;
+  for (const LoggedBlock& block : ReadBlockLog(ChunkStorePath(out) / "chunks.csv", "chunk").blocks) keys.push_back(block.key);
+  std::sort(keys.begin(), keys.end());
+  return keys;
+}
+
 TEST(ChunkStore, ResumesItsOwnPlanAndRefusesAnother) {
   const testing::TempDir dir("chunk_store");
   const std::filesystem::path out = dir.path() / "results";
@@ -36,7 +46,7 @@ TEST(ChunkStore, ResumesItsOwnPlanAndRefusesAnother) {
     SomeChunks killed({0, 5});
     RunPlan(plan, killed, {2, &store, nullptr});
   }
-  EXPECT_TRUE(std::filesystem::exists(dir.path() / "results.chunks" / "chunk-000005.csv"));
+  EXPECT_EQ(StoredChunks(dir.path() / "results"), (std::vector<long long>{0, 5}));
   EXPECT_THROW(ChunkStore(out, plan, Mode::kFresh), schema::InputError);  // an interrupted run
   schema::ExperimentConfig other = SmallTable();
   other.seed = 99;
@@ -63,8 +73,50 @@ TEST(ChunkStore, ResumesItsOwnPlanAndRefusesAnother) {
   EXPECT_EQ(computed.size(), plan.chunks().size() - 2);
   EXPECT_EQ(std::count(computed.begin(), computed.end(), 5), 0);
   EXPECT_EQ(resumed.lines, RunWholePlan(plan, executor, 1).front().lines);
+  EXPECT_EQ(StoredChunks(out).size(), plan.chunks().size());  // appended to what was there
   store.Remove();
   EXPECT_FALSE(std::filesystem::exists(dir.path() / "results.chunks"));
+}
+
+// A chunk edited in the store, one of another plan, a second copy and a torn last block are
+// all computed again; the store keeps what reads back and grows from there.
+TEST(ChunkStore, WhatDoesNotReadBackIsComputedAgainAndTheRestKept) {
+  const testing::TempDir dir("chunk_store_damage");
+  const std::filesystem::path out = dir.path() / "results";
+  const Plan plan({SmallTable()});
+  schema::ExperimentConfig other = SmallTable();
+  other.seed = 99;
+  const Plan other_plan({other});
+  LocalExecutor executor(AllComponents());
+  std::map<int, std::string> texts;
+  executor.Compute(plan, {0, 1, 2}, 1, [&](int chunk, ChunkResult&&, const std::string& text) { texts[chunk] = text; });
+  std::string foreign;
+  executor.Compute(other_plan, {3}, 1, [&](int, ChunkResult&&, const std::string& text) { foreign = text; });
+  std::string edited = texts.at(1);
+  edited[edited.size() - 3] = edited[edited.size() - 3] == '1' ? '2' : '1';
+  {
+    ChunkStore store(out, plan, Mode::kFresh);
+    store.Save(0, texts.at(0));
+    store.Save(1, edited);
+    store.Save(3, foreign);
+    store.Save(0, texts.at(0));
+    store.Save(2, texts.at(2));
+  }
+  const std::filesystem::path file = ChunkStorePath(out) / "chunks.csv";
+  std::filesystem::resize_file(file, std::filesystem::file_size(file) - 5);  // chunk 2 torn by a kill
+  {
+    ChunkStore resumed(out, plan, Mode::kResume);
+    EXPECT_EQ(resumed.unreadable(), 4);
+    EXPECT_NE(resumed.first_unreadable().find("chunks.csv:"), std::string::npos) << resumed.first_unreadable();
+    const std::map<int, ChunkResult> finished = resumed.TakeFinished();
+    ASSERT_EQ(finished.size(), 1u);
+    EXPECT_EQ(finished.count(0), 1u);
+    EXPECT_EQ(StoredChunks(out), (std::vector<long long>{0}));  // rewritten with what read back
+    resumed.Save(2, texts.at(2));
+  }
+  ChunkStore again(out, plan, Mode::kResume);
+  EXPECT_EQ(again.unreadable(), 0);
+  EXPECT_EQ(again.TakeFinished().size(), 2u);
 }
 
 TEST(ChunkStore, ATornChunkIsComputedAgainAndOverwriteDiscards) {
@@ -81,7 +133,7 @@ TEST(ChunkStore, ATornChunkIsComputedAgainAndOverwriteDiscards) {
     EXPECT_EQ(resumed.TakeFinished().count(1), 0u);
   }
   ChunkStore(out, plan, Mode::kOverwrite);
-  EXPECT_FALSE(std::filesystem::exists(dir.path() / "results.chunks" / "chunk-000001.csv"));
+  EXPECT_TRUE(StoredChunks(out).empty());
   // Killed between creating the folder and writing its plan: nothing to keep, a fresh start.
   std::filesystem::remove(dir.path() / "results.chunks" / "plan.csv");
   EXPECT_NO_THROW(ChunkStore(out, plan, Mode::kFresh));

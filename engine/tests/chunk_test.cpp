@@ -176,7 +176,7 @@ TEST(Chunk, AnEditedSwappedOrForeignChunkIsRefused) {
 TEST(RunPlan, ShardsHoldEveryChunkOnceAndJoinToTheWholeRun) {
   const Plan plan({SmallTable()});  // 12 units, 12 chunks
   LocalExecutor executor(AllComponents());
-  const std::vector<std::string> whole = RunWholePlan(plan, executor, 2).front().lines;
+  const std::string whole = RunWholePlan(plan, executor, 2).front().lines;
   for (int count : {1, 5, 12, 13}) {
     std::map<int, ChunkResult> joined;
     for (int index = 0; index < count; ++index) {

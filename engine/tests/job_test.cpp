@@ -57,7 +57,7 @@ TEST(ComputeJob, AWholePlanComesBackJoinedAndCommitsToTheFiveFilesOfARun) {
   EXPECT_EQ(Read(dir.path() / "run" / "summary.md"), markdown);
   std::size_t lines = 0;
   for (char c : Read(dir.path() / "run" / "attempts.csv")) lines += c == '\n';
-  EXPECT_EQ(lines, expected.front().lines.size() + 1);  // the header and a line per attempt
+  EXPECT_EQ(lines, expected.front().attempts.size() + 1);  // the header and a line per attempt
 }
 
 TEST(ComputeJob, ShardsCommitTheirFoldersAndTogetherHoldEveryChunk) {
@@ -90,9 +90,9 @@ TEST(ComputeJob, ADamagedStoreIsToldAndItsChunksComputedAgain) {
     std::unique_ptr<io::ResultFolder> out = Folder(target);
     ComputeJob(RunJob(plan), executor, {}, *out);  // never committed: the store stays, as after a kill
   }
-  const fs::path chunk = ChunkStorePath(target) / "chunk-000000.csv";
-  ASSERT_TRUE(fs::exists(chunk));
-  std::ofstream(chunk, std::ios::app) << "a torn line\n";
+  const fs::path chunks = ChunkStorePath(target) / "chunks.csv";
+  ASSERT_TRUE(fs::exists(chunks));
+  std::ofstream(chunks, std::ios::app) << "chunk,0,99999,\na torn block\n";
 
   std::vector<std::string> notes;
   JobOptions options;
@@ -102,7 +102,7 @@ TEST(ComputeJob, ADamagedStoreIsToldAndItsChunksComputedAgain) {
   const auto joined = ComputeJob(RunJob(plan), executor, options, *out);
   out.reset();  // not committed: the store stays
   ASSERT_EQ(notes.size(), 1u);
-  EXPECT_NE(notes.front().find("1 chunk file(s) do not read back"), std::string::npos) << notes.front();
+  EXPECT_NE(notes.front().find("1 stored chunk(s) do not read back"), std::string::npos) << notes.front();
   EXPECT_EQ(joined->front().lines, RunWholePlan(plan, executor, 1).front().lines);
 
   JobOptions refusing;  // kFresh over the interrupted store of `target` is refused

@@ -44,7 +44,7 @@ AttemptsFile ParseAttempts(const std::string& text, const std::string& source,
     // The line as written, without compute_s (the last field: the header has more than one).
     std::string_view line = csv.record_text();
     if (!line.empty() && line.back() == '\r') line.remove_suffix(1);
-    file.lines.emplace_back(line.substr(0, line.rfind(',')));
+    file.lines.append(line.substr(0, line.rfind(','))).push_back('\n');
     file.attempts.push_back(std::move(a));
   }
   return file;

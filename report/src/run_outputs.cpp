@@ -128,9 +128,8 @@ void WriteAttempts(std::ostream& out, const std::vector<Attempt>& attempts, cons
   }
 }
 
-void WriteAttemptLines(std::ostream& out, const std::vector<std::string>& lines) {
-  out << kAttemptsColumns << '\n';
-  for (const std::string& line : lines) out << line << '\n';
+void WriteAttemptLines(std::ostream& out, std::string_view lines) {
+  out << kAttemptsColumns << '\n' << lines;
 }
 
 std::string SummaryCsvFields(const MethodSummary& s, const std::vector<RowConfig>& rows) {

@@ -15,12 +15,13 @@
 
 namespace anchorbench::engine {
 
-// A chunk's attempts in unit order, each with its line of attempts.csv, so that output written
-// from a chunk read back (a resumed run, an MPI rank's) has the computed chunk's bytes. Read back,
-// an attempt holds what the summaries use (report::ParseAttempts).
+// A chunk's attempts in unit order, with their lines of attempts.csv, so that output written from
+// a chunk read back (a resumed run, an MPI rank's) has the computed chunk's bytes. Read back, an
+// attempt holds what the summaries use (report::ParseAttempts). The lines are one text (a line an
+// attempt, each ending in a newline): joined by appending, never split into strings.
 struct ChunkResult {
   std::vector<schema::Attempt> attempts;
-  std::vector<std::string> lines;
+  std::string lines;
 };
 
 // Computes chunk `chunk` of `plan` on the calling thread (engine::RunRealization per unit);

@@ -1,9 +1,10 @@
 #pragma once
 // Where a run's finished chunks wait until its results are written: the folder <out>.chunks/
-// beside the result folder, one file per chunk (renamed into place whole, so a kill -9 leaves only
-// whole chunks) and `plan.csv` naming the plan. A run killed at any moment continues from it with
-// --resume; the finished results replace it. The store is a cache of deterministic work: a chunk
-// that does not read back (a crash of the machine) is computed again, never trusted.
+// beside the result folder, holding `plan.csv` naming the plan and `chunks.csv`, one file appended
+// to while it is open, each chunk's text a block (block_log.hpp: a kill -9 tears at most the last).
+// A run killed at any moment continues from it with --resume; the finished results replace it. The
+// store is a cache of deterministic work: a chunk that does not read back as its chunk of this plan
+// (torn, edited, another run's) is computed again, never trusted.
 
 #include <filesystem>
 #include <map>
@@ -13,6 +14,7 @@
 #include "anchorbench/io/reservation.hpp"
 #include "anchorbench/engine/chunk.hpp"
 #include "anchorbench/engine/plan.hpp"
+#include "anchorbench/engine/block_log.hpp"
 
 namespace anchorbench::engine {
 
@@ -30,11 +32,12 @@ class ChunkStore {
 
   // The chunks finished before (kResume), read back and checked, by index.
   std::map<int, ChunkResult> TakeFinished();
-  // Chunk files found but not readable as their chunk: torn, edited, of another run (they are
-  // left out of TakeFinished and computed again); the first one's reason.
+  // Chunks found but not readable as their chunk: torn, edited, of another run (they are left
+  // out of TakeFinished and computed again); the first one's reason.
   int unreadable() const { return unreadable_; }
   const std::string& first_unreadable() const { return first_unreadable_; }
-  // Writes the chunk's file; throws schema::InputError naming it (a full disk, a folder in its place).
+  // Appends the chunk's text (one caller at a time); throws schema::InputError naming the file (a
+  // full disk).
   void Save(int chunk, const std::string& text);
   // Once the results are in place.
   void Remove();
@@ -42,10 +45,12 @@ class ChunkStore {
   const std::filesystem::path& folder() const { return folder_; }
 
  private:
-  std::filesystem::path ChunkPath(int chunk) const;
-  void TakeOver(const Plan& plan);  // this run's earlier store: its chunks read
+  // This run's earlier store: its chunks read back (and the file rewritten with them alone when
+  // it holds anything else); returns their bytes.
+  std::uintmax_t TakeOver(const Plan& plan);
 
   std::filesystem::path folder_;
+  BlockLog log_;
   std::map<int, ChunkResult> finished_;
   int unreadable_ = 0;
   std::string first_unreadable_;

@@ -24,8 +24,9 @@ struct ChunkSpan {
 // An experiment of U units is cut into chunks of ceil(U / kChunksPerExperiment) units, at most
 // kMaxChunkUnits: ~256 chunks give 8 shards or 32 workers' threads enough chunks each that the
 // last one's wait stays small, and a 1e6-unit sweep still hands out chunks of seconds, not hours.
-// Smaller chunks cost more than they balance (each is a file written and flushed to the disk:
-// Table I as 400 one-unit chunks ran ~20% slower than as 200 of two; docs/cluster.md). The size
+// Smaller chunks cost more than they balance (each is a message, a block of the store, a text
+// with its own header: Table I as 400 one-unit chunks ran ~20% slower than as 200 of two, when
+// each was a file; docs/cluster.md). The size
 // follows from the config alone, so a resumed run or another rank count cuts the same chunks.
 constexpr int kChunksPerExperiment = 256;
 constexpr int kMaxChunkUnits = 64;

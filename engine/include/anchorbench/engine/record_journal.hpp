@@ -2,19 +2,19 @@
 // Where a study's finished units wait until its results are written, for studies whose units give
 // records rather than attempts (navigate): <out>.chunks/ beside the result folder, claimed like the
 // chunk store's (the same modes, the same refusals), holding `plan.csv` and one file,
-// `journal.csv`, appended to while it is open: each unit a block, a header line
-// `unit,<index>,<lines>,<checksum>` and its records' lines, written whole and flushed at once. A
-// kill -9 leaves at most the last block torn. A block whose lines or checksum (of the job's identity,
-// the unit and its text) do not read back (torn, edited, of another job) is computed again, never
-// trusted; on resume the journal is rewritten with the blocks that read back before more are added.
+// `journal.csv`, appended to while it is open like the chunk store's (block_log.hpp): each unit a
+// block `unit,<index>,<bytes>,<checksum>` and its records' lines. A kill -9 leaves at most the last
+// block torn. A block that does not read back whole or does not match its checksum (of the job's
+// identity, the unit and its text: torn, edited, of another job) is computed again, never trusted;
+// on resume the journal is rewritten with the blocks that read back before more are added.
 
 #include <filesystem>
-#include <fstream>
 #include <map>
 #include <mutex>
 #include <string>
 #include <vector>
 
+#include "anchorbench/engine/block_log.hpp"
 #include "anchorbench/engine/chunk_store.hpp"
 
 namespace anchorbench::engine {
@@ -45,7 +45,6 @@ class RecordJournal {
  private:
   void ReadBack(const std::filesystem::path& path);  // the blocks that read back, into finished_
   std::string Checksum(long long unit, const std::string& text) const;  // of the identity, the unit and its text
-  std::string Block(long long unit, const std::string& text) const;
 
   std::filesystem::path folder_;
   std::string identity_;
@@ -54,7 +53,7 @@ class RecordJournal {
   int unreadable_ = 0;
   std::string first_unreadable_;
   std::mutex mutex_;
-  std::ofstream file_;
+  BlockLog log_;
 };
 
 }  // namespace anchorbench::engine

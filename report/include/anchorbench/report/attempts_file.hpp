@@ -13,10 +13,11 @@
 namespace anchorbench::report {
 
 // Each attempt with what the summaries use (row, realization, method, initialized, t_init, error,
-// position NEES, the oracle's time and the latency, compute_s) and its line as written.
+// position NEES, the oracle's time and the latency, compute_s), and their lines as written (one
+// text, a line an attempt, each ending in a newline).
 struct AttemptsFile {
   std::vector<schema::Attempt> attempts;
-  std::vector<std::string> lines;
+  std::string lines;
 };
 
 // attempts.csv's text, named `source` in errors, with compute_s as a last column (a chunk:

@@ -2,6 +2,7 @@
 
 #include <ostream>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include <nlohmann/json.hpp>
@@ -25,8 +26,9 @@ void WriteAttempts(std::ostream& out, const std::vector<schema::Attempt>& attemp
                    const std::vector<schema::RowConfig>& rows);
 // One attempt's line of attempts.csv, without its line break.
 std::string AttemptLine(const schema::Attempt& attempt, const std::vector<schema::RowConfig>& rows);
-// The same file from lines written before (engine::ChunkResult's): the header, then the lines.
-void WriteAttemptLines(std::ostream& out, const std::vector<std::string>& lines);
+// The same file from lines written before (engine::ChunkResult's, each ending in a newline): the
+// header, then the lines.
+void WriteAttemptLines(std::ostream& out, std::string_view lines);
 
 // summary.csv: row,method,avg_m,med_m,init,gt1m,ratio_pct,avg_lo,avg_hi,ratio_lo,ratio_hi, the
 // position credibility, med_lo,med_hi, then the initialization times and, where rows carry the paper's values, those.
