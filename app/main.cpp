@@ -228,6 +228,9 @@ void AddMonteCarloCommands(CLI::App& cli, CommandLine& c) {
       ->required();
   AddMonteCarloOptions(c.explore_cmd, c.explore);
   c.explore_cmd->add_option("--set", c.explore.overrides, "Override a config value: KEY=VALUE, KEY a dotted path (repeatable)");
+  c.explore_cmd->add_flag("--resume", c.explore.resume,
+                          "Continue an interrupted run from <out>.chunks/ (its finished units are kept); the results "
+                          "are byte-identical to an uninterrupted run's");
 
   c.calibrate_cmd = cli.add_subcommand(
       "calibrate", "Fit scenario parameters so an experiment's table matches the published one (docs/calibration.md)");

@@ -2,6 +2,8 @@
 
 #include "anchorbench/config/load_config.hpp"
 #include "anchorbench/engine/exploration.hpp"
+#include "anchorbench/engine/plan.hpp"
+#include "anchorbench/engine/record_journal.hpp"
 #include "monte_carlo_command.hpp"
 
 namespace anchorbench::app {
@@ -16,16 +18,24 @@ int ExploreCommand(const ExploreArgs& args, const AppContext& app) {
                                config.exploration->policies.size();
   const std::unique_ptr<io::ResultFolder> out = OpenResultFolder(args, setup, 120 * lines + (1 << 16));
 
+  // Finished units wait in <out>.chunks/'s journal until the results are written: a killed run
+  // resumes from it (--resume).
+  const engine::Plan plan({config});
+  engine::RecordJournal journal(setup.out, plan.identity() + " explore",
+                                static_cast<long long>(schema::RowsOf(config).size()) * config.realizations,
+                                StoreMode(args), InputsOf(args));
   Progress progress("explore " + config.name, args.quiet);
   const std::vector<engine::ExplorationRecord> records = engine::RunExploration(
       config, app.components, setup.threads,
-      {[&](long long done, long long total) { progress.Update(done, total); }, app.stop});
+      {[&](long long done, long long total) { progress.Update(done, total); }, app.stop}, &journal);
+  NoteUnreadable(journal);
   const double wall_time_s = progress.elapsed_s();
   progress.Finish(static_cast<long long>(records.size() / config.exploration->policies.size()));
   const std::string markdown = engine::WriteExplorationFiles(
       [&](const std::string& name, const std::function<void(std::ostream&)>& write) { out->Write(name, write); },
       config, records, RunInfoOf(args, setup, app, config, wall_time_s, CommandLine("explore", args.overrides)));
   out->Commit();
+  journal.Remove();
   if (!args.quiet) std::cout << markdown;
   return 0;
 }

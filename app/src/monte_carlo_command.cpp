@@ -36,6 +36,12 @@ engine::ChunkStore::Mode StoreMode(const MonteCarloArgs& args) {
   return args.overwrite ? engine::ChunkStore::Mode::kOverwrite : engine::ChunkStore::Mode::kFresh;
 }
 
+void NoteUnreadable(const engine::RecordJournal& journal) {
+  if (journal.unreadable() == 0) return;
+  std::cerr << "anchorbench: note: " << journal.folder().string() << ": " << journal.unreadable()
+            << " unit(s) did not read back (first: " << journal.first_unreadable() << "); computed again\n";
+}
+
 std::optional<engine::Shard> ShardOf(const MonteCarloArgs& args) {
   if (args.shard.empty()) return std::nullopt;
   return engine::ParseShard(args.shard, "--shard");

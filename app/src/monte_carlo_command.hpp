@@ -12,6 +12,7 @@
 #include "anchorbench/report/run_outputs.hpp"
 #include "anchorbench/schema/experiment.hpp"
 #include "anchorbench/engine/chunk_store.hpp"
+#include "anchorbench/engine/record_journal.hpp"
 #include "anchorbench/engine/job.hpp"
 #include "anchorbench/engine/shard.hpp"
 #include "commands.hpp"
@@ -36,6 +37,8 @@ std::unique_ptr<io::ResultFolder> OpenResultFolder(const MonteCarloArgs& args, c
 
 // How the store beside the result folder is taken: --resume, --overwrite, or fresh.
 engine::ChunkStore::Mode StoreMode(const MonteCarloArgs& args);
+// A note on stderr (even with --quiet) when the journal held units that did not read back.
+void NoteUnreadable(const engine::RecordJournal& journal);
 
 // Which share of the plan --shard asks for (none: all of it).
 std::optional<engine::Shard> ShardOf(const MonteCarloArgs& args);

@@ -31,10 +31,7 @@ int NavigateCommand(const NavigateArgs& args, const AppContext& app) {
   Progress progress("navigate " + config.name, args.quiet);
   const std::vector<engine::NavigationRecord> records =
       engine::RunNavigation(config, app.components, setup.threads, units_of, {nullptr, app.stop}, &journal);
-  if (journal.unreadable() > 0) {
-    std::cerr << "anchorbench: note: " << journal.folder().string() << ": " << journal.unreadable()
-              << " unit(s) did not read back (first: " << journal.first_unreadable() << "); computed again\n";
-  }
+  NoteUnreadable(journal);
   const int units = static_cast<int>(records.size() / (config.estimator.triggers.size() + 2));
   const double wall_time_s = progress.elapsed_s();
   progress.Finish(units);

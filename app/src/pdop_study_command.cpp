@@ -25,7 +25,9 @@ int PdopStudyCommand(const PdopStudyArgs& args, const AppContext& app) {
       OpenResultFolder(args, setup, static_cast<std::uintmax_t>(anchors * 150.0 * 5000.0 / args.every) + (1 << 16));
 
   Progress progress("pdop-study " + config.name, args.quiet);
-  const schema::PdopStudy study = engine::RunPdopStudy(config, app.components, args.every, setup.threads, app.stop);
+  const schema::PdopStudy study = engine::RunPdopStudy(
+      config, app.components, args.every, setup.threads,
+      {[&](long long done, long long total) { progress.Update(done, total); }, app.stop});
   const double wall_time_s = progress.elapsed_s();
   progress.Finish(config.realizations);
 

@@ -61,34 +61,54 @@ kill_after 0.5 "$dir/shard0" "$bin" run "$table" --realizations 40 --shard 0/2 -
 cmp -s "$dir/whole/attempts.csv" "$dir/merged/attempts.csv" || fail "a resumed shard merged: attempts.csv differs"
 echo "ok: a killed shard resumed merges to the whole run's bytes"
 
-# navigate keeps its finished units in <out>.chunks/journal.csv: killed, resumed, the whole run's
-# bytes; a journal edited after the kill is not trusted (its unit computed again, with a note).
+# navigate and explore keep their finished units in <out>.chunks/journal.csv: killed, resumed, the
+# whole run's bytes; a journal edited after the kill is not trusted (its unit computed again, with
+# a note).
 journal_units() {
   local n
   n=$(grep -c '^unit,' "$1.chunks/journal.csv" 2>/dev/null)
   echo "${n:-0}"
 }
+# kill_at_units UNITS COMMAND CONFIG OUT ARGS...: the command (run whole first into OUT_whole) killed
+# with SIGKILL once its journal holds UNITS units, then refused without --resume.
+kill_at_units() {
+  local units="$1" command="$2" config="$3" out="$4" pid
+  shift 4
+  "$bin" "$command" "$config" --out "${out}_whole" --quiet --threads 2 "$@" || fail "$command"
+  "$bin" "$command" "$config" --out "$out" --quiet --threads 2 "$@" >/dev/null 2>&1 &
+  pid=$!
+  for _ in $(seq 1 100); do [ "$(journal_units "$out")" -ge "$units" ] && break; sleep 0.05; done
+  kill -9 "$pid" 2>/dev/null || fail "$command finished before the kill: make it longer"
+  wait "$pid" 2>/dev/null
+  [ -e "$out" ] && fail "killed $command left a result folder"
+  echo "ok: $command killed with $(journal_units "$out") units kept"
+  refused "an interrupted $command's journal without --resume" "of an interrupted run: --resume" \
+    "$out" "$bin" "$command" "$config" --out "$out" "$@"
+}
+# resumed_as_whole WHAT OUT FILE...: OUT's files are OUT_whole's, and its journal is gone.
+resumed_as_whole() {
+  local what="$1" out="$2" file
+  shift 2
+  for file in "$@"; do
+    cmp -s "${out}_whole/$file" "$out/$file" || fail "resumed $what: $file differs from the uninterrupted run's"
+  done
+  [ -e "$out.chunks" ] && fail "the journal outlived the finished $what"
+  echo "ok: a killed $what, resumed, writes the uninterrupted run's bytes"
+}
+
 nav="$configs/navigation_uav_hall.yaml"
-"$bin" navigate "$nav" --realizations 60 --out "$dir/nav_whole" --quiet --threads 2 || fail "navigate"
-"$bin" navigate "$nav" --realizations 60 --out "$dir/nav" --quiet --threads 2 >/dev/null 2>&1 &
-pid=$!
-for _ in $(seq 1 100); do [ "$(journal_units "$dir/nav")" -ge 3 ] && break; sleep 0.05; done
-kill -9 "$pid" 2>/dev/null || fail "navigate finished before the kill: make it longer"
-wait "$pid" 2>/dev/null
-[ -e "$dir/nav" ] && fail "killed navigate left a result folder"
-echo "ok: navigate killed with $(journal_units "$dir/nav") units kept"
-refused "an interrupted navigate's journal without --resume" "of an interrupted run: --resume" \
-  "$dir/nav" "$bin" navigate "$nav" --realizations 60 --out "$dir/nav"
+kill_at_units 3 navigate "$nav" "$dir/nav" --realizations 60
 # Edit the first unit's first value after its header: the unit's checksum no longer fits.
 sed -i '2s/^\([0-9]*\),\([0-9]*\),\([a-z_]*\),\([0-9]\)/\1,\2,\3,9\4/' "$dir/nav.chunks/journal.csv"
 "$bin" navigate "$nav" --realizations 60 --out "$dir/nav" --quiet --threads 1 --resume 2>"$dir/nav_note.txt" ||
   fail "resumed navigate"
 grep -q "did not read back" "$dir/nav_note.txt" || fail "an edited journal resumed without a note: $(cat "$dir/nav_note.txt")"
-for file in navigation.csv navigation_summary.csv navigation_error.csv navigation.md; do
-  cmp -s "$dir/nav_whole/$file" "$dir/nav/$file" || fail "resumed navigate: $file differs from the uninterrupted run's"
-done
-[ -e "$dir/nav.chunks" ] && fail "the journal outlived the finished navigate"
-echo "ok: a killed navigate, its journal edited, resumed writes the uninterrupted run's bytes"
+resumed_as_whole "navigate (its journal edited)" "$dir/nav" navigation.csv navigation_summary.csv navigation_error.csv navigation.md
+
+explore="$configs/exploration_uav_hall.yaml"
+kill_at_units 2 explore "$explore" "$dir/ex" --realizations 16
+"$bin" explore "$explore" --realizations 16 --out "$dir/ex" --quiet --threads 1 --resume || fail "resumed explore"
+resumed_as_whole explore "$dir/ex" exploration.csv exploration_summary.csv exploration.md
 
 [ "$failures" -eq 0 ] || { echo "$failures failure(s)"; exit 1; }
 echo "all resume cases passed"

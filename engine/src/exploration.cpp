@@ -8,8 +8,10 @@
 
 #include "anchorbench/engine/attempt.hpp"
 #include "anchorbench/engine/executor.hpp"
+#include "anchorbench/engine/exploration_lines.hpp"
 #include "anchorbench/engine/monte_carlo.hpp"
 #include "anchorbench/engine/navigation.hpp"
+#include "anchorbench/engine/unit_records.hpp"
 #include "anchorbench/estimator/front_end.hpp"
 #include "anchorbench/estimator/guide.hpp"
 #include "anchorbench/schema/input_error.hpp"
@@ -365,15 +367,22 @@ std::vector<ExplorationRecord> ExploreRealization(const schema::RowConfig& row, 
 
 std::vector<ExplorationRecord> RunExploration(const schema::ExperimentConfig& config,
                                               const registry::Components& components, int threads,
-                                              const RunControl& control) {
+                                              const RunControl& control, RecordJournal* journal) {
   CheckExploration(config, components);
   const std::vector<schema::RowConfig> rows = schema::RowsOf(config);
-  const std::function<std::vector<ExplorationRecord>(int)> unit = [&](int u) {
-    const int row = u / config.realizations;
-    return ExploreRealization(rows[static_cast<std::size_t>(row)], row, config.seed, u % config.realizations,
+  UnitRecords<ExplorationRecord> study;
+  study.units = static_cast<int>(rows.size()) * config.realizations;
+  study.compute = [&](int unit) {
+    const int row = unit / config.realizations;
+    return ExploreRealization(rows[static_cast<std::size_t>(row)], row, config.seed, unit % config.realizations,
                               *config.exploration, config.navigation, components);
   };
-  return ParallelRecords(static_cast<int>(rows.size()) * config.realizations, threads, unit, control);
+  study.text = ExplorationUnitText;
+  study.read = [&](const std::string& text, const std::string& source, int unit) {
+    return ReadExplorationUnit(text, source, unit / config.realizations, unit % config.realizations,
+                               config.exploration->policies);
+  };
+  return RunUnitRecords(study, threads, Shard{}, control, journal);
 }
 
 }  // namespace anchorbench::engine

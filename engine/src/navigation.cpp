@@ -5,6 +5,7 @@
 
 #include "anchorbench/engine/executor.hpp"
 #include "anchorbench/engine/navigation_lines.hpp"
+#include "anchorbench/engine/unit_records.hpp"
 #include "anchorbench/io/format.hpp"
 #include "anchorbench/report/navigation_report.hpp"
 #include "anchorbench/engine/monte_carlo.hpp"
@@ -116,57 +117,25 @@ void CheckErrorBins(double duration_s, const schema::NavigationConfig& navigatio
   }
 }
 
-namespace {
-
-// The journal's units that read back as this run's records; the others refused in it (computed again).
-std::map<int, std::vector<NavigationRecord>> Journaled(RecordJournal& journal, const schema::ExperimentConfig& config,
-                                                       const std::vector<schema::RowConfig>& rows, const Shard& shard) {
-  std::map<int, std::vector<NavigationRecord>> finished;
-  for (auto& [unit, text] : journal.TakeFinished()) {
-    if (!shard.Holds(static_cast<int>(unit))) {
-      journal.Refuse(unit, "not a unit of this shard");
-      continue;
-    }
-    const int row = static_cast<int>(unit / config.realizations), realization = static_cast<int>(unit % config.realizations);
-    try {
-      finished.emplace(static_cast<int>(unit),
-                       ReadNavigationUnit(text, journal.folder().string(), row, realization,
-                                          NavigationMethods(rows[static_cast<std::size_t>(row)])));
-    } catch (const schema::InputError& e) {
-      journal.Refuse(unit, e.what());
-    }
-  }
-  return finished;
-}
-
-}  // namespace
-
 std::vector<NavigationRecord> RunNavigation(const schema::ExperimentConfig& config,
                                             const registry::Components& components, int threads, const Shard& shard,
                                             const RunControl& control, RecordJournal* journal) {
   CheckNavigation(config, components);
   const std::vector<schema::RowConfig> rows = schema::RowsOf(config);
-  std::map<int, std::vector<NavigationRecord>> finished;
-  if (journal) finished = Journaled(*journal, config, rows, shard);
-  std::vector<int> units;  // the shard's (row, realization) units still to compute: row * realizations + realization
-  for (int u = 0; u < static_cast<int>(rows.size()) * config.realizations; ++u) {
-    if (shard.Holds(u) && finished.count(u) == 0) units.push_back(u);
-  }
-  std::vector<NavigationRecord> computed = NavigateUnits(static_cast<int>(units.size()), threads, [&](int i) {
-    const int unit = units[static_cast<std::size_t>(i)], row = unit / config.realizations;
-    std::vector<NavigationRecord> records = NavigateRealization(rows[static_cast<std::size_t>(row)], row, config.seed,
-                                                                unit % config.realizations, *config.navigation, components);
-    if (journal) journal->Append(unit, NavigationUnitText(records));
-    return records;
-  }, control);
-  if (finished.empty()) return computed;
-  // Joined in unit order: the journal's units and those computed now.
-  for (NavigationRecord& r : computed) finished[r.row * config.realizations + r.realization].push_back(std::move(r));
-  std::vector<NavigationRecord> records;
-  for (auto& [unit, of_unit] : finished) {
-    for (NavigationRecord& r : of_unit) records.push_back(std::move(r));
-  }
-  return records;
+  UnitRecords<NavigationRecord> study;
+  study.units = static_cast<int>(rows.size()) * config.realizations;
+  study.compute = [&](int unit) {
+    const int row = unit / config.realizations;
+    return NavigateRealization(rows[static_cast<std::size_t>(row)], row, config.seed, unit % config.realizations,
+                               *config.navigation, components);
+  };
+  study.text = NavigationUnitText;
+  study.read = [&](const std::string& text, const std::string& source, int unit) {
+    const int row = unit / config.realizations;
+    return ReadNavigationUnit(text, source, row, unit % config.realizations,
+                              NavigationMethods(rows[static_cast<std::size_t>(row)]));
+  };
+  return RunUnitRecords(study, threads, shard, control, journal);
 }
 
 std::vector<NavigationRecord> NavigateUnits(int units, int threads,

@@ -21,7 +21,9 @@ void CheckOutcome(const io::CsvReader& csv, const nav::NavigationOutcome& o) {
   }
 }
 
-std::string Bins(const std::vector<double>& bins) {  // ';'-separated, "nan" for a gap
+}  // namespace
+
+std::string BinsText(const std::vector<double>& bins) {
   std::string text;
   for (double e : bins) {
     if (!text.empty()) text += ';';
@@ -41,13 +43,15 @@ std::vector<double> ParseBins(const io::CsvReader& csv, int column) {
       value = std::numeric_limits<double>::quiet_NaN();
     } else if (const auto [ptr, ec] = std::from_chars(item.data(), item.data() + item.size(), value);
                ec != std::errc() || ptr != item.data() + item.size()) {
-      csv.Fail("column 'error_by_bin_m': '" + std::string(item) + "' is not a number");
+      csv.Fail("column '" + csv.header(column) + "': '" + std::string(item) + "' is not a number");
     }
     bins.push_back(value);
     start = end + 1;
   }
   return bins;
 }
+
+namespace {
 
 std::optional<double> OptionalNumber(const io::CsvReader& csv, int column) {
   if (csv.Empty(column)) return std::nullopt;
@@ -62,7 +66,7 @@ std::string NavigationRecordFields(const NavigationRecord& r) {
   fields << r.row << ',' << r.realization << ',' << r.method << ',' << io::FormatNumber(o.rmse_m) << ','
          << io::FormatNumber(o.final_error_m) << ',' << io::FormatOptional(o.t_first_anchor_s) << ','
          << io::FormatOptional(o.t_kth_anchor_s) << ',' << io::FormatNumber(o.fix_share) << ',' << o.ranges_used << ','
-         << o.ranges_gated << ',' << Bins(o.error_by_bin_m);
+         << o.ranges_gated << ',' << BinsText(o.error_by_bin_m);
   return fields.str();
 }
 

@@ -14,7 +14,7 @@
 #include "anchorbench/eval/true_geometry.hpp"
 #include "anchorbench/schema/input_error.hpp"
 #include "anchorbench/engine/attempt.hpp"
-#include "anchorbench/engine/executor.hpp"
+#include "anchorbench/engine/unit_records.hpp"
 #include "anchorbench/sim/scenario.hpp"
 
 namespace anchorbench::engine {
@@ -186,15 +186,14 @@ schema::PdopStudy StudyRealization(const schema::ExperimentConfig& config, const
 }  // namespace
 
 schema::PdopStudy RunPdopStudy(const schema::ExperimentConfig& config, const registry::Components& components, int every, int threads,
-                               const StopFlag* stop) {
+                               const RunControl& control) {
   std::string why;
   if (!components.filters.Knows(config.estimator.filter.kind, &why)) throw schema::InputError(why);
-  std::vector<schema::PdopStudy> per_realization(static_cast<std::size_t>(config.realizations));
-  ParallelFor(config.realizations, threads, [&](int r, int) {
-    per_realization[static_cast<std::size_t>(r)] = StudyRealization(config, components, r, every);
-  }, stop);
+  UnitRecords<schema::PdopStudy> units;  // a unit is a realization of the base scenario
+  units.units = config.realizations;
+  units.compute = [&](int r) { return std::vector<schema::PdopStudy>{StudyRealization(config, components, r, every)}; };
   schema::PdopStudy study;
-  for (schema::PdopStudy& r : per_realization) {
+  for (schema::PdopStudy& r : RunUnitRecords(units, threads, Shard{}, control, nullptr)) {
     study.checkpoints.insert(study.checkpoints.end(), r.checkpoints.begin(), r.checkpoints.end());
     study.certified.insert(study.certified.end(), r.certified.begin(), r.certified.end());
     study.stats.Add(r.stats);

@@ -7,7 +7,9 @@
 
 #include <gtest/gtest.h>
 
+#include "anchorbench/engine/exploration_lines.hpp"
 #include "anchorbench/schema/input_error.hpp"
+#include "anchorbench/testing/temp_dir.hpp"
 #include "anchorbench/testing/components.hpp"
 
 namespace anchorbench::engine {
@@ -154,6 +156,38 @@ TEST(Exploration, TheSummaryPairsEachPolicysTimeWithThePatternsOnTheSameRealizat
   // the pattern against itself.
   EXPECT_NE(summary.find("base,guided,4,3,35.0,16,0,0,0.600,"), std::string::npos) << summary;
   EXPECT_NE(summary.find("base,pattern,4,3,90.0,16,0,0,,"), std::string::npos) << summary;
+}
+
+// A killed run's journal: its units read back as they were computed (navigation bins included), a
+// unit edited so that its checksum fits but its counts are impossible is computed again, and the
+// whole comes out as the uninterrupted run's records.
+TEST(Exploration, AResumedRunTakesItsJournalsUnitsAndRecomputesTheRest) {
+  const testing::TempDir dir("exploration_journal");
+  schema::ExperimentConfig config = FlatSurvey();
+  config.navigation.emplace();
+  const std::vector<ExplorationRecord> whole = RunExploration(config, AllComponents(), 2);
+  const std::size_t policies = config.exploration->policies.size();
+  const auto unit_records = [&](std::size_t unit) {
+    return std::vector<ExplorationRecord>(whole.begin() + static_cast<long>(unit * policies),
+                                          whole.begin() + static_cast<long>((unit + 1) * policies));
+  };
+  const std::string text = ExplorationUnitText(unit_records(0));
+  const std::vector<ExplorationRecord> read = ReadExplorationUnit(text, "journal", 0, 0, config.exploration->policies);
+  EXPECT_EQ(ExplorationUnitText(read), text);  // round-trip precision
+  EXPECT_THROW(ReadExplorationUnit(text, "journal", 0, 1, config.exploration->policies), schema::InputError);
+  const long long units = static_cast<long long>(whole.size() / policies);
+  {
+    RecordJournal killed(dir.path() / "out", "explore", units, ChunkStore::Mode::kFresh);
+    killed.Append(0, text);
+    std::vector<ExplorationRecord> forged = unit_records(1);
+    forged[0].certified = forged[0].anchors + 1;  // no run writes it; the block's checksum is made to fit
+    killed.Append(1, ExplorationUnitText(forged));
+  }
+  RecordJournal journal(dir.path() / "out", "explore", units, ChunkStore::Mode::kResume);
+  const std::vector<ExplorationRecord> resumed = RunExploration(config, AllComponents(), 2, {}, &journal);
+  EXPECT_EQ(journal.unreadable(), 1);
+  EXPECT_NE(journal.first_unreadable().find("more certified than anchors"), std::string::npos) << journal.first_unreadable();
+  EXPECT_EQ(ExplorationUnitText(resumed), ExplorationUnitText(whole));
 }
 
 TEST(Exploration, AConfigWithoutAnExplorationSectionIsRefused) {

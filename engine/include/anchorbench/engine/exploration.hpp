@@ -15,6 +15,7 @@
 #include <vector>
 
 #include "anchorbench/engine/commit.hpp"
+#include "anchorbench/engine/record_journal.hpp"
 #include "anchorbench/engine/run_control.hpp"
 #include "anchorbench/registry/components.hpp"
 #include "anchorbench/schema/experiment.hpp"
@@ -52,10 +53,12 @@ std::vector<ExplorationRecord> ExploreRealization(const schema::RowConfig& row, 
                                                   const registry::Components& components);
 
 // Every row and realization on `threads` threads, ordered by row, realization, policy: the same
-// for any thread count. Checks the config first (CheckExploration).
+// for any thread count. Checks the config first (CheckExploration). With a journal, its units that
+// read back are taken as they are, and each unit computed is appended to it as it finishes
+// (unit_records.hpp): a killed run resumes with the same bytes.
 std::vector<ExplorationRecord> RunExploration(const schema::ExperimentConfig& config,
                                               const registry::Components& components, int threads,
-                                              const RunControl& control = {});
+                                              const RunControl& control = {}, RecordJournal* journal = nullptr);
 
 // exploration.csv (one line per run), exploration_summary.csv and exploration.md (per row and
 // policy), with a navigation section navigation_error.csv (the navigation study's format, a policy

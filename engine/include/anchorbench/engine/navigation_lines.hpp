@@ -16,6 +16,11 @@ inline constexpr const char* kNavigationRecordColumns =
     "row,realization,method,rmse_m,final_error_m,t_first_anchor_s,t_kth_anchor_s,fix_share,ranges_used,ranges_gated,"
     "error_by_bin_m";
 
+// Binned errors as one field: ';'-separated at round-trip precision, "nan" for a bin without a
+// sample; and back from `column` of the reader's line (its error names the line).
+std::string BinsText(const std::vector<double>& bins);
+std::vector<double> ParseBins(const io::CsvReader& csv, int column);
+
 // One record's fields, without a line end.
 std::string NavigationRecordFields(const NavigationRecord& record);
 

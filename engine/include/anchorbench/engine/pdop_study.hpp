@@ -16,9 +16,10 @@ namespace anchorbench::engine {
 // anchor's chain is the configured filter and a probe in the trigger's place, which sees every
 // accepted sample and takes one checkpoint every `every` of them; a second chain, the configured
 // estimator with the certified trigger, runs beside it. Both chains are built by
-// registry::MakeInitializer (the probe through a TriggerMaker), parallel over realizations by
-// ParallelFor, identical for any thread count.
+// registry::MakeInitializer (the probe through a TriggerMaker), parallel over realizations as a
+// study of units (unit_records.hpp), identical for any thread count; `control` sees every
+// realization done.
 schema::PdopStudy RunPdopStudy(const schema::ExperimentConfig& config, const registry::Components& components, int every, int threads,
-                               const StopFlag* stop = nullptr);
+                               const RunControl& control = {});
 
 }  // namespace anchorbench::engine
