@@ -2,10 +2,10 @@
 #include <iostream>
 #include <sstream>
 
-#include "anchorbench/engine/calibration_report.hpp"
-#include "anchorbench/engine/calibration_runs.hpp"
-#include "anchorbench/engine/evaluation_log.hpp"
-#include "anchorbench/engine/fit.hpp"
+#include "anchorbench/studies/calibration_report.hpp"
+#include "anchorbench/studies/calibration_runs.hpp"
+#include "anchorbench/studies/evaluation_log.hpp"
+#include "anchorbench/studies/fit.hpp"
 #include "anchorbench/config/load_calibration.hpp"
 #include "anchorbench/config/load_config.hpp"
 #include "anchorbench/io/atomic_file.hpp"
@@ -19,18 +19,18 @@ namespace anchorbench::app {
 namespace {
 
 namespace fs = std::filesystem;
-using engine::Fit;
+using studies::Fit;
 using schema::InputError;
 using report::PaperCell;
 
 // The evaluation log, seeded with what --reuse and a killed run's running log already hold.
-engine::EvaluationLog OpenLog(const CalibrateArgs& args, const schema::CalibrationSpec& spec,
-                              const engine::CalibrationRuns& runs, const std::vector<PaperCell>& targets,
+studies::EvaluationLog OpenLog(const CalibrateArgs& args, const schema::CalibrationSpec& spec,
+                              const studies::CalibrationRuns& runs, const std::vector<PaperCell>& targets,
                               const std::vector<std::string>& row_names, const fs::path& running_log) {
   std::vector<std::string> keys, cell_names;
   for (const schema::FreeParameter& parameter : spec.parameters) keys.push_back(parameter.key);
-  for (const PaperCell& cell : targets) cell_names.push_back(engine::CellName(cell, row_names));
-  engine::EvaluationLog log(keys, cell_names, runs.Context());
+  for (const PaperCell& cell : targets) cell_names.push_back(studies::CellName(cell, row_names));
+  studies::EvaluationLog log(keys, cell_names, runs.Context());
   for (const fs::path& source : {fs::path(args.reuse), running_log}) {
     if (source.empty() || !fs::exists(source)) continue;
     int reused = 0;
@@ -81,7 +81,7 @@ int CalibrateCommand(const CalibrateArgs& args, const AppContext& app) {
   const schema::CalibrationSpec spec = config::LoadCalibrationSpec(args.config);
   const std::string name = fs::path(args.config).stem().string();
   const MonteCarloSetup setup = SetUpMonteCarlo(args, name);
-  const engine::CalibrationRuns runs(spec, app.components, app.executor, setup.threads);
+  const studies::CalibrationRuns runs(spec, app.components, app.executor, setup.threads);
   const schema::ExperimentConfig& experiment = runs.experiment();
   const std::vector<schema::RowConfig> rows = schema::RowsOf(experiment);
   const std::vector<PaperCell> targets = report::PaperTargets(rows);
@@ -107,31 +107,31 @@ int CalibrateCommand(const CalibrateArgs& args, const AppContext& app) {
     throw InputError(running_log.string() + ": is a folder (or not a regular file), not the evaluation log of a " +
                      "killed calibration; move it away");
   }
-  engine::EvaluationLog log = OpenLog(args, spec, runs, targets, row_names, running_log);
+  studies::EvaluationLog log = OpenLog(args, spec, runs, targets, row_names, running_log);
 
   // The search, then the verification of its best point.
   Progress progress("calibrate " + name, args.quiet, "evaluations");
   Fit fit(spec, targets, runs.hand_values(), runs.FitEvaluator(), &log,
           [&](int done, int total) { progress.Update(done, total); });
-  const engine::FitResult result = fit.Run();
+  const studies::FitResult result = fit.Run();
   progress.Finish(static_cast<int>(log.evaluations().size()));
   std::vector<std::string> best;
   for (std::size_t p = 0; p < spec.parameters.size(); ++p) {
     best.push_back(spec.parameters[p].key + "=" + log.evaluations()[result.best].values[p]);
   }
   Progress verifying("verify " + name, args.quiet, "seeds");
-  const engine::CalibrationOutcome outcome{spec,   row_names, experiment.realizations, fit,
+  const studies::CalibrationOutcome outcome{spec,   row_names, experiment.realizations, fit,
                                               result, log,
                                            runs.Verify(best, [&](int done, int total) { verifying.Update(done, total); })};
   const double wall_time_s = progress.elapsed_s();  // the search and the verification
   verifying.Finish(static_cast<int>(spec.verify_seeds.size()));
 
   // The folder, then the calibrated config; the running log goes once both are in place.
-  out.Write("evaluations.csv", [&](std::ostream& file) { engine::WriteEvaluationsCsv(file, log); });
-  out.Write("verification.csv", [&](std::ostream& file) { engine::WriteVerificationCsv(file, outcome); });
-  out.Write("profile.csv", [&](std::ostream& file) { engine::WriteProfileCsv(file, outcome); });
+  out.Write("evaluations.csv", [&](std::ostream& file) { studies::WriteEvaluationsCsv(file, log); });
+  out.Write("verification.csv", [&](std::ostream& file) { studies::WriteVerificationCsv(file, outcome); });
+  out.Write("profile.csv", [&](std::ostream& file) { studies::WriteProfileCsv(file, outcome); });
   std::ostringstream markdown;
-  engine::WriteCalibrationMarkdown(markdown, outcome);
+  studies::WriteCalibrationMarkdown(markdown, outcome);
   out.Write("calibration.md", markdown.str());
   const schema::ExperimentConfig calibrated_experiment = runs.Experiment(best);
   std::vector<std::string> command_line{"calibrate " + args.config};
@@ -139,7 +139,7 @@ int CalibrateCommand(const CalibrateArgs& args, const AppContext& app) {
   out.Write("manifest.json", report::ManifestJson(calibrated_experiment,
                                                    RunInfoOf(args, setup, app, calibrated_experiment, wall_time_s,
                                                              command_line)));
-  calibrated.stream() << engine::CalibratedConfigYaml(outcome, experiment_path.filename().string());
+  calibrated.stream() << studies::CalibratedConfigYaml(outcome, experiment_path.filename().string());
   out.Commit();
   calibrated.Commit();
   fs::remove(running_log);

@@ -41,7 +41,7 @@ struct ReplayArgs {
   std::string repeated_poses = "error", out_of_order = "sort";
   bool overwrite = false;
   bool quiet = false;
-  bool navigate = false;  // the navigation filter on the log too (engine/navigation_log.hpp)
+  bool navigate = false;  // the navigation filter on the log too (studies/navigation_log.hpp)
 };
 int ReplayCommand(const ReplayArgs& args, const AppContext& app);
 

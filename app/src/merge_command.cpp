@@ -7,7 +7,7 @@
 #include "anchorbench/schema/input_error.hpp"
 #include "anchorbench/io/result_folder.hpp"
 #include "anchorbench/engine/commit.hpp"
-#include "anchorbench/engine/navigation_shard.hpp"
+#include "anchorbench/studies/navigation_shard.hpp"
 #include "anchorbench/engine/shard_folder.hpp"
 #include "monte_carlo_command.hpp"
 
@@ -98,17 +98,17 @@ report::RunInfo MergedInfo(const MergeArgs& args, const engine::ShardInfo& first
   return info;
 }
 
-// A navigation study's shards (engine/navigation_shard.hpp) into its tables.
+// A navigation study's shards (studies/navigation_shard.hpp) into its tables.
 int MergeNavigation(const MergeArgs& args, const std::vector<engine::ShardInfo>& infos,
                     const engine::ShardInputs& inputs, const engine::Plan& plan, const AppContext& app,
                     io::ResultFolder& out) {
   schema::ExperimentConfig config = plan.experiments().front();
   config.name = infos.front().name;
-  const std::vector<engine::NavigationRecord> records =
-      engine::ReadNavigationShards({args.shards.begin(), args.shards.end()}, infos, config);
+  const std::vector<studies::NavigationRecord> records =
+      studies::ReadNavigationShards({args.shards.begin(), args.shards.end()}, infos, config);
   report::RunInfo info = MergedInfo(args, infos.front(), inputs, app);
   info.command_line.insert(info.command_line.begin(), "navigate");
-  const std::string markdown = engine::WriteNavigationFiles(
+  const std::string markdown = studies::WriteNavigationFiles(
       [&](const std::string& name, const std::function<void(std::ostream&)>& write) { out.Write(name, write); }, config,
       records, info);
   out.Commit();

@@ -6,7 +6,7 @@
 #include "anchorbench/io/format.hpp"
 #include "anchorbench/schema/input_error.hpp"
 #include "anchorbench/report/pdop_study_report.hpp"
-#include "anchorbench/engine/pdop_study.hpp"
+#include "anchorbench/studies/pdop_study.hpp"
 #include "monte_carlo_command.hpp"
 
 namespace anchorbench::app {
@@ -25,7 +25,7 @@ int PdopStudyCommand(const PdopStudyArgs& args, const AppContext& app) {
       OpenResultFolder(args, setup, static_cast<std::uintmax_t>(anchors * 150.0 * 5000.0 / args.every) + (1 << 16));
 
   Progress progress("pdop-study " + config.name, args.quiet);
-  const schema::PdopStudy study = engine::RunPdopStudy(
+  const schema::PdopStudy study = studies::RunPdopStudy(
       config, app.components, args.every, setup.threads,
       {[&](long long done, long long total) { progress.Update(done, total); }, app.stop});
   const double wall_time_s = progress.elapsed_s();

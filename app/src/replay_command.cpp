@@ -11,8 +11,8 @@
 #include "anchorbench/report/replay_report.hpp"
 #include "anchorbench/report/why_not.hpp"
 #include "anchorbench/engine/monte_carlo.hpp"
-#include "anchorbench/engine/navigation_log.hpp"
-#include "anchorbench/engine/replay_log.hpp"
+#include "anchorbench/studies/navigation_log.hpp"
+#include "anchorbench/studies/replay_log.hpp"
 #include "commands.hpp"
 #include "progress.hpp"
 
@@ -59,18 +59,18 @@ int ReplayCommand(const ReplayArgs& args, const AppContext& app) {
   if (!args.config.empty()) config = config::LoadConfig(args.config, {}, app.components);
   if (args.navigate) {
     if (args.out.empty()) throw schema::InputError("--navigate: writes its tables into --out, which is not given");
-    engine::CheckLogNavigation(config);
+    studies::CheckLogNavigation(config);
   }
   std::optional<std::map<int, schema::AnchorTruth>> truth;
   if (!args.anchors.empty()) truth = io::LoadAnchors(args.anchors);
   // The first pass: every file read to the end under the policy, so that a malformed file or a
   // refused row ends the command before any output exists.
   Progress checking("replay: checking", args.quiet, "MB", kBytesPerMb);
-  const engine::ReplayLog replay({args.poses, args.ranges}, PolicyOf(args), std::move(truth), config, app.components,
+  const studies::ReplayLog replay({args.poses, args.ranges}, PolicyOf(args), std::move(truth), config, app.components,
                                  [&](std::uint64_t done, std::uint64_t total) { checking.Update(done, total); });
   if (!args.quiet && checking.elapsed_s() > 1.0) checking.Finish(static_cast<long long>(replay.survey().bytes));
   if (args.navigate) {
-    engine::CheckErrorBins(replay.survey().t_last_pose_s - replay.survey().t_first_pose_s, *config.navigation,
+    studies::CheckErrorBins(replay.survey().t_last_pose_s - replay.survey().t_first_pose_s, *config.navigation,
                            args.poses);
   }
 
@@ -95,13 +95,13 @@ int ReplayCommand(const ReplayArgs& args, const AppContext& app) {
                 kBytesPerTraceRow * static_cast<std::uintmax_t>(replay.survey().range_rows), report::kTraceHeader);
   const std::unique_ptr<io::AtomicFile> certificate_file = OpenTrace(
       "--certificate-trace", args.certificate_trace, args, out.get(), kBytesOfJudgements, report::kJudgementColumns);
-  engine::TraceSink trace;
+  studies::TraceSink trace;
   if (trace_file) {
     trace = [&](const io::RangeRecord& r, const estimator::FeedResult& fed) {
       report::WriteTraceRow(trace_file->stream(), r, fed);
     };
   }
-  engine::JudgementSink judged;
+  studies::JudgementSink judged;
   if (certificate_file) {
     judged = [&](int anchor_id, std::size_t trigger, const estimator::Judgement& judgement) {
       report::WriteJudgementRow(certificate_file->stream(), anchor_id, config.estimator.triggers[trigger], judgement);
@@ -110,7 +110,7 @@ int ReplayCommand(const ReplayArgs& args, const AppContext& app) {
 
   // The second pass, streamed: one row at a time from the files into the front end.
   Progress progress("replay", args.quiet, "MB", kBytesPerMb);
-  const engine::ReplayOutcome outcome = replay.Run(trace, [&](std::uint64_t done, std::uint64_t total) {
+  const studies::ReplayOutcome outcome = replay.Run(trace, [&](std::uint64_t done, std::uint64_t total) {
     engine::ThrowIfStopped(app.stop);  // every 65,536 rows
     progress.Update(static_cast<long long>(done), static_cast<long long>(total));
   }, judged);
@@ -124,8 +124,8 @@ int ReplayCommand(const ReplayArgs& args, const AppContext& app) {
     const engine::FileWriter write = [&](const std::string& name, const std::function<void(std::ostream&)>& file) {
       out->Write(name, file);
     };
-    engine::WriteReplayFiles(write, outcome);
-    if (args.navigate) engine::WriteLogNavigation(write, replay, outcome, config, engine::ResolveThreads(0));
+    studies::WriteReplayFiles(write, outcome);
+    if (args.navigate) studies::WriteLogNavigation(write, replay, outcome, config, engine::ResolveThreads(0));
     out->Commit();
   }
   return 0;

@@ -10,10 +10,10 @@
 #include "anchorbench/config/load_config.hpp"
 #include "anchorbench/engine/commit.hpp"
 #include "anchorbench/engine/monte_carlo.hpp"
-#include "anchorbench/engine/navigation.hpp"
-#include "anchorbench/engine/navigation_log.hpp"
+#include "anchorbench/studies/navigation.hpp"
+#include "anchorbench/studies/navigation_log.hpp"
 #include "anchorbench/engine/plan.hpp"
-#include "anchorbench/engine/replay_log.hpp"
+#include "anchorbench/studies/replay_log.hpp"
 #include "anchorbench/engine/run_plan.hpp"
 #include "anchorbench/io/log_policy.hpp"
 #include "anchorbench/io/recorded_data.hpp"
@@ -139,15 +139,15 @@ Files Sweep(const ConfigHandle& config, const std::vector<std::string>& axes_tex
 }
 
 Files Navigate(const ConfigHandle& config, int threads, const py::object& progress) {
-  engine::CheckNavigation(config.experiment, ModuleComponents());
+  studies::CheckNavigation(config.experiment, ModuleComponents());
   const int resolved = engine::ResolveThreads(threads);
-  const std::vector<engine::NavigationRecord> records = Interruptible<std::vector<engine::NavigationRecord>>(
+  const std::vector<studies::NavigationRecord> records = Interruptible<std::vector<studies::NavigationRecord>>(
       [&](const engine::RunControl& control) {
-        return engine::RunNavigation(config.experiment, ModuleComponents(), resolved, {}, control);
+        return studies::RunNavigation(config.experiment, ModuleComponents(), resolved, {}, control);
       },
       progress);
   Files files{{}, {config.files.begin(), config.files.end()}, {}};
-  engine::WriteNavigationFiles(files.Writer(), config.experiment, records, InfoOf(config, resolved, {"navigate"}));
+  studies::WriteNavigationFiles(files.Writer(), config.experiment, records, InfoOf(config, resolved, {"navigate"}));
   return files;
 }
 
@@ -163,7 +163,7 @@ struct ReplayRequest {
 Files Replay(const std::string& poses, const std::vector<std::string>& ranges, const std::string& anchors,
              const ConfigHandle* config, ReplayRequest request) {
   const schema::ExperimentConfig experiment = config ? config->experiment : schema::ExperimentConfig{};
-  if (request.navigate) engine::CheckLogNavigation(experiment);
+  if (request.navigate) studies::CheckLogNavigation(experiment);
   request.policy.repeated_poses = io::RepeatedPosesFromName(request.repeated_poses);
   request.policy.out_of_order = io::OutOfOrderFromName(request.out_of_order);
   std::optional<std::map<int, schema::AnchorTruth>> truth;
@@ -174,26 +174,26 @@ Files Replay(const std::string& poses, const std::vector<std::string>& ranges, c
   if (!anchors.empty()) files.inputs.emplace_back(anchors);
   if (config) files.inputs.insert(files.inputs.end(), config->files.begin(), config->files.end());
   py::gil_scoped_release release;
-  const engine::ReplayLog replay({poses, ranges}, request.policy, std::move(truth), experiment, ModuleComponents());
+  const studies::ReplayLog replay({poses, ranges}, request.policy, std::move(truth), experiment, ModuleComponents());
   if (request.navigate) {
-    engine::CheckErrorBins(replay.survey().t_last_pose_s - replay.survey().t_first_pose_s, *experiment.navigation, poses);
+    studies::CheckErrorBins(replay.survey().t_last_pose_s - replay.survey().t_first_pose_s, *experiment.navigation, poses);
   }
   std::ostringstream trace_text, certificate_text;
-  engine::TraceSink trace;
+  studies::TraceSink trace;
   if (request.trace) {
     trace_text << report::kTraceHeader << '\n';
     trace = [&](const io::RangeRecord& r, const estimator::FeedResult& fed) { report::WriteTraceRow(trace_text, r, fed); };
   }
-  engine::JudgementSink judged;
+  studies::JudgementSink judged;
   if (request.certificate_trace) {
     certificate_text << report::kJudgementColumns << '\n';
     judged = [&](int anchor_id, std::size_t trigger, const estimator::Judgement& judgement) {
       report::WriteJudgementRow(certificate_text, anchor_id, experiment.estimator.triggers[trigger], judgement);
     };
   }
-  const engine::ReplayOutcome outcome = replay.Run(trace, {}, judged);
-  engine::WriteReplayFiles(files.Writer(), outcome);  // into C++ strings: no Python object touched
-  if (request.navigate) engine::WriteLogNavigation(files.Writer(), replay, outcome, experiment, engine::ResolveThreads(0));
+  const studies::ReplayOutcome outcome = replay.Run(trace, {}, judged);
+  studies::WriteReplayFiles(files.Writer(), outcome);  // into C++ strings: no Python object touched
+  if (request.navigate) studies::WriteLogNavigation(files.Writer(), replay, outcome, experiment, engine::ResolveThreads(0));
   if (request.trace) files.texts.emplace_back("trace.csv", trace_text.str());
   if (request.certificate_trace) files.texts.emplace_back("certificate_trace.csv", certificate_text.str());
   std::ostringstream notes;

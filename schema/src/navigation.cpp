@@ -10,7 +10,7 @@ bool NavigationConfig::IsValid(std::string* why) const {
     return false;
   };
   // Drifts far beyond any odometry's (a filter's squared errors stay finite), and time bins of at
-  // least 10 ms (the realization's bins are bounded in engine::CheckNavigation too).
+  // least 10 ms (the realization's bins are bounded in studies::CheckNavigation too).
   auto within = [](double v, double limit) { return v >= 0.0 && v <= limit; };
   if (!within(sigma_bias_mps_per_sqrt_s, 10.0)) return fail("sigma_bias_mps_per_sqrt_s must be in [0, 10]");
   if (!within(sigma_heading_rad_per_sqrt_s, 1.0)) return fail("sigma_heading_rad_per_sqrt_s must be in [0, 1]");

@@ -56,7 +56,7 @@ struct NavigationOutcome {
   std::vector<double> error_by_bin_m;
 };
 
-// One method's run in one realization of an experiment's row (engine::RunNavigation).
+// One method's run in one realization of an experiment's row (studies::RunNavigation).
 struct NavigationRecord {
   int row = 0;
   int realization = 0;

@@ -1,7 +1,7 @@
 #pragma once
 // The closed-loop exploration study's settings (the config's `exploration` section; anchorbench
 // explore, docs/guidance.md): how the robot moves, when it asks guidance, and which policies run.
-// Plain data; engine/exploration.hpp runs them.
+// Plain data; studies/exploration.hpp runs them.
 
 #include <string>
 #include <vector>

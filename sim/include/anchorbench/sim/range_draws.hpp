@@ -1,6 +1,6 @@
 #pragma once
 // A realization's draws one epoch at a time: what GenerateScenario draws for a whole trajectory,
-// and what a closed-loop run (engine/exploration.hpp) draws for positions it chooses as it goes.
+// and what a closed-loop run (studies/exploration.hpp) draws for positions it chooses as it goes.
 
 #include <cstddef>
 #include <cstdint>
