@@ -33,7 +33,7 @@ from . import plot  # noqa: F401  (ab.plot.anchors, ab.plot.errors_over_time; ma
 
 __all__ = [
     "Config", "Event", "FrontEnd", "InputError", "Result", "SolveResult", "closest_point_pdop", "geometry_pdop",
-    "load_config", "navigate", "part_options", "parts", "register_solver", "register_trigger", "plot", "replay", "ReplayWarning", "FrontEndWarning", "run",
+    "explore", "load_config", "navigate", "part_options", "pdop_study", "parts", "register_solver", "register_trigger", "plot", "replay", "ReplayWarning", "FrontEndWarning", "run",
     "simulate", "solve", "sweep",
 ]
 
@@ -345,6 +345,30 @@ def navigate(config: ConfigLike, *, overrides: Iterable[str] = (), seed: Optiona
     config = _with(config, overrides, seed, realizations)
     with _Progress(progress, f"navigate {config.name}") as callback:
         return Result(_anchorbench._navigate(config, _threads(threads), callback))
+
+
+def explore(config: ConfigLike, *, overrides: Iterable[str] = (), seed: Optional[int] = None,
+            realizations: Optional[int] = None, threads: int = 0, progress: ProgressLike = None) -> Result:
+    """``anchorbench explore`` (docs/guidance.md): the closed loop, every policy of the config's
+    'exploration' section on the same realizations; exploration and exploration_summary as DataFrames.
+    ``progress`` and Ctrl-C as in run()."""
+    config = _with(config, overrides, seed, realizations)
+    with _Progress(progress, f"explore {config.name}") as callback:
+        return Result(_anchorbench._explore(config, _threads(threads), callback))
+
+
+def pdop_study(config: ConfigLike, *, every: int = 10, bin_s: float = 10.0, overrides: Iterable[str] = (),
+               seed: Optional[int] = None, realizations: Optional[int] = None, threads: int = 0,
+               progress: ProgressLike = None) -> Result:
+    """``anchorbench pdop-study`` (docs/pdop_studies.md): every PDOP of the base scenario's runs, a
+    checkpoint every ``every`` accepted samples (pdop_trace as a DataFrame), summarized in ``bin_s``
+    bins (pdop_study.md). ``progress`` and Ctrl-C as in run()."""
+    config = _with(config, overrides, seed, realizations)
+    with _Progress(progress, f"pdop-study {config.name}") as callback:
+        try:
+            return Result(_anchorbench._pdop_study(config, int(every), float(bin_s), _threads(threads), callback))
+        except InputError as error:  # the command line's words, as this function's arguments
+            raise InputError(str(error).replace("--every", "every").replace("--bin-s", "bin_s")) from None
 
 
 LogLike = Union[str, os.PathLike, Mapping, "pandas.DataFrame"]

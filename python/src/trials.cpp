@@ -1,4 +1,4 @@
-// The trials from Python: configs, run, sweep, navigate, replay and simulate, each returning the files the
+// The trials from Python: configs, run, sweep, navigate, explore, pdop_study, replay and simulate, each returning the files the
 // command line writes (the same bytes), which the package reads into DataFrames and can save.
 #include <filesystem>
 #include <map>
@@ -10,11 +10,9 @@
 #include "anchorbench/config/load_config.hpp"
 #include "anchorbench/engine/commit.hpp"
 #include "anchorbench/engine/monte_carlo.hpp"
-#include "anchorbench/studies/navigation.hpp"
-#include "anchorbench/studies/navigation_log.hpp"
 #include "anchorbench/engine/plan.hpp"
-#include "anchorbench/studies/replay_log.hpp"
 #include "anchorbench/engine/run_plan.hpp"
+#include "anchorbench/io/format.hpp"
 #include "anchorbench/io/log_policy.hpp"
 #include "anchorbench/io/recorded_data.hpp"
 #include "anchorbench/io/result_folder.hpp"
@@ -25,6 +23,11 @@
 #include "anchorbench/schema/input_error.hpp"
 #include "anchorbench/schema/sweep.hpp"
 #include "anchorbench/sim/scenario.hpp"
+#include "anchorbench/studies/exploration.hpp"
+#include "anchorbench/studies/navigation.hpp"
+#include "anchorbench/studies/navigation_log.hpp"
+#include "anchorbench/studies/pdop_study.hpp"
+#include "anchorbench/studies/replay_log.hpp"
 #include "config_handle.hpp"
 #include "interruptible.hpp"
 #include "module_parts.hpp"
@@ -151,6 +154,34 @@ Files Navigate(const ConfigHandle& config, int threads, const py::object& progre
   return files;
 }
 
+Files Explore(const ConfigHandle& config, int threads, const py::object& progress) {
+  studies::CheckExploration(config.experiment, ModuleComponents());
+  const int resolved = engine::ResolveThreads(threads);
+  const std::vector<studies::ExplorationRecord> records = Interruptible<std::vector<studies::ExplorationRecord>>(
+      [&](const engine::RunControl& control) {
+        return studies::RunExploration(config.experiment, ModuleComponents(), resolved, control);
+      },
+      progress);
+  Files files{{}, {config.files.begin(), config.files.end()}, {}};
+  studies::WriteExplorationFiles(files.Writer(), config.experiment, records, InfoOf(config, resolved, {"explore"}));
+  return files;
+}
+
+Files PdopStudy(const ConfigHandle& config, int every, double bin_s, int threads, const py::object& progress) {
+  studies::CheckPdopStudy(config.experiment, every, bin_s, config.source);
+  const int resolved = engine::ResolveThreads(threads);
+  const schema::PdopStudy study = Interruptible<schema::PdopStudy>(
+      [&](const engine::RunControl& control) {
+        return studies::RunPdopStudy(config.experiment, ModuleComponents(), every, resolved, control);
+      },
+      progress);
+  Files files{{}, {config.files.begin(), config.files.end()}, {}};
+  studies::WritePdopStudyFiles(files.Writer(), config.experiment, study, every, bin_s,
+                               InfoOf(config, resolved, {"pdop-study", "--every " + std::to_string(every),
+                                                         "--bin-s " + io::FormatNumber(bin_s)}));
+  return files;
+}
+
 // What replay reads besides the files: the CLI's options (replay --help), and which traces to keep.
 struct ReplayRequest {
   io::LogPolicy policy;
@@ -247,6 +278,9 @@ void BindTrials(py::module_& m) {
   m.def("_run", &Run, py::arg("config"), py::arg("threads"), py::arg("progress"));
   m.def("_sweep", &Sweep, py::arg("config"), py::arg("axes"), py::arg("threads"), py::arg("progress"));
   m.def("_navigate", &Navigate, py::arg("config"), py::arg("threads"), py::arg("progress"));
+  m.def("_explore", &Explore, py::arg("config"), py::arg("threads"), py::arg("progress"));
+  m.def("_pdop_study", &PdopStudy, py::arg("config"), py::arg("every"), py::arg("bin_s"), py::arg("threads"),
+        py::arg("progress"));
   m.def(
       "_replay",
       [](const std::string& poses, const std::vector<std::string>& ranges, const std::string& anchors,

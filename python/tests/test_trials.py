@@ -1,10 +1,13 @@
-"""run, sweep, navigate, replay and simulate from Python: the command line's records as DataFrames, the same bytes when saved."""
+"""run, sweep, navigate, explore, pdop_study, replay and simulate from Python: the command line's records as DataFrames, the same bytes when saved."""
 
 import json
+import os
 
 import pytest
 
 import anchorbench as ab
+
+SOURCE_DIR = os.environ.get("ANCHORBENCH_SOURCE_DIR", os.path.join(os.path.dirname(__file__), "..", ".."))
 
 SAME_BYTES_RUN = ["attempts.csv", "summary.csv", "summary.md"]  # timing and manifest record the machine and the call
 
@@ -125,6 +128,24 @@ def test_navigate_gives_the_command_lines_bytes(small_yaml, tmp_path, cli):
                                                 "no_anchors"}
     with pytest.raises(ab.InputError, match="no 'navigation' section"):
         ab.navigate(small_yaml, realizations=1)
+
+
+def test_explore_and_pdop_study_give_the_command_lines_bytes(tmp_path, cli):
+    hall = os.path.join(SOURCE_DIR, "configs", "exploration_uav_hall.yaml")
+    cli("explore", hall, "--realizations", 2, "--out", tmp_path / "cli_explore", "--quiet")
+    explored = ab.explore(hall, realizations=2, threads=2)
+    for name in ["exploration.csv", "exploration_summary.csv", "exploration.md"]:
+        assert explored.text(name) == (tmp_path / "cli_explore" / name).read_text(), name
+    assert set(explored.exploration["policy"]) >= {"pattern", "guided"}
+    study = os.path.join(SOURCE_DIR, "configs", "pdop_study.yaml")
+    cli("pdop-study", study, "--realizations", 3, "--every", 20, "--bin-s", 5, "--out", tmp_path / "cli_pdop", "--quiet")
+    studied = ab.pdop_study(study, realizations=3, every=20, bin_s=5, threads=2)
+    for name in ["pdop_trace.csv", "pdop_study.md"]:
+        assert studied.text(name) == (tmp_path / "cli_pdop" / name).read_text(), name
+    with pytest.raises(ab.InputError, match=r"^bin_s: must be in \[0.01, 120\]"):
+        ab.pdop_study(study, realizations=1, bin_s=0)
+    with pytest.raises(ab.InputError, match="no 'exploration' section|exploration"):
+        ab.explore(study, realizations=1)
 
 
 def test_replay_with_navigate_gives_the_command_lines_navigation_tables(small_yaml, tmp_path, cli):

@@ -6,12 +6,16 @@
 #include <map>
 #include <stdexcept>
 
+#include <sstream>
+
 #include "anchorbench/estimator/anchor_solver.hpp"
 #include "anchorbench/estimator/closest_point_pdop.hpp"
 #include "anchorbench/estimator/front_end.hpp"
 #include "anchorbench/estimator/pdop.hpp"
 #include "anchorbench/estimator/triggers.hpp"
 #include "anchorbench/eval/true_geometry.hpp"
+#include "anchorbench/report/pdop_study_report.hpp"
+#include "anchorbench/report/run_outputs.hpp"
 #include "anchorbench/schema/input_error.hpp"
 #include "anchorbench/engine/attempt.hpp"
 #include "anchorbench/engine/unit_records.hpp"
@@ -206,6 +210,23 @@ schema::PdopStudy RunPdopStudy(const schema::ExperimentConfig& config, const reg
     study.anchors += r.anchors;
   }
   return study;
+}
+
+void CheckPdopStudy(const schema::ExperimentConfig& config, int every, double bin_s, const std::string& source) {
+  if (every < 1 || every > 1000000) throw schema::InputError("--every: must be in [1, 1000000]");
+  if (!(bin_s >= 0.01 && bin_s <= 120.0)) throw schema::InputError("--bin-s: must be in [0.01, 120] seconds");
+  const double anchors = static_cast<double>(config.realizations) * config.scenario.NumAnchors();
+  if (anchors > 1e6) throw schema::InputError(source + ": realizations x anchors above 1e6 for a PDOP study");
+}
+
+std::string WritePdopStudyFiles(const engine::FileWriter& write, const schema::ExperimentConfig& config,
+                                const schema::PdopStudy& study, int every, double bin_s, const report::RunInfo& info) {
+  write("pdop_trace.csv", [&](std::ostream& file) { report::WritePdopTrace(file, study.checkpoints); });
+  std::ostringstream md;
+  report::WritePdopStudyMarkdown(md, config, study, every, bin_s);
+  write("pdop_study.md", [&](std::ostream& file) { file << md.str(); });
+  write("manifest.json", [&](std::ostream& file) { file << report::ManifestJson(config, info); });
+  return md.str();
 }
 
 }  // namespace anchorbench::studies
