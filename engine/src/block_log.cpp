@@ -7,7 +7,6 @@
 #include <system_error>
 
 #include "anchorbench/io/atomic_file.hpp"
-#include "anchorbench/io/csv_reader.hpp"
 #include "anchorbench/schema/input_error.hpp"
 
 namespace anchorbench::engine {
@@ -40,44 +39,42 @@ bool ParseHeader(std::string_view line, std::string_view kind, long long* key, l
 
 }  // namespace
 
-BlockLogContents ReadBlockLog(const fs::path& path, std::string_view kind) {
-  BlockLogContents contents;
+std::string ReadBlockLog(const fs::path& path, std::string_view kind, const std::function<void(LoggedBlock&&)>& take) {
   std::error_code error;
-  if (!fs::exists(fs::symlink_status(path, error))) return contents;
+  if (!fs::exists(fs::symlink_status(path, error))) return "";
   if (!fs::is_regular_file(fs::symlink_status(path, error))) {
     throw InputError(path.string() + ": is not a file where the store keeps its finished work; remove it, or --overwrite");
   }
-  const std::string text = io::ReadWholeFile(path.string());
-  std::size_t at = 0;
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw InputError(path.string() + ": cannot open the file: " + std::strerror(errno));
+  std::string header;
   long long line = 1;
-  while (at < text.size()) {
-    const std::size_t newline = text.find('\n', at);
+  while (std::getline(in, header)) {
+    const std::string place = path.string() + ":" + std::to_string(line);
     LoggedBlock block;
     long long bytes = 0;
-    const std::string place = path.string() + ":" + std::to_string(line);
-    if (newline == std::string::npos || !ParseHeader(std::string_view(text).substr(at, newline - at), kind,
-                                                     &block.key, &bytes, &block.tag)) {
-      contents.damage = place + ": not a block's header line (torn, or edited)";
-      break;
+    if (in.eof() || !ParseHeader(header, kind, &block.key, &bytes, &block.tag)) {
+      return place + ": not a block's header line (torn, or edited)";
     }
-    if (static_cast<std::size_t>(bytes) > text.size() - newline - 1) {
-      contents.damage = place + ": " + std::string(kind) + " " + std::to_string(block.key) +
-                        " is torn (the run was killed while writing it)";
-      break;
+    block.text.resize(static_cast<std::size_t>(bytes));
+    in.read(block.text.data(), static_cast<std::streamsize>(bytes));
+    if (in.gcount() != static_cast<std::streamsize>(bytes)) {
+      return place + ": " + std::string(kind) + " " + std::to_string(block.key) +
+             " is torn (the run was killed while writing it)";
     }
-    block.text = text.substr(newline + 1, static_cast<std::size_t>(bytes));
     block.line = line;
     line += 1 + static_cast<long long>(std::count(block.text.begin(), block.text.end(), '\n'));
-    at = newline + 1 + static_cast<std::size_t>(bytes);
-    contents.blocks.push_back(std::move(block));
+    take(std::move(block));
   }
-  contents.clean = contents.damage.empty();
-  return contents;
+  return "";
 }
 
-void RewriteBlockLog(const fs::path& path, std::string_view kind, const std::vector<LoggedBlock>& blocks) {
+void RewriteBlockLog(const fs::path& path, std::string_view kind, const std::function<bool(std::size_t)>& keep) {
   io::AtomicFile file(path, true);
-  for (const LoggedBlock& block : blocks) file.stream() << Header(kind, block.key, block.text.size(), block.tag) << block.text;
+  std::size_t ordinal = 0;
+  ReadBlockLog(path, kind, [&](LoggedBlock&& block) {
+    if (keep(ordinal++)) file.stream() << Header(kind, block.key, block.text.size(), block.tag) << block.text;
+  });
   file.Commit();
 }
 

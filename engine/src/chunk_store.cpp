@@ -107,11 +107,13 @@ ChunkStore::ChunkStore(const fs::path& out, const Plan& plan, Mode mode, std::ui
     : folder_(ChunkStorePath(out)) {
   const fs::path path = folder_ / kChunksFile;
   const bool fresh = ClaimStoreFolder(folder_, plan.identity(), mode, inputs, IsChunksFile, [&path] {
+    long long chunks = 0;
     try {
-      return std::to_string(ReadBlockLog(path, kKind).blocks.size()) + " finished chunks";
+      ReadBlockLog(path, kKind, [&chunks](LoggedBlock&&) { ++chunks; });
     } catch (const InputError&) {
       return std::string("finished chunks");
     }
+    return std::to_string(chunks) + " finished chunks";
   });
   try {
     const std::uintmax_t held = fresh ? 0 : TakeOver(plan);
@@ -128,31 +130,32 @@ ChunkStore::ChunkStore(const fs::path& out, const Plan& plan, Mode mode, std::ui
 
 std::uintmax_t ChunkStore::TakeOver(const Plan& plan) {
   const fs::path path = folder_ / kChunksFile;
-  BlockLogContents contents = ReadBlockLog(path, kKind);
   const auto refuse = [this](const std::string& why) {
     if (unreadable_++ == 0) first_unreadable_ = why;
   };
-  std::vector<LoggedBlock> kept;
+  std::vector<bool> kept;  // by the block's ordinal in the file
   std::uintmax_t held = 0;
-  for (LoggedBlock& block : contents.blocks) {
+  const std::string damage = ReadBlockLog(path, kKind, [&](LoggedBlock&& block) {
     const std::string source = path.string() + ":" + std::to_string(block.line);
+    kept.push_back(false);
     if (block.key >= static_cast<long long>(plan.chunks().size()) || finished_.count(static_cast<int>(block.key)) > 0) {
       refuse(source + ": chunk " + std::to_string(block.key) + " is not a chunk of this plan, or a second copy");
-      continue;
+      return;
     }
     try {
       finished_.emplace(static_cast<int>(block.key), ParseChunk(plan, static_cast<int>(block.key), block.text, source));
       held += block.text.size();
-      kept.push_back(std::move(block));
+      kept.back() = true;
     } catch (const InputError& e) {
       // Torn by a crash of the machine (the file is not flushed), edited, another run's: computed again.
       refuse(e.what());
     }
-  }
-  if (!contents.damage.empty()) refuse(contents.damage);  // it comes last in the file
-  // What follows a torn block would be read as part of it: the file keeps the chunks that read
-  // back, then grows. A store that reads back whole is appended to as it is.
-  if (unreadable_ > 0) RewriteBlockLog(path, kKind, kept);
+  });
+  if (!damage.empty()) refuse(damage);  // it comes last in the file
+  // What follows a torn block would be read as part of it, and a refused block would be refused
+  // again: the file keeps the chunks that read back, then grows. A store that reads back whole is
+  // appended to as it is.
+  if (unreadable_ > 0) RewriteBlockLog(path, kKind, [&kept](std::size_t ordinal) { return kept[ordinal]; });
   return held;
 }
 

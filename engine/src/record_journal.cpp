@@ -45,9 +45,8 @@ RecordJournal::RecordJournal(const fs::path& out, std::string identity, long lon
 }
 
 void RecordJournal::ReadBack(const fs::path& path) {
-  BlockLogContents contents = ReadBlockLog(path, kKind);
-  std::vector<LoggedBlock> kept;
-  for (LoggedBlock& block : contents.blocks) {
+  std::vector<bool> kept;  // by the block's ordinal in the file
+  const std::string damage = ReadBlockLog(path, kKind, [&](LoggedBlock&& block) {
     const std::string what = path.string() + ":" + std::to_string(block.line) + ": unit " + std::to_string(block.key);
     std::string why;
     if (block.key >= units_ || finished_.count(block.key) > 0) {
@@ -55,17 +54,17 @@ void RecordJournal::ReadBack(const fs::path& path) {
     } else if (block.tag != Checksum(block.key, block.text)) {
       why = what + " does not match its checksum (edited after the run, or another run's?)";
     }
+    kept.push_back(why.empty());
     if (!why.empty()) {
       if (unreadable_++ == 0) first_unreadable_ = why;
-      continue;
+      return;
     }
-    finished_.emplace(block.key, block.text);
-    kept.push_back(std::move(block));
-  }
-  if (!contents.damage.empty() && unreadable_++ == 0) first_unreadable_ = contents.damage;  // it comes last in the file
+    finished_.emplace(block.key, std::move(block.text));
+  });
+  if (!damage.empty() && unreadable_++ == 0) first_unreadable_ = damage;  // it comes last in the file
   // What follows a torn block would be read as part of it: the journal keeps the blocks that read
   // back, then grows.
-  if (unreadable_ > 0) RewriteBlockLog(path, kKind, kept);
+  if (unreadable_ > 0) RewriteBlockLog(path, kKind, [&kept](std::size_t ordinal) { return kept[ordinal]; });
 }
 
 void RecordJournal::Refuse(long long unit, const std::string& why) {

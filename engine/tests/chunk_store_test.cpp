@@ -32,7 +32,7 @@ class SomeChunks final : public Executor {
 // The chunks in the store of `out`, in the order they were appended.
 std::vector<long long> StoredChunks(const std::filesystem::path& out) {
   std::vector<long long> keys;
-  for (const LoggedBlock& block : ReadBlockLog(ChunkStorePath(out) / "chunks.csv", "chunk").blocks) keys.push_back(block.key);
+  ReadBlockLog(ChunkStorePath(out) / "chunks.csv", "chunk", [&keys](LoggedBlock&& block) { keys.push_back(block.key); });
   std::sort(keys.begin(), keys.end());
   return keys;
 }

@@ -6,13 +6,15 @@
 //
 // A block is written whole and handed to the system at once (not flushed to the disk): a killed
 // process tears at most the last block, which reads back as torn and is computed again. Appending
-// to an open file costs a write; creating a file per block cost about ten times more (bench_ingest).
+// to an open file costs a write; creating a file per block cost more than twice as much (bench_ingest).
+// Reading streams one block at a time: a store of gigabytes is never held whole.
 
+#include <cstddef>
 #include <filesystem>
 #include <fstream>
+#include <functional>
 #include <string>
 #include <string_view>
-#include <vector>
 
 namespace anchorbench::engine {
 
@@ -23,19 +25,18 @@ struct LoggedBlock {
   long long line = 0;  // of its header in the file, for messages
 };
 
-struct BlockLogContents {
-  std::vector<LoggedBlock> blocks;  // whole blocks, in the file's order (not yet checked by their store)
-  std::string damage;               // empty, or where the blocks stop reading back and why ("FILE:LINE: ...")
-  bool clean = true;                // false when the file holds more than `blocks` (a tear, a stray line)
-};
+// Hands each whole block of kind `kind` in `path` to `take`, in the file's order (a missing file
+// has none); returns where and why reading stopped early ("FILE:LINE: ..."), or empty when the
+// file is whole blocks to its end. Reading stops at the first header that does not parse or the
+// first block cut short: what follows cannot be delimited. A folder in the file's place is an
+// InputError naming it.
+std::string ReadBlockLog(const std::filesystem::path& path, std::string_view kind,
+                         const std::function<void(LoggedBlock&& block)>& take);
 
-// The blocks of kind `kind` in `path` (a missing file has none). Reading stops at the first header
-// that does not parse or the first block cut short: what follows cannot be delimited.
-BlockLogContents ReadBlockLog(const std::filesystem::path& path, std::string_view kind);
-
-// `path` rewritten (whole or absent) with `blocks` alone: what a resumed store keeps, before it
-// appends more.
-void RewriteBlockLog(const std::filesystem::path& path, std::string_view kind, const std::vector<LoggedBlock>& blocks);
+// `path` rewritten (whole or absent) with the whole blocks whose ordinal in the file (0, 1, ...)
+// `keep` says, and nothing after them: what a resumed store keeps before it appends more.
+void RewriteBlockLog(const std::filesystem::path& path, std::string_view kind,
+                     const std::function<bool(std::size_t ordinal)>& keep);
 
 class BlockLog {
  public:
