@@ -89,6 +89,17 @@ void AddChunkOptions(CLI::App* cmd, app::MonteCarloArgs& args) {
                   "folders (docs/cluster.md)");
 }
 
+// navigate and explore: finished (row, realization) units kept in <out>.chunks/ until the results
+// are written, and shards of them.
+void AddUnitOptions(CLI::App* cmd, app::MonteCarloArgs& args) {
+  cmd->add_flag("--resume", args.resume,
+                "Continue an interrupted run from <out>.chunks/ (its finished units are kept); the results are "
+                "byte-identical to an uninterrupted run's");
+  cmd->add_option("--shard", args.shard,
+                  "I/N: compute only shard I of N of the (row, realization) units into a shard folder; "
+                  "`anchorbench merge` joins the N folders into the unsharded run's bytes");
+}
+
 constexpr long long kMaxSeed = std::numeric_limits<long long>::max();
 
 // Every subcommand's arguments, and the CLI11 subcommand that fills them.
@@ -98,8 +109,8 @@ struct CommandLine {
   app::RunArgs run;
   app::SweepArgs sweep;
   app::PdopStudyArgs study;
-  app::NavigateArgs navigate;
-  app::ExploreArgs explore;
+  app::RecordStudyArgs navigate;
+  app::RecordStudyArgs explore;
   app::ConvertHanyangArgs convert;
   app::CalibrateArgs calibrate;
   app::MergeArgs merge;
@@ -214,12 +225,7 @@ void AddMonteCarloCommands(CLI::App& cli, CommandLine& c) {
       ->required();
   AddMonteCarloOptions(c.navigate_cmd, c.navigate);
   c.navigate_cmd->add_option("--set", c.navigate.overrides, "Override a config value: KEY=VALUE, KEY a dotted path (repeatable)");
-  c.navigate_cmd->add_flag("--resume", c.navigate.resume,
-                           "Continue an interrupted run from <out>.chunks/ (its finished units are kept); the results "
-                           "are byte-identical to an uninterrupted run's");
-  c.navigate_cmd->add_option("--shard", c.navigate.shard,
-                             "I/N: compute only shard I of N of the (row, realization) units into a shard folder; "
-                             "`anchorbench merge` joins the N folders into the unsharded run's bytes");
+  AddUnitOptions(c.navigate_cmd, c.navigate);
 
   c.explore_cmd = cli.add_subcommand(
       "explore", "Closed loop: the robot's pattern alone against the pattern with guidance's detours, until every "
@@ -228,9 +234,7 @@ void AddMonteCarloCommands(CLI::App& cli, CommandLine& c) {
       ->required();
   AddMonteCarloOptions(c.explore_cmd, c.explore);
   c.explore_cmd->add_option("--set", c.explore.overrides, "Override a config value: KEY=VALUE, KEY a dotted path (repeatable)");
-  c.explore_cmd->add_flag("--resume", c.explore.resume,
-                          "Continue an interrupted run from <out>.chunks/ (its finished units are kept); the results "
-                          "are byte-identical to an uninterrupted run's");
+  AddUnitOptions(c.explore_cmd, c.explore);
 
   c.calibrate_cmd = cli.add_subcommand(
       "calibrate", "Fit scenario parameters so an experiment's table matches the published one (docs/calibration.md)");
@@ -248,8 +252,8 @@ int Dispatch(const CommandLine& c, const app::AppContext& context) {
   if (c.run_cmd->parsed()) return app::RunCommand(c.run, context);
   if (c.sweep_cmd->parsed()) return app::SweepCommand(c.sweep, context);
   if (c.study_cmd->parsed()) return app::PdopStudyCommand(c.study, context);
-  if (c.navigate_cmd->parsed()) return app::NavigateCommand(c.navigate, context);
-  if (c.explore_cmd->parsed()) return app::ExploreCommand(c.explore, context);
+  if (c.navigate_cmd->parsed()) return app::RecordStudyCommand("navigate", c.navigate, context);
+  if (c.explore_cmd->parsed()) return app::RecordStudyCommand("explore", c.explore, context);
   if (c.calibrate_cmd->parsed()) return app::CalibrateCommand(c.calibrate, context);
   if (c.merge_cmd->parsed()) return app::MergeCommand(c.merge, context);
   if (c.convert_cmd->parsed()) return app::ConvertHanyangCommand(c.convert);

@@ -53,8 +53,8 @@ struct MonteCarloArgs {
   std::optional<int> realizations;
   bool quiet = false;
   bool overwrite = false;  // replace a folder holding earlier results
-  bool resume = false;     // run, sweep: continue from <out>.chunks/ (engine/chunk_store.hpp)
-  std::string shard;       // run, sweep: "I/N", this share of the chunks into a shard folder
+  bool resume = false;     // continue from <out>.chunks/ (engine/chunk_store.hpp, record_journal.hpp)
+  std::string shard;       // "I/N", this share of the chunks (or units) into a shard folder
 };
 
 struct RunArgs : MonteCarloArgs {
@@ -75,18 +75,16 @@ struct PdopStudyArgs : MonteCarloArgs {
 };
 int PdopStudyCommand(const PdopStudyArgs& args, const AppContext& app);
 
-// The navigation study (docs/navigation.md): each trigger's anchors in a drifting robot's filter.
-struct NavigateArgs : MonteCarloArgs {
+// A study of record units (studies/record_study.hpp), named by its command: navigate (each
+// trigger's anchors in a drifting robot's filter, docs/navigation.md), explore (the closed loop,
+// docs/guidance.md).
+struct RecordStudyArgs : MonteCarloArgs {
   std::vector<std::string> overrides;  // --set KEY=VALUE
 };
-int NavigateCommand(const NavigateArgs& args, const AppContext& app);
+int RecordStudyCommand(const std::string& command, const RecordStudyArgs& args, const AppContext& app);
 
-struct ExploreArgs : MonteCarloArgs {
-  std::vector<std::string> overrides;  // --set KEY=VALUE
-};
-int ExploreCommand(const ExploreArgs& args, const AppContext& app);
-
-// Joins the shard folders of one run or sweep (--shard I/N, every I) into its single folder.
+// Joins the shard folders of one run, sweep or study of record units (--shard I/N, every I) into
+// its single folder.
 struct MergeArgs {
   std::string out;
   std::vector<std::string> shards;

@@ -7,7 +7,8 @@
 #include "anchorbench/schema/input_error.hpp"
 #include "anchorbench/io/result_folder.hpp"
 #include "anchorbench/engine/commit.hpp"
-#include "anchorbench/studies/navigation_shard.hpp"
+#include "anchorbench/engine/shard_folder.hpp"
+#include "anchorbench/studies/record_study.hpp"
 #include "anchorbench/engine/shard_folder.hpp"
 #include "monte_carlo_command.hpp"
 
@@ -98,19 +99,37 @@ report::RunInfo MergedInfo(const MergeArgs& args, const engine::ShardInfo& first
   return info;
 }
 
-// A navigation study's shards (studies/navigation_shard.hpp) into its tables.
-int MergeNavigation(const MergeArgs& args, const std::vector<engine::ShardInfo>& infos,
-                    const engine::ShardInputs& inputs, const engine::Plan& plan, const AppContext& app,
-                    io::ResultFolder& out) {
+// Every unit of a study of record units, each from the shard that holds it (engine::ReadShardUnits):
+// unit -> its text, and where it was read.
+std::map<int, engine::ShardUnit> ReadUnits(const MergeArgs& args, const std::vector<engine::ShardInfo>& infos,
+                                           const schema::ExperimentConfig& config) {
+  const long long units = static_cast<long long>(schema::RowsOf(config).size()) * config.realizations;
+  std::map<int, engine::ShardUnit> read;
+  for (std::size_t s = 0; s < args.shards.size(); ++s) read.merge(engine::ReadShardUnits(args.shards[s], infos[s], units));
+  for (int unit = 0; unit < units; ++unit) {
+    if (read.count(unit) == 0) {
+      throw InputError("row " + std::to_string(unit / config.realizations) + ", realization " +
+                       std::to_string(unit % config.realizations) + ": no shard holds its records (edited after the run?)");
+    }
+  }
+  return read;
+}
+
+// A study of record units' shards (navigate, explore) into its results: the unsharded run's bytes.
+int MergeUnits(const studies::RecordStudy& study, const MergeArgs& args, const std::vector<engine::ShardInfo>& infos,
+               const engine::ShardInputs& inputs, const engine::Plan& plan, const AppContext& app,
+               io::ResultFolder& out) {
   schema::ExperimentConfig config = plan.experiments().front();
   config.name = infos.front().name;
-  const std::vector<studies::NavigationRecord> records =
-      studies::ReadNavigationShards({args.shards.begin(), args.shards.end()}, infos, config);
+  study.check(config, app.components);
+  const std::map<int, engine::ShardUnit> read = ReadUnits(args, infos, config);
+  std::map<int, std::string> texts;
+  for (const auto& [unit, shard_unit] : read) texts.emplace(unit, shard_unit.text);
   report::RunInfo info = MergedInfo(args, infos.front(), inputs, app);
-  info.command_line.insert(info.command_line.begin(), "navigate");
-  const std::string markdown = studies::WriteNavigationFiles(
+  info.command_line.insert(info.command_line.begin(), study.command);
+  const std::string markdown = study.write(
       [&](const std::string& name, const std::function<void(std::ostream&)>& write) { out.Write(name, write); }, config,
-      records, info);
+      app.components, texts, [&read](int unit) { return read.at(unit).place; }, info);
   out.Commit();
   if (!args.quiet) std::cout << markdown;
   return 0;
@@ -122,8 +141,15 @@ int MergeCommand(const MergeArgs& args, const AppContext& app) {
   const std::vector<engine::ShardInfo> infos = CheckShards(args.shards);
   engine::ShardInputs inputs;
   const engine::Plan plan = CheckInputs(args.shards, infos.front(), app.components, inputs);
+  const std::string& command = infos.front().command;
+  const studies::RecordStudy* study = studies::FindRecordStudy(command);
+  if (command != "run" && command != "sweep" && !study) {
+    std::string known = "run, sweep";
+    for (const studies::RecordStudy& s : studies::RecordStudies()) known += ", " + s.command;
+    throw InputError((fs::path(args.shards.front()) / "shard.csv").string() + ": command '" + command + "': " + known);
+  }
   const std::unique_ptr<io::ResultFolder> out = OpenMerged(args, infos.front().name);
-  if (infos.front().command == "navigate") return MergeNavigation(args, infos, inputs, plan, app, *out);
+  if (study) return MergeUnits(*study, args, infos, inputs, plan, app, *out);
   std::map<int, engine::ChunkResult> chunks;
   for (std::size_t s = 0; s < args.shards.size(); ++s) {
     chunks.merge(engine::ReadShardChunks(args.shards[s], infos[s], plan));

@@ -15,6 +15,7 @@
 #include "anchorbench/engine/record_journal.hpp"
 #include "anchorbench/engine/job.hpp"
 #include "anchorbench/engine/shard.hpp"
+#include "anchorbench/studies/record_study.hpp"
 #include "commands.hpp"
 #include "progress.hpp"
 

@@ -1,9 +1,11 @@
 #!/usr/bin/env bash
-# Shards and merge (issue 15): `run|sweep --shard I/N` for every I, then `merge`, writes the bytes
-# of the single-process run or sweep, for any N and thread count; missing, duplicated or
-# mismatched shards are one clear error with nothing written.
+# Shards and merge (issue 15): `run|sweep|navigate|explore --shard I/N` for every I, then `merge`,
+# writes the bytes of the single-process run, for any N and thread count; missing, duplicated,
+# mismatched or edited shards are one clear error with nothing written.
+# Arguments: the anchorbench executable, the configs folder.
 # shellcheck source=common.sh
 source "$(dirname "$0")/common.sh"
+configs="$2"
 
 expect_refusal() {  # DESCRIPTION EXPECTED_TEXT SHARD_DIR...
   local what="$1" expected="$2"
@@ -81,43 +83,80 @@ for n in 1 4 7; do
   echo "ok: $n navigation shards merge to the single run's bytes"
 done
 expect_refusal "a navigation shard missing" "shard 2/4 is missing" "$dir/n4-0" "$dir/n4-1" "$dir/n4-3"
-sed -i '2d' "$dir/n4-1/navigation_records.csv"
-expect_refusal "a navigation shard with a record taken out" "do not hold each of its methods once" \
-  "$dir/n4-0" "$dir/n4-1" "$dir/n4-2" "$dir/n4-3"
-"$bin" navigate "$dir/navigated.yaml" --shard 1/4 --out "$dir/n4-1" --quiet --overwrite || fail "navigate shard 1/4"
-# Every edit of a record is refused by its checksum (issue 33's tampered shards), whichever field.
+
+# explore's units go the same way (one kind of study of record units, studies/record_study.hpp).
+explore="$configs/exploration_uav_hall.yaml"
+"$bin" explore "$explore" --realizations 3 --out "$dir/ex_whole" --quiet --threads 2 || fail "explore"
+for ((i = 0; i < 3; i++)); do
+  "$bin" explore "$explore" --realizations 3 --shard "$i/3" --out "$dir/e3-$i" --quiet --threads 1 \
+    || fail "explore shard $i/3"
+done
+"$bin" merge "$dir/ex_merged" "$dir/e3-2" "$dir/e3-0" "$dir/e3-1" --quiet || fail "merge of explore shards"
+for file in exploration.csv exploration_summary.csv exploration.md navigation_error.csv; do
+  cmp -s "$dir/ex_whole/$file" "$dir/ex_merged/$file" || fail "3 explore shards: merged $file differs"
+done
+echo "ok: 3 explore shards merge to the single run's bytes"
+expect_refusal "explore and navigate shards together" "is of another run" "$dir/e3-0" "$dir/n4-1"
+
+# Every edit of a shard's records.csv is refused, whichever way (issue 33's tampered shards): each
+# unit is a block whose checksum binds its text to the unit and the plan.
 cp -r "$dir/n4-2" "$dir/n4-2.kept"
-nav_tamper() {  # NAME AWK_PROGRAM: one way of editing shard 2/4's records
-  rm -rf "$dir/n4-2" && cp -r "$dir/n4-2.kept" "$dir/n4-2"
-  awk -F, -v OFS=, "$2" "$dir/n4-2.kept/navigation_records.csv" >"$dir/n4-2/navigation_records.csv"
-  cmp -s "$dir/n4-2.kept/navigation_records.csv" "$dir/n4-2/navigation_records.csv" && fail "tamper $1 changed nothing"
-  expect_refusal "a navigation record with $1" "does not match its checksum" "$dir/n4-0" "$dir/n4-1" "$dir/n4-2" "$dir/n4-3"
-}
-nav_tamper "a negated rmse" 'NR == 2 { $4 = -$4 } { print }'
-nav_tamper "an rmse of 1e300" 'NR == 2 { $4 = "1e300" } { print }'
-nav_tamper "a fix share of 2" 'NR == 2 { $8 = 2 } { print }'
-nav_tamper "dropped bins" 'NR == 2 { sub(/;[^;]*$/, "", $11) } { print }'
-nav_tamper "its unit moved" 'NR == 2 { $2 = 1 } { print }'
-nav_tamper "two lines' units swapped" 'NR == 2 { a = $0; getline; b = $0; split(a, x, ","); split(b, y, ","); sub(/^[^,]*,[^,]*,[^,]*/, y[1] "," y[2] "," y[3], a); sub(/^[^,]*,[^,]*,[^,]*/, x[1] "," x[2] "," x[3], b); print b; print a; next } { print }'
-nav_tamper "a line of another run" 'NR == 2 { $NF = "0123456789abcdef" } { print }'
-# A value no run writes is refused even with a checksum made to fit it.
-rm -rf "$dir/n4-2" && cp -r "$dir/n4-2.kept" "$dir/n4-2"
 plan=$(tail -1 "$dir/n4-2/shard.csv" | cut -d, -f6)
-/usr/bin/python3 - "$dir/n4-2/navigation_records.csv" "$plan" <<'PY'
+nav_tamper() {  # NAME EXPECTED HOW [FIELD VALUE]: one way of editing shard 2/4's records.csv
+  rm -rf "$dir/n4-2" && cp -r "$dir/n4-2.kept" "$dir/n4-2"
+  /usr/bin/python3 - "$dir/n4-2/records.csv" "$plan" "${@:3}" <<'PY' || fail "tamper $1: the editor failed"
 import sys
-path, plan = sys.argv[1], sys.argv[2]
-lines = open(path).read().splitlines()
-fields = lines[1].split(",")[:-1]
-fields[7] = "2"  # a fix share of 2
-text = ",".join(fields)
-h = 0xcbf29ce484222325
-for b in (plan + "\n" + text).encode():
-    h = ((h ^ b) * 0x100000001b3) % (1 << 64)
-lines[1] = text + ",%016x" % h
-open(path, "w").write("\n".join(lines) + "\n")
+path, plan, how, *args = sys.argv[1:]
+data = open(path, "rb").read().decode()
+blocks, at = [], 0
+while at < len(data):
+    end = data.index("\n", at)
+    kind, key, size, tag = data[at:end].split(",")
+    blocks.append([int(key), tag, data[end + 1:end + 1 + int(size)]])
+    at = end + 1 + int(size)
+def checksum(key, text):
+    h = 0xcbf29ce484222325
+    for b in (plan + "\n" + str(key) + "\n" + text).encode():
+        h = ((h ^ b) * 0x100000001b3) % (1 << 64)
+    return "%016x" % h
+def edit_field(block, field, value):
+    lines = block[2].split("\n")
+    fields = lines[0].split(",")
+    fields[int(field)] = value
+    lines[0] = ",".join(fields)
+    block[2] = "\n".join(lines)
+first = blocks[0]
+if how == "edit":
+    edit_field(first, *args)
+elif how == "fit":
+    edit_field(first, *args)
+    first[1] = checksum(first[0], first[2])
+elif how == "move":
+    first[0] += 1
+elif how == "tag":
+    first[1] = "0123456789abcdef"
+elif how == "drop":
+    blocks.pop(0)
+elif how == "twice":
+    blocks.insert(1, list(first))
+out = "".join("unit,%d,%d,%s\n%s" % (k, len(t.encode()), g, t) for k, g, t in blocks)
+if how == "torn":
+    out = out[:-7]
+open(path, "wb").write(out.encode())
 PY
-expect_refusal "a fix share of 2 with a checksum made to fit" "a fix share outside [0, 1]" \
-  "$dir/n4-0" "$dir/n4-1" "$dir/n4-2" "$dir/n4-3"
+  cmp -s "$dir/n4-2.kept/records.csv" "$dir/n4-2/records.csv" && fail "tamper $1 changed nothing"
+  expect_refusal "a navigation shard with $1" "$2" "$dir/n4-0" "$dir/n4-1" "$dir/n4-2" "$dir/n4-3"
+}
+nav_tamper "a negated rmse" "does not match its checksum" edit 3 -1
+nav_tamper "an rmse of 1e300" "does not match its checksum" edit 3 1e300
+nav_tamper "a fix share of 2" "does not match its checksum" edit 7 2
+nav_tamper "its unit moved" "is not a unit of shard 2/4" move
+nav_tamper "a unit of another run" "does not match its checksum" tag
+nav_tamper "a unit taken out" "shard.csv says" drop
+nav_tamper "a unit twice" "is there twice" twice
+nav_tamper "its end torn" "is torn" torn
+# A value no run writes is refused even with a checksum made to fit it, naming the file and line.
+nav_tamper "a fix share of 2 with a checksum made to fit" "records.csv:2: a fix share outside [0, 1]" fit 7 2
 
 [ "$failures" -eq 0 ] || { echo "$failures failure(s)"; exit 1; }
 echo "all shard cases passed"

@@ -15,13 +15,6 @@ using schema::InputError;
 
 namespace {
 
-std::string Header(std::string_view kind, long long key, std::size_t bytes, std::string_view tag) {
-  std::string header(kind);
-  header.append(",").append(std::to_string(key)).append(",").append(std::to_string(bytes)).append(",");
-  header.append(tag).push_back('\n');
-  return header;
-}
-
 // `<kind>,<key>,<bytes>,<tag>`: false if `line` is not such a header.
 bool ParseHeader(std::string_view line, std::string_view kind, long long* key, long long* bytes, std::string* tag) {
   if (!line.starts_with(kind) || line.substr(kind.size(), 1) != ",") return false;
@@ -37,7 +30,20 @@ bool ParseHeader(std::string_view line, std::string_view kind, long long* key, l
   return true;
 }
 
+std::string Header(std::string_view kind, long long key, std::size_t bytes, std::string_view tag) {
+  std::string header(kind);
+  header.append(",").append(std::to_string(key)).append(",").append(std::to_string(bytes)).append(",");
+  header.append(tag).push_back('\n');
+  return header;
+}
+
 }  // namespace
+
+std::string BlockText(std::string_view kind, long long key, std::string_view tag, std::string_view text) {
+  std::string block = Header(kind, key, text.size(), tag);
+  block.append(text);
+  return block;
+}
 
 std::string ReadBlockLog(const fs::path& path, std::string_view kind, const std::function<void(LoggedBlock&&)>& take) {
   std::error_code error;

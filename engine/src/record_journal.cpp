@@ -13,7 +13,6 @@ using schema::InputError;
 namespace {
 
 constexpr const char* kJournalFile = "journal.csv";
-constexpr const char* kKind = "unit";
 
 // The journal, or the temporary of its rewrite (io::AtomicFile's <name>.tmp.<pid>).
 bool IsJournalFile(const std::string& name) {
@@ -36,7 +35,7 @@ RecordJournal::RecordJournal(const fs::path& out, std::string identity, long lon
     } else {
       ReadBack(path);
     }
-    log_ = BlockLog(path, kKind);
+    log_ = BlockLog(path, kUnitBlockKind);
   } catch (const InputError&) {
     std::error_code error;
     if (fresh) fs::remove_all(folder_, error);
@@ -46,12 +45,12 @@ RecordJournal::RecordJournal(const fs::path& out, std::string identity, long lon
 
 void RecordJournal::ReadBack(const fs::path& path) {
   std::vector<bool> kept;  // by the block's ordinal in the file
-  const std::string damage = ReadBlockLog(path, kKind, [&](LoggedBlock&& block) {
+  const std::string damage = ReadBlockLog(path, kUnitBlockKind, [&](LoggedBlock&& block) {
     const std::string what = path.string() + ":" + std::to_string(block.line) + ": unit " + std::to_string(block.key);
     std::string why;
     if (block.key >= units_ || finished_.count(block.key) > 0) {
       why = what + " is not a unit of this run, or a second copy";
-    } else if (block.tag != Checksum(block.key, block.text)) {
+    } else if (block.tag != UnitChecksum(identity_, block.key, block.text)) {
       why = what + " does not match its checksum (edited after the run, or another run's?)";
     }
     kept.push_back(why.empty());
@@ -59,24 +58,32 @@ void RecordJournal::ReadBack(const fs::path& path) {
       if (unreadable_++ == 0) first_unreadable_ = why;
       return;
     }
+    lines_.emplace(block.key, block.line);
     finished_.emplace(block.key, std::move(block.text));
   });
   if (!damage.empty() && unreadable_++ == 0) first_unreadable_ = damage;  // it comes last in the file
   // What follows a torn block would be read as part of it: the journal keeps the blocks that read
   // back, then grows.
-  if (unreadable_ > 0) RewriteBlockLog(path, kKind, [&kept](std::size_t ordinal) { return kept[ordinal]; });
+  if (unreadable_ > 0) RewriteBlockLog(path, kUnitBlockKind, [&kept](std::size_t ordinal) { return kept[ordinal]; });
 }
 
-void RecordJournal::Refuse(long long unit, const std::string& why) {
-  if (unreadable_++ == 0) first_unreadable_ = (folder_ / kJournalFile).string() + ": unit " + std::to_string(unit) + ": " + why;
+UnitPlace RecordJournal::PlaceOf(long long unit) const {
+  const auto line = lines_.find(unit);
+  return {(folder_ / kJournalFile).string(), line == lines_.end() ? 0 : line->second};
 }
 
-std::string RecordJournal::Checksum(long long unit, const std::string& text) const {
-  return io::Fingerprint(identity_ + "\n" + std::to_string(unit) + "\n" + text);
+void RecordJournal::Refuse(const std::string& why) {
+  if (unreadable_++ == 0) first_unreadable_ = why;
+}
+
+std::string UnitChecksum(std::string_view identity, long long unit, std::string_view text) {
+  std::string hashed(identity);
+  hashed.append("\n").append(std::to_string(unit)).append("\n").append(text);
+  return io::Fingerprint(hashed);
 }
 
 void RecordJournal::Append(long long unit, const std::string& text) {
-  const std::string checksum = Checksum(unit, text);
+  const std::string checksum = UnitChecksum(identity_, unit, text);
   const std::lock_guard<std::mutex> lock(mutex_);
   log_.Append(unit, checksum, text);
 }

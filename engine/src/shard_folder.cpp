@@ -4,6 +4,8 @@
 #include <sstream>
 
 #include "anchorbench/config/load_config.hpp"
+#include "anchorbench/engine/block_log.hpp"
+#include "anchorbench/engine/record_journal.hpp"
 #include "anchorbench/io/csv_reader.hpp"
 #include "anchorbench/schema/input_error.hpp"
 
@@ -41,6 +43,43 @@ void WriteShardIdentity(const std::function<void(const std::string&, const std::
   write("shard.csv", csv.str());  // last: a folder with shard.csv was written whole
 }
 
+void WriteShardUnits(const std::function<void(const std::string&, const std::string&)>& write, const ShardInfo& info,
+                     const ShardInputs& inputs, const std::map<int, std::string>& units) {
+  std::string blocks;
+  for (const auto& [unit, text] : units) {
+    blocks += BlockText(kUnitBlockKind, unit, UnitChecksum(info.plan, unit, text), text);
+  }
+  write(kShardRecordsFile, blocks);
+  WriteShardIdentity(write, info, inputs);
+}
+
+std::map<int, ShardUnit> ReadShardUnits(const fs::path& folder, const ShardInfo& info, long long units) {
+  const fs::path path = folder / kShardRecordsFile;
+  if (!fs::exists(path)) throw schema::InputError(path.string() + ": missing (a folder edited after the run?)");
+  std::map<int, ShardUnit> read;
+  const std::string damage = ReadBlockLog(path, kUnitBlockKind, [&](LoggedBlock&& block) {
+    const std::string where = path.string() + ":" + std::to_string(block.line);
+    const std::string what = where + ": unit " + std::to_string(block.key);
+    if (block.key >= units || !info.shard.Holds(static_cast<int>(block.key))) {
+      throw schema::InputError(what + " is not a unit of shard " + std::to_string(info.shard.index) + "/" +
+                               std::to_string(info.shard.count) + " (edited after the run?)");
+    }
+    if (block.tag != UnitChecksum(info.plan, block.key, block.text)) {
+      throw schema::InputError(what + " does not match its checksum (edited after the run, or another run's?)");
+    }
+    if (!read.emplace(static_cast<int>(block.key), ShardUnit{std::move(block.text), {path.string(), block.line}}).second) {
+      throw schema::InputError(what + " is there twice (edited after the run?)");
+    }
+  });
+  if (!damage.empty()) throw schema::InputError(damage);
+  if (static_cast<long long>(read.size()) != info.chunks) {
+    throw schema::InputError(path.string() + ": holds " + std::to_string(read.size()) + " units, " +
+                             (folder / "shard.csv").string() + " says " + std::to_string(info.chunks) +
+                             " (edited after the run?)");
+  }
+  return read;
+}
+
 ShardInfo ReadShardInfo(const fs::path& folder) {
   const std::string path = (folder / "shard.csv").string();
   std::ifstream in = io::OpenForReading(path);
@@ -56,9 +95,6 @@ ShardInfo ReadShardInfo(const fs::path& folder) {
   info.revision = std::string(csv.Text(csv.Column({"revision"})));
   if (info.shard.count < 1 || info.shard.index < 0 || info.shard.index >= info.shard.count) {
     csv.Fail("shard " + std::to_string(info.shard.index) + " of " + std::to_string(info.shard.count) + " is not a shard");
-  }
-  if (info.command != "run" && info.command != "sweep" && info.command != "navigate") {
-    csv.Fail("command '" + info.command + "': run, sweep or navigate");
   }
   return info;
 }

@@ -70,10 +70,11 @@ bool CsvReader::ReadLine(std::string& line) {
   return true;
 }
 
-CsvReader::CsvReader(std::istream& in, std::string source) : in_(in), source_(std::move(source)) {
+CsvReader::CsvReader(std::istream& in, std::string source, int header_line_number)
+    : in_(in), source_(std::move(source)) {
   std::string header_line;
   if (!ReadLine(header_line)) throw schema::InputError(source_ + ":1: empty file, expected a header line");
-  line_ = 1;
+  line_ = header_line_number;
   if (header_line.size() >= 3 && header_line.compare(0, 3, "\xEF\xBB\xBF") == 0) header_line.erase(0, 3);  // UTF-8 BOM
   Split(header_line, fields_);
   for (std::string_view name : fields_) header_.emplace_back(Unquoted(name));

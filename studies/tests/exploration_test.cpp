@@ -175,9 +175,9 @@ TEST(Exploration, AResumedRunTakesItsJournalsUnitsAndRecomputesTheRest) {
                                           whole.begin() + static_cast<long>((unit + 1) * policies));
   };
   const std::string text = ExplorationUnitText(unit_records(0));
-  const std::vector<ExplorationRecord> read = ReadExplorationUnit(text, "journal", 0, 0, config.exploration->policies);
+  const std::vector<ExplorationRecord> read = ReadExplorationUnit(text, {"journal", 1}, 0, 0, config.exploration->policies);
   EXPECT_EQ(ExplorationUnitText(read), text);  // round-trip precision
-  EXPECT_THROW(ReadExplorationUnit(text, "journal", 0, 1, config.exploration->policies), schema::InputError);
+  EXPECT_THROW(ReadExplorationUnit(text, {"journal", 1}, 0, 1, config.exploration->policies), schema::InputError);
   const long long units = static_cast<long long>(whole.size() / policies);
   {
     RecordJournal killed(dir.path() / "out", "explore", units, ChunkStore::Mode::kFresh);

@@ -374,24 +374,31 @@ std::vector<ExplorationRecord> ExploreRealization(const schema::RowConfig& row, 
   return records;
 }
 
+UnitRecords<ExplorationRecord> ExplorationUnits(const schema::ExperimentConfig& config,
+                                                const registry::Components& components) {
+  const std::vector<schema::RowConfig> rows = schema::RowsOf(config);
+  const int realizations = config.realizations;
+  UnitRecords<ExplorationRecord> study;
+  study.units = static_cast<int>(rows.size()) * realizations;
+  study.compute = [rows, realizations, seed = config.seed, exploration = *config.exploration,
+                   navigation = config.navigation, &components](int unit) {
+    const int row = unit / realizations;
+    return ExploreRealization(rows[static_cast<std::size_t>(row)], row, seed, unit % realizations, exploration,
+                              navigation, components);
+  };
+  study.text = ExplorationUnitText;
+  study.read = [realizations, policies = config.exploration->policies](const std::string& text,
+                                                                       const engine::UnitPlace& place, int unit) {
+    return ReadExplorationUnit(text, place, unit / realizations, unit % realizations, policies);
+  };
+  return study;
+}
+
 std::vector<ExplorationRecord> RunExploration(const schema::ExperimentConfig& config,
                                               const registry::Components& components, int threads,
                                               const RunControl& control, RecordJournal* journal) {
   CheckExploration(config, components);
-  const std::vector<schema::RowConfig> rows = schema::RowsOf(config);
-  UnitRecords<ExplorationRecord> study;
-  study.units = static_cast<int>(rows.size()) * config.realizations;
-  study.compute = [&](int unit) {
-    const int row = unit / config.realizations;
-    return ExploreRealization(rows[static_cast<std::size_t>(row)], row, config.seed, unit % config.realizations,
-                              *config.exploration, config.navigation, components);
-  };
-  study.text = ExplorationUnitText;
-  study.read = [&](const std::string& text, const std::string& source, int unit) {
-    return ReadExplorationUnit(text, source, unit / config.realizations, unit % config.realizations,
-                               config.exploration->policies);
-  };
-  return RunUnitRecords(study, threads, Shard{}, control, journal);
+  return RunUnitRecords(ExplorationUnits(config, components), threads, Shard{}, control, journal);
 }
 
 }  // namespace anchorbench::studies

@@ -38,10 +38,10 @@ std::string ExplorationUnitText(const std::vector<ExplorationRecord>& records) {
   return text.str();
 }
 
-std::vector<ExplorationRecord> ReadExplorationUnit(const std::string& text, const std::string& source, int row,
+std::vector<ExplorationRecord> ReadExplorationUnit(const std::string& text, const engine::UnitPlace& place, int row,
                                                    int realization, const std::vector<std::string>& policies) {
   std::istringstream in(std::string(kColumns) + "\n" + text);
-  io::CsvReader csv(in, source);
+  io::CsvReader csv(in, place.file, static_cast<int>(place.line));  // the columns in the block header's place
   const int row_column = csv.Column({"row"}), realization_column = csv.Column({"realization"});
   const int policy = csv.Column({"policy"}), anchors = csv.Column({"anchors"}), certified = csv.Column({"certified"});
   const int beyond = csv.Column({"beyond_accuracy"}), max_error = csv.Column({"max_error_m"});
@@ -72,7 +72,7 @@ std::vector<ExplorationRecord> ReadExplorationUnit(const std::string& text, cons
     records.push_back(std::move(r));
   }
   if (records.size() != policies.size()) {
-    throw schema::InputError(source + ": row " + std::to_string(row) + ", realization " + std::to_string(realization) +
+    throw schema::InputError(place.file + ":" + std::to_string(place.line) + ": row " + std::to_string(row) + ", realization " + std::to_string(realization) +
                              ": " + std::to_string(records.size()) + " records, not one per policy");
   }
   return records;

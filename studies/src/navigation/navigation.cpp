@@ -127,25 +127,31 @@ void CheckErrorBins(double duration_s, const schema::NavigationConfig& navigatio
   }
 }
 
+UnitRecords<NavigationRecord> NavigationUnits(const schema::ExperimentConfig& config,
+                                              const registry::Components& components) {
+  const std::vector<schema::RowConfig> rows = schema::RowsOf(config);
+  const int realizations = config.realizations;
+  UnitRecords<NavigationRecord> study;
+  study.units = static_cast<int>(rows.size()) * realizations;
+  study.compute = [rows, realizations, seed = config.seed, navigation = *config.navigation, &components](int unit) {
+    const int row = unit / realizations;
+    return NavigateRealization(rows[static_cast<std::size_t>(row)], row, seed, unit % realizations, navigation,
+                               components);
+  };
+  study.text = NavigationUnitText;
+  study.read = [rows, realizations](const std::string& text, const engine::UnitPlace& place, int unit) {
+    const int row = unit / realizations;
+    return ReadNavigationUnit(text, place, row, unit % realizations,
+                              NavigationMethods(rows[static_cast<std::size_t>(row)]));
+  };
+  return study;
+}
+
 std::vector<NavigationRecord> RunNavigation(const schema::ExperimentConfig& config,
                                             const registry::Components& components, int threads, const Shard& shard,
                                             const RunControl& control, RecordJournal* journal) {
   CheckNavigation(config, components);
-  const std::vector<schema::RowConfig> rows = schema::RowsOf(config);
-  UnitRecords<NavigationRecord> study;
-  study.units = static_cast<int>(rows.size()) * config.realizations;
-  study.compute = [&](int unit) {
-    const int row = unit / config.realizations;
-    return NavigateRealization(rows[static_cast<std::size_t>(row)], row, config.seed, unit % config.realizations,
-                               *config.navigation, components);
-  };
-  study.text = NavigationUnitText;
-  study.read = [&](const std::string& text, const std::string& source, int unit) {
-    const int row = unit / config.realizations;
-    return ReadNavigationUnit(text, source, row, unit % config.realizations,
-                              NavigationMethods(rows[static_cast<std::size_t>(row)]));
-  };
-  return RunUnitRecords(study, threads, shard, control, journal);
+  return RunUnitRecords(NavigationUnits(config, components), threads, shard, control, journal);
 }
 
 std::vector<NavigationRecord> NavigateUnits(int units, int threads,

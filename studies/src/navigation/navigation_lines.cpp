@@ -106,10 +106,10 @@ std::string NavigationUnitText(const std::vector<NavigationRecord>& records) {
   return text;
 }
 
-std::vector<NavigationRecord> ReadNavigationUnit(const std::string& text, const std::string& source, int row,
+std::vector<NavigationRecord> ReadNavigationUnit(const std::string& text, const engine::UnitPlace& place, int row,
                                                  int realization, const std::vector<std::string>& methods) {
   std::istringstream in(std::string(kNavigationRecordColumns) + "\n" + text);
-  io::CsvReader csv(in, source);
+  io::CsvReader csv(in, place.file, static_cast<int>(place.line));  // the columns in the block header's place
   const NavigationRecordReader reader(csv);
   std::vector<NavigationRecord> records;
   while (csv.Next()) {
@@ -121,7 +121,7 @@ std::vector<NavigationRecord> ReadNavigationUnit(const std::string& text, const 
     records.push_back(std::move(r));
   }
   if (records.size() != methods.size()) {
-    throw schema::InputError(source + ": row " + std::to_string(row) + ", realization " + std::to_string(realization) +
+    throw schema::InputError(place.file + ":" + std::to_string(place.line) + ": row " + std::to_string(row) + ", realization " + std::to_string(realization) +
                              ": " + std::to_string(records.size()) + " records, not one per method");
   }
   return records;

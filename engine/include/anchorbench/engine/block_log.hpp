@@ -33,6 +33,9 @@ struct LoggedBlock {
 std::string ReadBlockLog(const std::filesystem::path& path, std::string_view kind,
                          const std::function<void(LoggedBlock&& block)>& take);
 
+// A block as the file holds it: its header line, then `text`.
+std::string BlockText(std::string_view kind, long long key, std::string_view tag, std::string_view text);
+
 // `path` rewritten (whole or absent) with the whole blocks whose ordinal in the file (0, 1, ...)
 // `keep` says, and nothing after them: what a resumed store keeps before it appends more.
 void RewriteBlockLog(const std::filesystem::path& path, std::string_view kind,

@@ -12,12 +12,24 @@
 #include <map>
 #include <mutex>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "anchorbench/engine/block_log.hpp"
 #include "anchorbench/engine/chunk_store.hpp"
 
 namespace anchorbench::engine {
+
+// A unit's block: its kind, and its checksum (of the job's identity, the unit and its text). A
+// record study's shard file holds the same blocks (shard_folder.hpp).
+inline constexpr const char* kUnitBlockKind = "unit";
+// Where a unit's text was read: its file, and the line of its block's header (the text's first
+// line is the next), for messages on its records.
+struct UnitPlace {
+  std::string file;
+  long long line = 0;
+};
+std::string UnitChecksum(std::string_view identity, long long unit, std::string_view text);
 
 class RecordJournal {
  public:
@@ -38,18 +50,20 @@ class RecordJournal {
   void Remove();
 
   const std::filesystem::path& folder() const { return folder_; }
-  // A unit TakeFinished gave that the study's parser refuses: counted with the unreadable blocks
-  // (the caller computes it again).
-  void Refuse(long long unit, const std::string& why);
+  // Where a unit TakeFinished gave was read.
+  UnitPlace PlaceOf(long long unit) const;
+  // A unit TakeFinished gave that the study's parser refuses, and why (a whole message, naming
+  // its place): counted with the unreadable blocks (the caller computes it again).
+  void Refuse(const std::string& why);
 
  private:
   void ReadBack(const std::filesystem::path& path);  // the blocks that read back, into finished_
-  std::string Checksum(long long unit, const std::string& text) const;  // of the identity, the unit and its text
 
   std::filesystem::path folder_;
   std::string identity_;
   long long units_ = 0;
   std::map<long long, std::string> finished_;
+  std::map<long long, long long> lines_;  // of each finished unit's block
   int unreadable_ = 0;
   std::string first_unreadable_;
   std::mutex mutex_;

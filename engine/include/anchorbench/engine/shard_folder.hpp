@@ -1,10 +1,13 @@
 #pragma once
-// A shard folder (`anchorbench run|sweep|navigate --shard I/N`) and what `anchorbench merge` reads back:
+// A shard folder (`anchorbench run|sweep|navigate|explore --shard I/N`) and what `anchorbench merge`
+// reads back:
 //   shard.csv      shard,of,chunks,command,name,plan,revision: which share of which plan, by which build;
 //   config.yaml    the resolved config (--seed, --set, --realizations applied);
 //   axes.txt       a sweep's axes, one KEY=VALUES a line (empty for a run);
-//   chunk-*.csv    the shard's chunks (chunk.hpp), named by index (navigate: navigation_shard.hpp's
-//                  records instead).
+//   chunk-*.csv    run, sweep: the shard's chunks (chunk.hpp), named by index;
+//   records.csv    a study of record units (navigate, explore; unit_records.hpp): each unit a
+//                  block `unit,<index>,<bytes>,<checksum>` and its records' text, as the record
+//                  journal keeps them, the checksum bound to the plan's identity.
 // The config and axes rebuild the plan; its identity must be shard.csv's, so an edited folder is
 // refused rather than merged.
 
@@ -18,14 +21,15 @@
 #include "anchorbench/schema/sweep.hpp"
 #include "anchorbench/engine/chunk.hpp"
 #include "anchorbench/engine/plan.hpp"
+#include "anchorbench/engine/record_journal.hpp"
 #include "anchorbench/engine/shard.hpp"
 
 namespace anchorbench::engine {
 
 struct ShardInfo {
   Shard shard;
-  int chunks = 0;         // chunks this shard holds
-  std::string command;    // "run", "sweep" or "navigate"
+  int chunks = 0;         // chunks this shard holds (a study of record units: its units)
+  std::string command;    // "run", "sweep", or the study of record units ("navigate", "explore")
   std::string name;       // the experiment's name (its file's stem), for the merged tables
   std::string plan;       // the plan's identity
   std::string revision;   // of the build that ran it
@@ -46,6 +50,20 @@ void WriteShardFolder(const std::function<void(const std::string&, const std::st
 // shard.csv, config.yaml and axes.txt, shard.csv last (a folder with it was written whole).
 void WriteShardIdentity(const std::function<void(const std::string&, const std::string&)>& write,
                         const ShardInfo& info, const ShardInputs& inputs);
+
+// A study of record units' shard: records.csv of `units` (unit -> its text), then the identity.
+inline constexpr const char* kShardRecordsFile = "records.csv";
+void WriteShardUnits(const std::function<void(const std::string&, const std::string&)>& write, const ShardInfo& info,
+                     const ShardInputs& inputs, const std::map<int, std::string>& units);
+
+struct ShardUnit {
+  std::string text;
+  UnitPlace place;  // records.csv and its block's line, for messages on its records
+};
+// The units of a shard's records.csv, each checked against its checksum and the shard (refused,
+// as an InputError naming the file and line: a torn or edited file, a unit the shard does not
+// hold or holds twice, fewer or more units than shard.csv says, a unit of another plan).
+std::map<int, ShardUnit> ReadShardUnits(const std::filesystem::path& folder, const ShardInfo& info, long long units);
 
 ShardInfo ReadShardInfo(const std::filesystem::path& folder);
 ShardInputs ReadShardInputs(const std::filesystem::path& folder);

@@ -1,9 +1,9 @@
 #pragma once
-// A study whose (row, realization) units each give records (navigate, explore): the units computed
-// on threads, each appended to the study's journal as it finishes, and those a killed run's journal
-// kept taken back instead of computed again. The study says how one unit is computed, how its
-// records are written into the journal and how they are read back; this file does the rest, the
-// same way for every such study.
+// A study whose (row, realization) units each give records (navigate, explore, the PDOP study): the
+// units computed on threads, each appended to the study's journal as it finishes, and those a
+// killed run's journal kept taken back instead of computed again. The study says how one unit is
+// computed, how its records are written as text (the journal's and a shard's) and read back; this
+// file does the rest, the same way for every such study.
 
 #include <functional>
 #include <map>
@@ -23,53 +23,84 @@ template <typename Record>
 struct UnitRecords {
   int units = 0;  // unit = row * realizations + realization
   std::function<std::vector<Record>(int unit)> compute;
-  // With a journal only: a unit's records as whole lines, as the journal keeps them, and read back
-  // (throws schema::InputError naming `source` where the text is not that unit's records).
+  // With a journal or shards only: a unit's records as whole lines, as the journal keeps them, and
+  // read back (throws schema::InputError naming `place` where the text is not that unit's records).
   std::function<std::string(const std::vector<Record>&)> text;
-  std::function<std::vector<Record>(const std::string& text, const std::string& source, int unit)> read;
+  std::function<std::vector<Record>(const std::string& text, const UnitPlace& place, int unit)> read;
 };
 
-// The units `shard` holds on `threads` threads (ParallelRecords), their records joined in unit
-// order: the same for any thread count, whichever units came from the journal. With a journal, its
-// units that read back are taken as they are (the rest refused in it, and computed again), and each
-// unit computed is appended to it as it finishes. `control` sees the units computed now.
+// The units `shard` holds, computed on `threads` threads (ParallelRecords), as their records'
+// texts (study.text), by unit: the same for any thread count, whichever units came from the
+// journal. With a journal, its units that read back (study.read) are taken as they were kept (the
+// rest refused in it, and computed again), and each unit computed is appended to it as it
+// finishes. `control` sees the units computed now.
 template <typename Record>
-std::vector<Record> RunUnitRecords(const UnitRecords<Record>& study, int threads, const Shard& shard,
-                                   const RunControl& control, RecordJournal* journal) {
-  std::map<int, std::vector<Record>> finished;
+std::map<int, std::string> RunUnitTexts(const UnitRecords<Record>& study, int threads, const Shard& shard,
+                                        const RunControl& control, RecordJournal* journal) {
+  std::map<int, std::string> texts;
   if (journal) {
     for (auto& [unit, text] : journal->TakeFinished()) {
       if (!shard.Holds(static_cast<int>(unit))) {
-        journal->Refuse(unit, "not a unit of this shard");
+        const UnitPlace place = journal->PlaceOf(unit);
+        journal->Refuse(place.file + ":" + std::to_string(place.line) + ": unit " + std::to_string(unit) +
+                                  " is not a unit of this shard");
         continue;
       }
       try {
-        finished.emplace(static_cast<int>(unit), study.read(text, journal->folder().string(), static_cast<int>(unit)));
+        study.read(text, journal->PlaceOf(unit), static_cast<int>(unit));
+        texts.emplace(static_cast<int>(unit), std::move(text));
       } catch (const schema::InputError& e) {
-        journal->Refuse(unit, e.what());
+        journal->Refuse(e.what());
       }
     }
   }
   std::vector<int> missing;
   for (int unit = 0; unit < study.units; ++unit) {
-    if (shard.Holds(unit) && finished.count(unit) == 0) missing.push_back(unit);
+    if (shard.Holds(unit) && texts.count(unit) == 0) missing.push_back(unit);
   }
-  using UnitOfRecords = std::pair<int, std::vector<Record>>;
-  std::vector<UnitOfRecords> computed = ParallelRecords<UnitOfRecords>(
+  using UnitText = std::pair<int, std::string>;
+  std::vector<UnitText> computed = ParallelRecords<UnitText>(
       static_cast<int>(missing.size()), threads,
       [&](int i) {
         const int unit = missing[static_cast<std::size_t>(i)];
-        std::vector<Record> records = study.compute(unit);
-        if (journal) journal->Append(unit, study.text(records));
-        return std::vector<UnitOfRecords>{{unit, std::move(records)}};
+        std::string text = study.text(study.compute(unit));
+        if (journal) journal->Append(unit, text);
+        return std::vector<UnitText>{{unit, std::move(text)}};
       },
       control);
-  for (auto& [unit, records] : computed) finished.emplace(unit, std::move(records));
+  for (auto& [unit, text] : computed) texts.emplace(unit, std::move(text));
+  return texts;
+}
+
+// Every unit's records read back from its text (study.read, naming `place_of(unit)` where one is
+// not that unit's records), joined in unit order.
+template <typename Record>
+std::vector<Record> ReadUnitTexts(const UnitRecords<Record>& study, const std::map<int, std::string>& texts,
+                                  const std::function<UnitPlace(int unit)>& place_of) {
   std::vector<Record> records;
-  for (auto& [unit, of_unit] : finished) {
-    for (Record& r : of_unit) records.push_back(std::move(r));
+  for (const auto& [unit, text] : texts) {
+    for (Record& r : study.read(text, place_of(unit), unit)) records.push_back(std::move(r));
   }
   return records;
+}
+
+// The records of the units `shard` holds, joined in unit order: the same for any thread count.
+// With a journal, through the units' texts (RunUnitTexts), read back at round-trip precision: a
+// resumed run gives the uninterrupted run's records. Without one, straight from study.compute.
+template <typename Record>
+std::vector<Record> RunUnitRecords(const UnitRecords<Record>& study, int threads, const Shard& shard,
+                                   const RunControl& control, RecordJournal* journal) {
+  if (journal) {
+    return ReadUnitTexts(study, RunUnitTexts(study, threads, shard, control, journal),
+                         [journal](int unit) { return journal->PlaceOf(unit); });
+  }
+  std::vector<int> held;
+  for (int unit = 0; unit < study.units; ++unit) {
+    if (shard.Holds(unit)) held.push_back(unit);
+  }
+  return ParallelRecords<Record>(
+      static_cast<int>(held.size()), threads, [&](int i) { return study.compute(held[static_cast<std::size_t>(i)]); },
+      control);
 }
 
 }  // namespace anchorbench::engine

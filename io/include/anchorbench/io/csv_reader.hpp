@@ -17,8 +17,9 @@ namespace anchorbench::io {
 // reusing its buffers (no allocation per line once warm).
 class CsvReader {
  public:
-  // `source` names the stream in messages (the file's path).
-  CsvReader(std::istream& in, std::string source);
+  // `source` names the stream in messages (the file's path); `header_line` is the header's line in
+  // it (a text cut from a larger file counts its lines from there).
+  CsvReader(std::istream& in, std::string source, int header_line = 1);
 
   // Index of the first of `names` (a column and its aliases) present in the header.
   int Column(std::initializer_list<std::string_view> names) const;

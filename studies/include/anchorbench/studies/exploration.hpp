@@ -17,6 +17,7 @@
 #include "anchorbench/engine/commit.hpp"
 #include "anchorbench/engine/record_journal.hpp"
 #include "anchorbench/engine/run_control.hpp"
+#include "anchorbench/engine/unit_records.hpp"
 #include "anchorbench/registry/components.hpp"
 #include "anchorbench/schema/experiment.hpp"
 
@@ -56,6 +57,12 @@ std::vector<ExplorationRecord> ExploreRealization(const schema::RowConfig& row, 
 // for any thread count. Checks the config first (CheckExploration). With a journal, its units that
 // read back are taken as they are, and each unit computed is appended to it as it finishes
 // (unit_records.hpp): a killed run resumes with the same bytes.
+// The study's units (unit = row * realizations + realization) for the runner (unit_records.hpp):
+// computed by ExploreRealization, kept as exploration_lines.hpp's text. It holds what it needs of
+// the config; `components` must outlive it.
+engine::UnitRecords<ExplorationRecord> ExplorationUnits(const schema::ExperimentConfig& config,
+                                                        const registry::Components& components);
+
 std::vector<ExplorationRecord> RunExploration(const schema::ExperimentConfig& config,
                                               const registry::Components& components, int threads,
                                               const engine::RunControl& control = {}, engine::RecordJournal* journal = nullptr);

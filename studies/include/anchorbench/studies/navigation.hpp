@@ -13,6 +13,7 @@
 #include "anchorbench/engine/commit.hpp"
 #include "anchorbench/engine/record_journal.hpp"
 #include "anchorbench/engine/run_control.hpp"
+#include "anchorbench/engine/unit_records.hpp"
 #include "anchorbench/engine/shard.hpp"
 #include "anchorbench/nav/navigate.hpp"
 #include "anchorbench/registry/components.hpp"
@@ -75,6 +76,12 @@ void CheckErrorBins(double duration_s, const schema::NavigationConfig& navigatio
 // method: the same for any thread count. Checks the config first (CheckNavigation). With a
 // journal, its units that read back are taken as they are (the rest of its blocks refused in it),
 // and each unit computed is appended to it as it finishes: a killed run resumes with the same bytes.
+// The study's units (unit = row * realizations + realization) for the runner (unit_records.hpp):
+// computed by NavigateRealization, kept as navigation_lines.hpp's text. It holds what it needs of
+// the config; `components` must outlive it.
+engine::UnitRecords<NavigationRecord> NavigationUnits(const schema::ExperimentConfig& config,
+                                                      const registry::Components& components);
+
 std::vector<NavigationRecord> RunNavigation(const schema::ExperimentConfig& config,
                                             const registry::Components& components, int threads,
                                             const engine::Shard& shard = {}, const engine::RunControl& control = {},

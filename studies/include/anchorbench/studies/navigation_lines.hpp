@@ -1,11 +1,12 @@
 #pragma once
-// A navigation study's records as CSV lines at round-trip precision, and back: what a shard's
-// navigation_records.csv and navigate's journal (record_journal.hpp) hold, so that records read
-// back give the uninterrupted, unsharded run's bytes.
+// A navigation study's records as CSV lines at round-trip precision, and back: what navigate's
+// journal (record_journal.hpp) and its shards' records.csv hold, so that records read back give the
+// uninterrupted, unsharded run's bytes.
 
 #include <string>
 #include <vector>
 
+#include "anchorbench/engine/record_journal.hpp"
 #include "anchorbench/studies/navigation.hpp"
 #include "anchorbench/io/csv_reader.hpp"
 
@@ -35,10 +36,11 @@ class NavigationRecordReader {
   int row_, realization_, method_, rmse_, final_error_, t_first_, t_kth_, fix_, used_, gated_, bins_;
 };
 
-// A realization's records as the lines of a journal's unit, and back: refuses (InputError naming
-// `source`) lines that are not `row` and `realization`'s records of `methods`, each once, in order.
+// A realization's records as the lines of a journal's or a shard's unit, and back: refuses
+// (InputError naming `place`'s file and the line) lines that are not `row` and `realization`'s
+// records of `methods`, each once, in order.
 std::string NavigationUnitText(const std::vector<NavigationRecord>& records);
-std::vector<NavigationRecord> ReadNavigationUnit(const std::string& text, const std::string& source, int row,
+std::vector<NavigationRecord> ReadNavigationUnit(const std::string& text, const engine::UnitPlace& place, int row,
                                                  int realization, const std::vector<std::string>& methods);
 
 }  // namespace anchorbench::studies
