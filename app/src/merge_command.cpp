@@ -9,7 +9,6 @@
 #include "anchorbench/engine/commit.hpp"
 #include "anchorbench/engine/shard_folder.hpp"
 #include "anchorbench/studies/record_study.hpp"
-#include "anchorbench/engine/shard_folder.hpp"
 #include "monte_carlo_command.hpp"
 
 namespace anchorbench::app {
@@ -99,17 +98,16 @@ report::RunInfo MergedInfo(const MergeArgs& args, const engine::ShardInfo& first
   return info;
 }
 
-// Every unit of a study of record units, each from the shard that holds it (engine::ReadShardUnits):
-// unit -> its text, and where it was read.
+// Every one of a study's `units`, each from the shard that holds it (engine::ReadShardUnits): unit
+// -> its text, and where it was read.
 std::map<int, engine::ShardUnit> ReadUnits(const MergeArgs& args, const std::vector<engine::ShardInfo>& infos,
-                                           const schema::ExperimentConfig& config) {
-  const long long units = static_cast<long long>(schema::RowsOf(config).size()) * config.realizations;
+                                           int units, int realizations) {
   std::map<int, engine::ShardUnit> read;
   for (std::size_t s = 0; s < args.shards.size(); ++s) read.merge(engine::ReadShardUnits(args.shards[s], infos[s], units));
   for (int unit = 0; unit < units; ++unit) {
     if (read.count(unit) == 0) {
-      throw InputError("row " + std::to_string(unit / config.realizations) + ", realization " +
-                       std::to_string(unit % config.realizations) + ": no shard holds its records (edited after the run?)");
+      throw InputError("row " + std::to_string(unit / realizations) + ", realization " +
+                       std::to_string(unit % realizations) + ": no shard holds its records (edited after the run?)");
     }
   }
   return read;
@@ -122,14 +120,17 @@ int MergeUnits(const studies::RecordStudy& study, const MergeArgs& args, const s
   schema::ExperimentConfig config = plan.experiments().front();
   config.name = infos.front().name;
   study.check(config, app.components);
-  const std::map<int, engine::ShardUnit> read = ReadUnits(args, infos, config);
   std::map<int, std::string> texts;
-  for (const auto& [unit, shard_unit] : read) texts.emplace(unit, shard_unit.text);
+  std::map<int, engine::UnitPlace> places;
+  for (auto& [unit, read] : ReadUnits(args, infos, study.units(config, app.components), config.realizations)) {
+    texts.emplace(unit, std::move(read.text));
+    places.emplace(unit, std::move(read.place));
+  }
   report::RunInfo info = MergedInfo(args, infos.front(), inputs, app);
   info.command_line.insert(info.command_line.begin(), study.command);
   const std::string markdown = study.write(
       [&](const std::string& name, const std::function<void(std::ostream&)>& write) { out.Write(name, write); }, config,
-      app.components, texts, [&read](int unit) { return read.at(unit).place; }, info);
+      app.components, texts, [&places](int unit) { return places.at(unit); }, info);
   out.Commit();
   if (!args.quiet) std::cout << markdown;
   return 0;

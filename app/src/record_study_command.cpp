@@ -26,7 +26,7 @@ int RecordStudyCommand(const std::string& command, const RecordStudyArgs& args, 
   engine::RecordJournal journal(setup.out,
                                 plan.identity() + " " + command + " shard " + std::to_string(units_of.index) + "/" +
                                     std::to_string(units_of.count),
-                                static_cast<long long>(schema::RowsOf(config).size()) * config.realizations,
+                                study->units(config, app.components),
                                 StoreMode(args), InputsOf(args));
   Progress progress(command + " " + config.name, args.quiet);
   const std::map<int, std::string> units = study->run(

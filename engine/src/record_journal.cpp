@@ -46,7 +46,7 @@ RecordJournal::RecordJournal(const fs::path& out, std::string identity, long lon
 void RecordJournal::ReadBack(const fs::path& path) {
   std::vector<bool> kept;  // by the block's ordinal in the file
   const std::string damage = ReadBlockLog(path, kUnitBlockKind, [&](LoggedBlock&& block) {
-    const std::string what = path.string() + ":" + std::to_string(block.line) + ": unit " + std::to_string(block.key);
+    const std::string what = UnitPlace{path.string(), block.line}.where() + ": unit " + std::to_string(block.key);
     std::string why;
     if (block.key >= units_ || finished_.count(block.key) > 0) {
       why = what + " is not a unit of this run, or a second copy";

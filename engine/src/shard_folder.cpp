@@ -58,8 +58,8 @@ std::map<int, ShardUnit> ReadShardUnits(const fs::path& folder, const ShardInfo&
   if (!fs::exists(path)) throw schema::InputError(path.string() + ": missing (a folder edited after the run?)");
   std::map<int, ShardUnit> read;
   const std::string damage = ReadBlockLog(path, kUnitBlockKind, [&](LoggedBlock&& block) {
-    const std::string where = path.string() + ":" + std::to_string(block.line);
-    const std::string what = where + ": unit " + std::to_string(block.key);
+    const UnitPlace place{path.string(), block.line};
+    const std::string what = place.where() + ": unit " + std::to_string(block.key);
     if (block.key >= units || !info.shard.Holds(static_cast<int>(block.key))) {
       throw schema::InputError(what + " is not a unit of shard " + std::to_string(info.shard.index) + "/" +
                                std::to_string(info.shard.count) + " (edited after the run?)");
@@ -67,7 +67,7 @@ std::map<int, ShardUnit> ReadShardUnits(const fs::path& folder, const ShardInfo&
     if (block.tag != UnitChecksum(info.plan, block.key, block.text)) {
       throw schema::InputError(what + " does not match its checksum (edited after the run, or another run's?)");
     }
-    if (!read.emplace(static_cast<int>(block.key), ShardUnit{std::move(block.text), {path.string(), block.line}}).second) {
+    if (!read.emplace(static_cast<int>(block.key), ShardUnit{std::move(block.text), place}).second) {
       throw schema::InputError(what + " is there twice (edited after the run?)");
     }
   });

@@ -14,6 +14,9 @@ RecordStudy Entry(std::string command, Units units, Check check, Write write_fil
   study.command = std::move(command);
   study.check = check;
   study.result_bytes = std::move(result_bytes);
+  study.units = [units](const schema::ExperimentConfig& config, const registry::Components& components) {
+    return units(config, components).units;
+  };
   study.run = [units](const schema::ExperimentConfig& config, const registry::Components& components, int threads,
                       const engine::Shard& shard, const engine::RunControl& control, engine::RecordJournal* journal) {
     return engine::RunUnitTexts(units(config, components), threads, shard, control, journal);

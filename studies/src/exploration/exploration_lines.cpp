@@ -72,8 +72,8 @@ std::vector<ExplorationRecord> ReadExplorationUnit(const std::string& text, cons
     records.push_back(std::move(r));
   }
   if (records.size() != policies.size()) {
-    throw schema::InputError(place.file + ":" + std::to_string(place.line) + ": row " + std::to_string(row) + ", realization " + std::to_string(realization) +
-                             ": " + std::to_string(records.size()) + " records, not one per policy");
+    throw schema::InputError(place.where() + ": row " + std::to_string(row) + ", realization " +
+                             std::to_string(realization) + ": " + std::to_string(records.size()) + " records, not one per policy");
   }
   return records;
 }

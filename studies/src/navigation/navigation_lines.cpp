@@ -121,7 +121,7 @@ std::vector<NavigationRecord> ReadNavigationUnit(const std::string& text, const 
     records.push_back(std::move(r));
   }
   if (records.size() != methods.size()) {
-    throw schema::InputError(place.file + ":" + std::to_string(place.line) + ": row " + std::to_string(row) + ", realization " + std::to_string(realization) +
+    throw schema::InputError(place.where() + ": row " + std::to_string(row) + ", realization " + std::to_string(realization) +
                              ": " + std::to_string(records.size()) + " records, not one per method");
   }
   return records;

@@ -28,6 +28,7 @@ inline constexpr const char* kUnitBlockKind = "unit";
 struct UnitPlace {
   std::string file;
   long long line = 0;
+  std::string where() const { return file + ":" + std::to_string(line); }  // "FILE:LINE", as messages begin
 };
 std::string UnitChecksum(std::string_view identity, long long unit, std::string_view text);
 

@@ -41,9 +41,8 @@ std::map<int, std::string> RunUnitTexts(const UnitRecords<Record>& study, int th
   if (journal) {
     for (auto& [unit, text] : journal->TakeFinished()) {
       if (!shard.Holds(static_cast<int>(unit))) {
-        const UnitPlace place = journal->PlaceOf(unit);
-        journal->Refuse(place.file + ":" + std::to_string(place.line) + ": unit " + std::to_string(unit) +
-                                  " is not a unit of this shard");
+        journal->Refuse(journal->PlaceOf(unit).where() + ": unit " + std::to_string(unit) +
+                        " is not a unit of this shard");
         continue;
       }
       try {

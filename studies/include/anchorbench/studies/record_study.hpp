@@ -25,6 +25,8 @@ struct RecordStudy {
   std::string command;  // "navigate": the command line's, shard.csv's
   // Refuses (InputError) a config the study cannot run, before any work.
   std::function<void(const schema::ExperimentConfig&, const registry::Components&)> check;
+  // How many (row, realization) units the config has.
+  std::function<int(const schema::ExperimentConfig&, const registry::Components&)> units;
   // About the size of its result files, for the result folder's free-space check.
   std::function<std::uintmax_t(const schema::ExperimentConfig&)> result_bytes;
   // The units `shard` holds as their texts (engine::RunUnitTexts, with the journal if any).
