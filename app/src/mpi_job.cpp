@@ -12,16 +12,18 @@
 #include "interrupt.hpp"
 
 #include "anchorbench/schema/input_error.hpp"
+#include "anchorbench/studies/record_study.hpp"
 
 namespace anchorbench::app {
 namespace {
 
 // Rank 0 -> worker: kPlan (the experiments' texts and their identity), kStart (a Compute begins:
-// the worker's threads, each on its own, ask for chunks), kStop. A worker thread -> rank 0: kReady
-// (its thread number) or kResult (thread, chunk index, chunk text, the chunk's records: also a
-// request for the next; rank 0 stores the text and reads the records, parsing no text),
-// kError (exit code and message). Rank 0 -> a worker thread: kChunkFor + thread (a chunk index,
-// or empty: no more for this Compute).
+// threads, and the study of record units whose units it computes, or none for the plan's chunks;
+// the worker's threads, each on its own, ask for items), kStop. A worker thread -> rank 0: kReady
+// (its thread number) or kResult, also a request for the next: thread, item and, for a chunk, its
+// text and its records (rank 0 stores the text and reads the records, parsing no text), for a
+// unit its text; kError (exit code and message). Rank 0 -> a worker thread: kChunkFor + thread
+// (an item's index, or empty: no more for this Compute).
 enum Tag : int { kPlan = 1, kStart, kStop, kReady, kResult, kError, kChunkFor = 100 };
 
 void Send(int rank, Tag tag, const std::string& text) {
@@ -66,20 +68,37 @@ std::vector<std::string> Unpack(const std::string& packed) {
 void MpiExecutor::Compute(const engine::Plan& plan, const std::vector<int>& chunks, int threads,
                           const engine::ChunkDone& done) {
   if (ranks_ == 1 || chunks.empty()) return local_.Compute(plan, chunks, threads, done);
+  HandOut(plan, "", chunks, threads, [&](std::vector<std::string>& fields, const std::string& rank) {
+    const int chunk = std::stoi(fields.at(1));
+    done(chunk, engine::FromRecords(plan, chunk, fields.at(2), fields.at(3), rank + "'s chunk " + fields[1]),
+         fields[2]);
+  });
+}
+
+void MpiExecutor::ComputeUnits(const engine::UnitWork& work, const std::vector<int>& units, int threads,
+                               const engine::UnitDone& done) {
+  if (ranks_ == 1 || units.empty()) return local_.ComputeUnits(work, units, threads, done);
+  HandOut(*work.plan, work.study, units, threads, [&](std::vector<std::string>& fields, const std::string&) {
+    done(std::stoi(fields.at(1)), std::move(fields.at(2)));
+  });
+}
+
+void MpiExecutor::HandOut(const engine::Plan& plan, const std::string& study, const std::vector<int>& items,
+                          int threads, const Take& take) {
   busy_ = true;
   std::vector<std::string> message = {plan.identity()};
   message.insert(message.end(), plan.texts().begin(), plan.texts().end());
   const std::string packed = Pack(message);
   for (int rank = 1; rank < ranks_; ++rank) {
     if (packed != plan_sent_) Send(rank, kPlan, packed);
-    Send(rank, kStart, std::to_string(threads));
+    Send(rank, kStart, Pack({std::to_string(threads), study}));
   }
   plan_sent_ = packed;
-  // Every worker thread asks for a chunk, and for the next with each result, until told no more.
+  // Every worker thread asks for an item, and for the next with each result, until told no more.
   std::size_t next = 0, received = 0;
   int told_no_more = 0;
   const int asking = (ranks_ - 1) * threads;
-  while (received < chunks.size() || told_no_more < asking) {
+  while (received < items.size() || told_no_more < asking) {
     MPI_Status status;
     const std::string text = Receive(MPI_ANY_SOURCE, MPI_ANY_TAG, status);
     engine::ThrowIfStopped(stop_);  // busy_ stays set: Finish aborts the workers mid-plan
@@ -88,16 +107,14 @@ void MpiExecutor::Compute(const engine::Plan& plan, const std::vector<int>& chun
       if (text.rfind("2", 0) == 0) throw schema::InputError(rank + ": " + text.substr(1));
       throw std::runtime_error(rank + ": " + text.substr(1));
     }
-    const std::vector<std::string> fields = Unpack(text);  // thread [, chunk, chunk text, records]
+    std::vector<std::string> fields = Unpack(text);  // thread [, item, its result's texts]
     if (status.MPI_TAG == kResult) {
-      const int chunk = std::stoi(fields[1]);
-      done(chunk, engine::FromRecords(plan, chunk, fields[2], fields[3], rank + "'s chunk " + std::to_string(chunk)),
-           fields[2]);
+      take(fields, rank);
       ++received;
     }
     const int reply_tag = kChunkFor + std::stoi(fields[0]);
-    if (next < chunks.size()) {
-      Send(status.MPI_SOURCE, static_cast<Tag>(reply_tag), std::to_string(chunks[next++]));
+    if (next < items.size()) {
+      Send(status.MPI_SOURCE, static_cast<Tag>(reply_tag), std::to_string(items[next++]));
     } else {
       Send(status.MPI_SOURCE, static_cast<Tag>(reply_tag), "");
       ++told_no_more;
@@ -123,24 +140,20 @@ int MpiJob::Init(int& argc, char**& argv, int& rank) {
 MpiJob::MpiJob(int& argc, char**& argv, const registry::Components& components)
     : components_(components), ranks_(Init(argc, argv, rank_)), executor_(components, ranks_, &InterruptFlag()) {}
 
-// One worker thread: asks for a chunk, computes it, sends it (asking for the next), until rank 0
-// says no more. Errors go to rank 0, which ends the job.
-void ServeThread(const engine::Plan* plan, const std::string& plan_error, int thread,
-                 const registry::Components& components) {
-  std::vector<estimator::RangeSample> samples;
+// One worker thread: asks for an item (a chunk or a unit), computes it, sends its result's texts
+// (asking for the next), until rank 0 says no more. Errors go to rank 0, which ends the job.
+void ServeThread(const std::function<std::vector<std::string>(int item)>& compute, int thread) {
   std::string request = Pack({std::to_string(thread)});
   Tag tag = kReady;
   for (;;) {
     Send(0, tag, request);
     MPI_Status status;
-    const std::string chunk_text = Receive(0, kChunkFor + thread, status);
-    if (chunk_text.empty()) return;
-    const int chunk = std::stoi(chunk_text);
+    const std::string item_text = Receive(0, kChunkFor + thread, status);
+    if (item_text.empty()) return;
     try {
-      if (!plan) throw schema::InputError(plan_error);
-      const engine::ChunkResult result = engine::ComputeChunk(*plan, chunk, components, samples, &InterruptFlag());
-      request = Pack({std::to_string(thread), chunk_text, engine::ChunkText(*plan, chunk, result),
-                      engine::ChunkRecords(*plan, chunk, result)});
+      std::vector<std::string> result = compute(std::stoi(item_text));
+      result.insert(result.begin(), {std::to_string(thread), item_text});
+      request = Pack(result);
       tag = kResult;
     } catch (const schema::InputError& e) {
       request = std::string("2") + e.what();
@@ -166,14 +179,31 @@ int MpiJob::Serve() {
       try {
         plan.emplace(engine::PlanFromTexts({message.begin() + 1, message.end()}, message[0], components_));
       } catch (const std::exception& e) {
-        plan_error = e.what();  // reported for the first chunk asked of it
+        plan_error = e.what();  // reported for the first item asked of it
       }
       continue;
     }
-    const int threads = std::stoi(text);  // kStart
-    const engine::Plan* computing = plan ? &*plan : nullptr;
-#pragma omp parallel num_threads(threads)
-    ServeThread(computing, plan_error, omp_get_thread_num(), components_);
+    const std::vector<std::string> start = Unpack(text);  // kStart: threads, the study (none: chunks)
+    std::string error = plan ? "" : plan_error;
+    std::function<std::string(int)> unit_text;
+    if (plan && !start[1].empty()) {
+      const studies::RecordStudy* study = studies::FindRecordStudy(start[1]);
+      if (study) {
+        unit_text = study->unit_text(plan->experiments().front(), components_);
+      } else {
+        error = "'" + start[1] + "' is not a study of record units";
+      }
+    }
+#pragma omp parallel num_threads(std::stoi(start[0]))
+    {
+      std::vector<estimator::RangeSample> samples;  // this thread's, reused from chunk to chunk
+      ServeThread([&](int item) -> std::vector<std::string> {
+        if (!error.empty()) throw schema::InputError(error);
+        if (unit_text) return {unit_text(item)};
+        const engine::ChunkResult result = engine::ComputeChunk(*plan, item, components_, samples, &InterruptFlag());
+        return {engine::ChunkText(*plan, item, result), engine::ChunkRecords(*plan, item, result)};
+      }, omp_get_thread_num());
+    }
   }
   MPI_Finalize();
   return 0;

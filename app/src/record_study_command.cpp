@@ -30,7 +30,7 @@ int RecordStudyCommand(const std::string& command, const RecordStudyArgs& args, 
                                 StoreMode(args), InputsOf(args));
   Progress progress(command + " " + config.name, args.quiet);
   const std::map<int, std::string> units = study->run(
-      config, app.components, setup.threads, units_of,
+      config, app.components, {&app.executor, command, &plan, setup.threads}, units_of,
       {[&](long long done, long long total) { progress.Update(done, total); }, app.stop}, &journal);
   NoteUnreadable(journal);
   const double wall_time_s = progress.elapsed_s();

@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
-# MPI (issue 15): `mpirun -n K anchorbench-mpi run|sweep|calibrate` writes the plain binary's
-# bytes (run for K = 2 and 3 and 1 or 2 threads a rank, sweep and calibrate for K = 3); bad input
+# MPI (issue 15): `mpirun -n K anchorbench-mpi run|sweep|calibrate|navigate|explore` writes the plain
+# binary's bytes (run for K = 2 and 3 and 1 or 2 threads a rank, sweep, calibrate and navigate for K = 3,
+# explore for K = 2); bad input
 # ends every rank with exit 2 (no hang); a rank killed mid-run fails the job with no result
 # folder, and --resume finishes it to the same bytes.
 # Arguments: the plain anchorbench, anchorbench-mpi, the configs folder.
@@ -62,6 +63,24 @@ for file in out/evaluations.csv out/verification.csv out/calibration.md tiny.cal
     fail "mpirun calibrate: $file differs"
 done
 echo "ok: mpirun -n 3 calibrate: the plain calibration's bytes"
+
+# navigate and explore: their units handed out to the ranks like chunks (one study of record units each).
+{ sed 's/^realizations: 5$/realizations: 3/' "$dir/small.yaml"; printf 'navigation: {}\n'; } >"$dir/navigated.yaml"
+"$bin" navigate "$dir/navigated.yaml" --out "$dir/nav_plain" --quiet --threads 2 || fail "plain navigate"
+explore="$configs/exploration_uav_hall.yaml"
+"$bin" explore "$explore" --realizations 3 --out "$dir/ex_plain" --quiet --threads 2 || fail "plain explore"
+mpi 3 "$mpi_bin" navigate "$dir/navigated.yaml" --out "$dir/nav_mpi" --quiet --threads 1 >/dev/null 2>&1 ||
+  fail "mpirun navigate"
+mpi 2 "$mpi_bin" explore "$explore" --realizations 3 --out "$dir/ex_mpi" --quiet --threads 2 >/dev/null 2>&1 ||
+  fail "mpirun explore"
+for study in nav ex; do
+  for file in "$dir/${study}_plain"/*; do
+    name=$(basename "$file")
+    [ "$name" = manifest.json ] && continue
+    cmp -s "$file" "$dir/${study}_mpi/$name" || fail "mpirun $study: $name differs"
+  done
+done
+echo "ok: mpirun navigate (-n 3) and explore (-n 2): the plain runs' bytes"
 
 err=$(mpi 3 "$mpi_bin" run "$dir/missing.yaml" --out "$dir/never" 2>&1)
 status=$?

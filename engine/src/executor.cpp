@@ -44,4 +44,19 @@ void LocalExecutor::Compute(const Plan& plan, const std::vector<int>& chunks, in
   }, stop_);
 }
 
+void ComputeUnitsHere(const UnitWork& work, const std::vector<int>& units, int threads, const UnitDone& done,
+                      const StopFlag* stop) {
+  std::mutex done_mutex;  // `done` sees one unit at a time
+  ParallelFor(static_cast<int>(units.size()), threads, [&](int i, int) {
+    const int unit = units[static_cast<std::size_t>(i)];
+    std::string text = work.text_of(unit);
+    const std::lock_guard<std::mutex> lock(done_mutex);
+    done(unit, std::move(text));
+  }, stop);
+}
+
+void Executor::ComputeUnits(const UnitWork& work, const std::vector<int>& units, int threads, const UnitDone& done) {
+  ComputeUnitsHere(work, units, threads, done, nullptr);
+}
+
 }  // namespace anchorbench::engine

@@ -17,9 +17,13 @@ RecordStudy Entry(std::string command, Units units, Check check, Write write_fil
   study.units = [units](const schema::ExperimentConfig& config, const registry::Components& components) {
     return units(config, components).units;
   };
-  study.run = [units](const schema::ExperimentConfig& config, const registry::Components& components, int threads,
-                      const engine::Shard& shard, const engine::RunControl& control, engine::RecordJournal* journal) {
-    return engine::RunUnitTexts(units(config, components), threads, shard, control, journal);
+  study.run = [units](const schema::ExperimentConfig& config, const registry::Components& components,
+                      const engine::UnitComputing& computing, const engine::Shard& shard,
+                      const engine::RunControl& control, engine::RecordJournal* journal) {
+    return engine::RunUnitTexts(units(config, components), computing, shard, control, journal);
+  };
+  study.unit_text = [units](const schema::ExperimentConfig& config, const registry::Components& components) {
+    return [study = units(config, components)](int unit) { return study.text(study.compute(unit)); };
   };
   study.write = [units, write_files](const engine::FileWriter& write, const schema::ExperimentConfig& config,
                                      const registry::Components& components, const std::map<int, std::string>& texts,

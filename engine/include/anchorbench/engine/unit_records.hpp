@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "anchorbench/engine/executor.hpp"
+#include "anchorbench/engine/plan.hpp"
 #include "anchorbench/engine/record_journal.hpp"
 #include "anchorbench/engine/run_control.hpp"
 #include "anchorbench/engine/shard.hpp"
@@ -29,14 +30,24 @@ struct UnitRecords {
   std::function<std::vector<Record>(const std::string& text, const UnitPlace& place, int unit)> read;
 };
 
-// The units `shard` holds, computed on `threads` threads (ParallelRecords), as their records'
-// texts (study.text), by unit: the same for any thread count, whichever units came from the
-// journal. With a journal, its units that read back (study.read) are taken as they were kept (the
-// rest refused in it, and computed again), and each unit computed is appended to it as it
-// finishes. `control` sees the units computed now.
+// Where a study's units are computed: by `executor` (this process's threads, or an MPI job's
+// ranks, which rebuild the study named `study` from `plan`), or with none on this process's
+// threads; `threads` threads a process.
+struct UnitComputing {
+  Executor* executor = nullptr;
+  std::string study;
+  const Plan* plan = nullptr;
+  int threads = 1;
+};
+
+// The units `shard` holds, computed as `computing` says, as their records' texts (study.text), by
+// unit: the same for any thread or rank count, whichever units came from the journal. With a
+// journal, its units that read back (study.read) are taken as they were kept (the rest refused in
+// it, and computed again), and each unit computed is appended to it as it finishes. `control` sees
+// the units computed now.
 template <typename Record>
-std::map<int, std::string> RunUnitTexts(const UnitRecords<Record>& study, int threads, const Shard& shard,
-                                        const RunControl& control, RecordJournal* journal) {
+std::map<int, std::string> RunUnitTexts(const UnitRecords<Record>& study, const UnitComputing& computing,
+                                        const Shard& shard, const RunControl& control, RecordJournal* journal) {
   std::map<int, std::string> texts;
   if (journal) {
     for (auto& [unit, text] : journal->TakeFinished()) {
@@ -57,17 +68,21 @@ std::map<int, std::string> RunUnitTexts(const UnitRecords<Record>& study, int th
   for (int unit = 0; unit < study.units; ++unit) {
     if (shard.Holds(unit) && texts.count(unit) == 0) missing.push_back(unit);
   }
-  using UnitText = std::pair<int, std::string>;
-  std::vector<UnitText> computed = ParallelRecords<UnitText>(
-      static_cast<int>(missing.size()), threads,
-      [&](int i) {
-        const int unit = missing[static_cast<std::size_t>(i)];
-        std::string text = study.text(study.compute(unit));
-        if (journal) journal->Append(unit, text);
-        return std::vector<UnitText>{{unit, std::move(text)}};
-      },
-      control);
-  for (auto& [unit, text] : computed) texts.emplace(unit, std::move(text));
+  const UnitWork work{computing.study, computing.plan,
+                      [&study](int unit) { return study.text(study.compute(unit)); }};
+  long long done = 0;
+  const auto total = static_cast<long long>(missing.size());
+  if (control.progress) control.progress(0, total);
+  const UnitDone take = [&](int unit, std::string&& text) {  // one unit at a time
+    if (journal) journal->Append(unit, text);
+    texts.emplace(unit, std::move(text));
+    if (control.progress) control.progress(++done, total);
+  };
+  if (computing.executor) {
+    computing.executor->ComputeUnits(work, missing, computing.threads, take);
+  } else {
+    ComputeUnitsHere(work, missing, computing.threads, take, control.stop);
+  }
   return texts;
 }
 
@@ -90,7 +105,7 @@ template <typename Record>
 std::vector<Record> RunUnitRecords(const UnitRecords<Record>& study, int threads, const Shard& shard,
                                    const RunControl& control, RecordJournal* journal) {
   if (journal) {
-    return ReadUnitTexts(study, RunUnitTexts(study, threads, shard, control, journal),
+    return ReadUnitTexts(study, RunUnitTexts(study, UnitComputing{nullptr, {}, nullptr, threads}, shard, control, journal),
                          [journal](int unit) { return journal->PlaceOf(unit); });
   }
   std::vector<int> held;

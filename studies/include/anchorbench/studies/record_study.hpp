@@ -15,6 +15,7 @@
 #include "anchorbench/engine/record_journal.hpp"
 #include "anchorbench/engine/run_control.hpp"
 #include "anchorbench/engine/shard.hpp"
+#include "anchorbench/engine/unit_records.hpp"
 #include "anchorbench/registry/components.hpp"
 #include "anchorbench/report/run_outputs.hpp"
 #include "anchorbench/schema/experiment.hpp"
@@ -29,10 +30,15 @@ struct RecordStudy {
   std::function<int(const schema::ExperimentConfig&, const registry::Components&)> units;
   // About the size of its result files, for the result folder's free-space check.
   std::function<std::uintmax_t(const schema::ExperimentConfig&)> result_bytes;
-  // The units `shard` holds as their texts (engine::RunUnitTexts, with the journal if any).
-  std::function<std::map<int, std::string>(const schema::ExperimentConfig&, const registry::Components&, int threads,
-                                           const engine::Shard&, const engine::RunControl&, engine::RecordJournal*)>
+  // The units `shard` holds as their texts (engine::RunUnitTexts, with the journal if any),
+  // computed as `computing` says (its plan: the config's).
+  std::function<std::map<int, std::string>(const schema::ExperimentConfig&, const registry::Components&,
+                                           const engine::UnitComputing&, const engine::Shard&,
+                                           const engine::RunControl&, engine::RecordJournal*)>
       run;
+  // How a unit's text is computed (what an MPI worker rank computes, from the plan's config).
+  std::function<std::function<std::string(int unit)>(const schema::ExperimentConfig&, const registry::Components&)>
+      unit_text;
   // Its result files (and manifest.json) from every unit's text, through `write`; returns the
   // Markdown. A text that is not its unit's records is an InputError naming `place_of(unit)`.
   std::function<std::string(const engine::FileWriter&, const schema::ExperimentConfig&, const registry::Components&,
