@@ -89,7 +89,7 @@ void AddChunkOptions(CLI::App* cmd, app::MonteCarloArgs& args) {
                   "folders (docs/cluster.md)");
 }
 
-// navigate and explore: finished (row, realization) units kept in <out>.chunks/ until the results
+// navigate, explore and pdop-study: finished (row, realization) units kept in <out>.chunks/ until the results
 // are written, and shards of them.
 void AddUnitOptions(CLI::App* cmd, app::MonteCarloArgs& args) {
   cmd->add_flag("--resume", args.resume,
@@ -214,9 +214,12 @@ void AddMonteCarloCommands(CLI::App& cli, CommandLine& c) {
   c.study_cmd->add_option("config", c.study.config, "Experiment config (YAML); its base scenario is used")->required();
   AddMonteCarloOptions(c.study_cmd, c.study);
   c.study_cmd->add_option("--set", c.study.overrides, "Override a config value: KEY=VALUE, KEY a dotted path (repeatable)");
-  c.study_cmd->add_option("--every", c.study.every, "Checkpoint every N accepted samples (default 10)")
+  c.study_cmd->add_option("--every", c.study.every,
+                          "Checkpoint every N accepted samples: pdop_study.every (default 10)")
       ->check(WholeNumber(1, 1000000));
-  c.study_cmd->add_option("--bin-s", c.study.bin_s, "Summary time bins in seconds, 0.01 to 120 (default 10)");
+  c.study_cmd->add_option("--bin-s", c.study.bin_s, "Summary time bins in seconds, 0.01 to 120: pdop_study.bin_s (default 10)")
+      ->check(FiniteNumber(0.01, 120.0));
+  AddUnitOptions(c.study_cmd, c.study);
 
   c.navigate_cmd = cli.add_subcommand(
       "navigate", "Each trigger's anchors in a drifting robot's navigation filter, against the true anchors and none "
@@ -251,7 +254,7 @@ int Dispatch(const CommandLine& c, const app::AppContext& context) {
   if (c.replay_cmd->parsed()) return app::ReplayCommand(c.replay, context);
   if (c.run_cmd->parsed()) return app::RunCommand(c.run, context);
   if (c.sweep_cmd->parsed()) return app::SweepCommand(c.sweep, context);
-  if (c.study_cmd->parsed()) return app::PdopStudyCommand(c.study, context);
+  if (c.study_cmd->parsed()) return app::RecordStudyCommand("pdop-study", c.study.WithSettings(), context);
   if (c.navigate_cmd->parsed()) return app::RecordStudyCommand("navigate", c.navigate, context);
   if (c.explore_cmd->parsed()) return app::RecordStudyCommand("explore", c.explore, context);
   if (c.calibrate_cmd->parsed()) return app::CalibrateCommand(c.calibrate, context);

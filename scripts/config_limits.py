@@ -12,7 +12,7 @@ import anchorbench as ab
 
 DOC = Path(__file__).resolve().parent.parent / "docs" / "config.md"
 BEGIN, END = "<!-- generated: config_limits (scripts/config_limits.py) -->", "<!-- end generated -->"
-BASE = {"navigation": {}, "exploration": {}}
+BASE = {"navigation": {}, "exploration": {}, "pdop_study": {}}
 
 
 def numeric_keys():

@@ -68,20 +68,22 @@ struct SweepArgs : MonteCarloArgs {
 };
 int SweepCommand(const SweepArgs& args, const AppContext& app);
 
-struct PdopStudyArgs : MonteCarloArgs {
-  std::vector<std::string> overrides;  // --set KEY=VALUE
-  int every = 10;       // a checkpoint (LS and NLS solves) every this many accepted samples
-  double bin_s = 10.0;  // time bins of the summary
-};
-int PdopStudyCommand(const PdopStudyArgs& args, const AppContext& app);
 
 // A study of record units (studies/record_study.hpp), named by its command: navigate (each
 // trigger's anchors in a drifting robot's filter, docs/navigation.md), explore (the closed loop,
-// docs/guidance.md).
+// docs/guidance.md), pdop-study (the PDOPs side by side, docs/pdop_studies.md).
 struct RecordStudyArgs : MonteCarloArgs {
   std::vector<std::string> overrides;  // --set KEY=VALUE
 };
 int RecordStudyCommand(const std::string& command, const RecordStudyArgs& args, const AppContext& app);
+
+// pdop-study's own flags: --every N is --set pdop_study.every=N, --bin-s S --set pdop_study.bin_s=S
+// (after the --set's, so the flags win).
+struct PdopStudyArgs : RecordStudyArgs {
+  std::optional<int> every;
+  std::optional<double> bin_s;
+  RecordStudyArgs WithSettings() const;
+};
 
 // Joins the shard folders of one run, sweep or study of record units (--shard I/N, every I) into
 // its single folder.

@@ -113,7 +113,7 @@ std::map<int, engine::ShardUnit> ReadUnits(const MergeArgs& args, const std::vec
   return read;
 }
 
-// A study of record units' shards (navigate, explore) into its results: the unsharded run's bytes.
+// A study of record units' shards (navigate, explore, pdop-study) into its results: the unsharded run's bytes.
 int MergeUnits(const studies::RecordStudy& study, const MergeArgs& args, const std::vector<engine::ShardInfo>& infos,
                const engine::ShardInputs& inputs, const engine::Plan& plan, const AppContext& app,
                io::ResultFolder& out) {

@@ -4,10 +4,18 @@
 #include "anchorbench/engine/plan.hpp"
 #include "anchorbench/engine/record_journal.hpp"
 #include "anchorbench/engine/shard_folder.hpp"
+#include "anchorbench/io/format.hpp"
 #include "anchorbench/schema/input_error.hpp"
 #include "monte_carlo_command.hpp"
 
 namespace anchorbench::app {
+
+RecordStudyArgs PdopStudyArgs::WithSettings() const {
+  RecordStudyArgs args = *this;
+  if (every) args.overrides.push_back("pdop_study.every=" + std::to_string(*every));
+  if (bin_s) args.overrides.push_back("pdop_study.bin_s=" + io::FormatNumber(*bin_s));
+  return args;
+}
 
 int RecordStudyCommand(const std::string& command, const RecordStudyArgs& args, const AppContext& app) {
   const studies::RecordStudy* study = studies::FindRecordStudy(command);

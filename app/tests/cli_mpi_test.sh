@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
-# MPI (issue 15): `mpirun -n K anchorbench-mpi run|sweep|calibrate|navigate|explore` writes the plain
-# binary's bytes (run for K = 2 and 3 and 1 or 2 threads a rank, sweep, calibrate and navigate for K = 3,
-# explore for K = 2); bad input
+# MPI (issue 15): `mpirun -n K anchorbench-mpi run|sweep|calibrate|navigate|explore|pdop-study` writes the
+# plain binary's bytes (run for K = 2 and 3 and 1 or 2 threads a rank, sweep, calibrate and navigate for
+# K = 3, explore and pdop-study for K = 2); bad input
 # ends every rank with exit 2 (no hang); a rank killed mid-run fails the job with no result
 # folder, and --resume finishes it to the same bytes.
 # Arguments: the plain anchorbench, anchorbench-mpi, the configs folder.
@@ -73,14 +73,18 @@ mpi 3 "$mpi_bin" navigate "$dir/navigated.yaml" --out "$dir/nav_mpi" --quiet --t
   fail "mpirun navigate"
 mpi 2 "$mpi_bin" explore "$explore" --realizations 3 --out "$dir/ex_mpi" --quiet --threads 2 >/dev/null 2>&1 ||
   fail "mpirun explore"
-for study in nav ex; do
+"$bin" pdop-study "$configs/pdop_study.yaml" --realizations 6 --every 20 --out "$dir/pdop_plain" --quiet ||
+  fail "plain pdop-study"
+mpi 2 "$mpi_bin" pdop-study "$configs/pdop_study.yaml" --realizations 6 --every 20 --out "$dir/pdop_mpi" --quiet \
+  --threads 2 >/dev/null 2>&1 || fail "mpirun pdop-study"
+for study in nav ex pdop; do
   for file in "$dir/${study}_plain"/*; do
     name=$(basename "$file")
     [ "$name" = manifest.json ] && continue
     cmp -s "$file" "$dir/${study}_mpi/$name" || fail "mpirun $study: $name differs"
   done
 done
-echo "ok: mpirun navigate (-n 3) and explore (-n 2): the plain runs' bytes"
+echo "ok: mpirun navigate (-n 3), explore and pdop-study (-n 2): the plain runs' bytes"
 
 err=$(mpi 3 "$mpi_bin" run "$dir/missing.yaml" --out "$dir/never" 2>&1)
 status=$?

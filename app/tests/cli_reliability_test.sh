@@ -59,8 +59,10 @@ expect_exit 2 "replay_navigate_without_a_folder_for_its_tables" "--navigate: wri
 { cat "$dir/small.yaml"; printf 'navigation: {sigma_heading_rad_per_sqrt_s: -1}\n'; } >"$dir/drift.yaml"
 expect_exit 2 "navigate_with_a_negative_drift" "key 'navigation.sigma_heading_rad_per_sqrt_s'" \
   "$bin" navigate "$dir/drift.yaml" --out "$dir/x"
-expect_exit 2 "pdop_study_bin_too_small_for_an_integer" "--bin-s: must be in [0.01, 120]" \
+expect_exit 2 "pdop_study_bin_too_small_for_an_integer" "--bin-s: expected a finite number from 0.01 to 120" \
   "$bin" pdop-study "$dir/small.yaml" --bin-s 1e-300 --out "$dir/x"
+expect_exit 2 "pdop_study_every_zero_in_the_config" "key 'pdop_study.every': must be in [1, 1000000]" \
+  "$bin" pdop-study "$dir/small.yaml" --set pdop_study.every=0 --out "$dir/x"
 expect_exit 2 "threads_beyond_what_the_machine_can_run" "--threads 100000: at most" \
   "$bin" run "$dir/small.yaml" --threads 100000 --out "$dir/x"
 expect_exit 2 "omp_num_threads_beyond_what_the_machine_can_run" "OMP_NUM_THREADS=100000" \

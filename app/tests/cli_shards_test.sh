@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Shards and merge (issue 15): `run|sweep|navigate|explore --shard I/N` for every I, then `merge`,
+# Shards and merge (issue 15): `run|sweep|navigate|explore|pdop-study --shard I/N` for every I, then `merge`,
 # writes the bytes of the single-process run, for any N and thread count; missing, duplicated,
 # mismatched or edited shards are one clear error with nothing written.
 # Arguments: the anchorbench executable, the configs folder.
@@ -97,6 +97,21 @@ for file in exploration.csv exploration_summary.csv exploration.md navigation_er
 done
 echo "ok: 3 explore shards merge to the single run's bytes"
 expect_refusal "explore and navigate shards together" "is of another run" "$dir/e3-0" "$dir/n4-1"
+
+# And the PDOP study's (one unit per realization), with its settings from the flags.
+study="$configs/pdop_study.yaml"
+"$bin" pdop-study "$study" --realizations 5 --every 20 --bin-s 5 --out "$dir/p_whole" --quiet --threads 2 ||
+  fail "pdop-study"
+for ((i = 0; i < 2; i++)); do
+  "$bin" pdop-study "$study" --realizations 5 --every 20 --bin-s 5 --shard "$i/2" --out "$dir/p2-$i" --quiet \
+    --threads 1 || fail "pdop-study shard $i/2"
+done
+"$bin" merge "$dir/p_merged" "$dir/p2-1" "$dir/p2-0" --quiet || fail "merge of pdop-study shards"
+for file in pdop_trace.csv pdop_study.md; do
+  cmp -s "$dir/p_whole/$file" "$dir/p_merged/$file" || fail "2 pdop-study shards: merged $file differs"
+done
+echo "ok: 2 pdop-study shards merge to the single run's bytes"
+expect_refusal "pdop-study and explore shards together" "is of another run" "$dir/p2-0" "$dir/e3-1"
 
 # Every edit of a shard's records.csv is refused, whichever way (issue 33's tampered shards): each
 # unit is a block whose checksum binds its text to the unit and the plan.

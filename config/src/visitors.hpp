@@ -298,6 +298,13 @@ void Navigation(V& v, schema::NavigationConfig& o) {
 }
 
 template <typename V>
+void PdopStudy(V& v, schema::PdopStudyConfig& o) {
+  v.Integer("every", o.every, 1, 1000000);
+  v.Number("bin_s", o.bin_s);
+  v.Check(o);
+}
+
+template <typename V>
 void Exploration(V& v, schema::ExplorationConfig& o, const registry::Components& components) {
   v.NameList("policies", o.policies, [](const std::string& name, std::string* why) {
     schema::ExplorationConfig one;
@@ -333,6 +340,7 @@ void Experiment(V& v, schema::ExperimentConfig& c, const registry::Components& c
   v.OptionalSection("navigation", c.navigation, [](auto& s, schema::NavigationConfig& o) { Navigation(s, o); });
   v.OptionalSection("exploration", c.exploration,
                     [&](auto& s, schema::ExplorationConfig& o) { Exploration(s, o, components); });
+  v.OptionalSection("pdop_study", c.pdop_study, [](auto& s, schema::PdopStudyConfig& o) { PdopStudy(s, o); });
   // Rows start from the base read above, so the base must come first in the visit.
   int index = 0;
   v.List("rows", c.rows,

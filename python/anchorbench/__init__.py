@@ -357,18 +357,23 @@ def explore(config: ConfigLike, *, overrides: Iterable[str] = (), seed: Optional
         return Result(_anchorbench._explore(config, _threads(threads), callback))
 
 
-def pdop_study(config: ConfigLike, *, every: int = 10, bin_s: float = 10.0, overrides: Iterable[str] = (),
-               seed: Optional[int] = None, realizations: Optional[int] = None, threads: int = 0,
-               progress: ProgressLike = None) -> Result:
+def pdop_study(config: ConfigLike, *, every: Optional[int] = None, bin_s: Optional[float] = None,
+               overrides: Iterable[str] = (), seed: Optional[int] = None, realizations: Optional[int] = None,
+               threads: int = 0, progress: ProgressLike = None) -> Result:
     """``anchorbench pdop-study`` (docs/pdop_studies.md): every PDOP of the base scenario's runs, a
     checkpoint every ``every`` accepted samples (pdop_trace as a DataFrame), summarized in ``bin_s``
-    bins (pdop_study.md). ``progress`` and Ctrl-C as in run()."""
-    config = _with(config, overrides, seed, realizations)
+    bins (pdop_study.md); unset, the config's ``pdop_study`` section's (default 10 and 10 s), as
+    the command line's --every and --bin-s. ``progress`` and Ctrl-C as in run()."""
+    settings = []
+    if every is not None:
+        settings.append(f"pdop_study.every={_whole('every', every, 1, 1_000_000)}")
+    if bin_s is not None:
+        settings.append(f"pdop_study.bin_s={_in_range('bin_s', bin_s, 0.01, 120.0)!r}")
+    if isinstance(overrides, (str, bytes)):
+        raise InputError("overrides: expected a list of KEY=VALUE strings, got one string")
+    config = _with(config, [*overrides, *settings], seed, realizations)
     with _Progress(progress, f"pdop-study {config.name}") as callback:
-        try:
-            return Result(_anchorbench._pdop_study(config, int(every), float(bin_s), _threads(threads), callback))
-        except InputError as error:  # the command line's words, as this function's arguments
-            raise InputError(str(error).replace("--every", "every").replace("--bin-s", "bin_s")) from None
+        return Result(_anchorbench._pdop_study(config, _threads(threads), callback))
 
 
 LogLike = Union[str, os.PathLike, Mapping, "pandas.DataFrame"]

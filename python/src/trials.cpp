@@ -167,18 +167,17 @@ Files Explore(const ConfigHandle& config, int threads, const py::object& progres
   return files;
 }
 
-Files PdopStudy(const ConfigHandle& config, int every, double bin_s, int threads, const py::object& progress) {
-  studies::CheckPdopStudy(config.experiment, every, bin_s, config.source);
+Files PdopStudy(const ConfigHandle& config, int threads, const py::object& progress) {
+  studies::CheckPdopStudy(config.experiment, ModuleComponents());
   const int resolved = engine::ResolveThreads(threads);
-  const schema::PdopStudy study = Interruptible<schema::PdopStudy>(
+  const std::vector<schema::PdopStudy> realizations = Interruptible<std::vector<schema::PdopStudy>>(
       [&](const engine::RunControl& control) {
-        return studies::RunPdopStudy(config.experiment, ModuleComponents(), every, resolved, control);
+        return studies::RunPdopStudy(config.experiment, ModuleComponents(), resolved, control);
       },
       progress);
   Files files{{}, {config.files.begin(), config.files.end()}, {}};
-  studies::WritePdopStudyFiles(files.Writer(), config.experiment, study, every, bin_s,
-                               InfoOf(config, resolved, {"pdop-study", "--every " + std::to_string(every),
-                                                         "--bin-s " + io::FormatNumber(bin_s)}));
+  studies::WritePdopStudyFiles(files.Writer(), config.experiment, realizations,
+                               InfoOf(config, resolved, {"pdop-study"}));
   return files;
 }
 
@@ -279,8 +278,7 @@ void BindTrials(py::module_& m) {
   m.def("_sweep", &Sweep, py::arg("config"), py::arg("axes"), py::arg("threads"), py::arg("progress"));
   m.def("_navigate", &Navigate, py::arg("config"), py::arg("threads"), py::arg("progress"));
   m.def("_explore", &Explore, py::arg("config"), py::arg("threads"), py::arg("progress"));
-  m.def("_pdop_study", &PdopStudy, py::arg("config"), py::arg("every"), py::arg("bin_s"), py::arg("threads"),
-        py::arg("progress"));
+  m.def("_pdop_study", &PdopStudy, py::arg("config"), py::arg("threads"), py::arg("progress"));
   m.def(
       "_replay",
       [](const std::string& poses, const std::vector<std::string>& ranges, const std::string& anchors,

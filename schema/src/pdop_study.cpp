@@ -14,6 +14,19 @@ void UnderestimateStats::Add(const UnderestimateStats& other) {
   ratios_below.insert(ratios_below.end(), other.ratios_below.begin(), other.ratios_below.end());
 }
 
+bool PdopStudyConfig::IsValid(std::string* why) const {
+  if (every < 1 || every > 1000000) {
+    if (why) *why = "every must be in [1, 1000000]";
+    return false;
+  }
+  // At most 12,000 bins over the first 120 s.
+  if (!(bin_s >= 0.01 && bin_s <= 120.0)) {
+    if (why) *why = "bin_s must be in [0.01, 120] seconds";
+    return false;
+  }
+  return true;
+}
+
 const char* PdopMethodName(PdopMethod method) {
   switch (method) {
     case PdopMethod::kClosestPoint: return "closest_point";

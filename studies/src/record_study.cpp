@@ -2,6 +2,7 @@
 
 #include "anchorbench/studies/exploration.hpp"
 #include "anchorbench/studies/navigation.hpp"
+#include "anchorbench/studies/pdop_study.hpp"
 
 namespace anchorbench::studies {
 namespace {
@@ -51,6 +52,14 @@ const std::vector<RecordStudy>& RecordStudies() {
       Entry<ExplorationRecord>("explore", ExplorationUnits, CheckExploration, WriteExplorationFiles,
                                [](const schema::ExperimentConfig& config) {
                                  return LinesOf(config, config.exploration->policies.size(), 120);
+                               }),
+      // A checkpoint line (~150 bytes) every `every` samples, a few thousand samples per anchor.
+      Entry<schema::PdopStudy>("pdop-study", PdopStudyUnits, CheckPdopStudy, WritePdopStudyFiles,
+                               [](const schema::ExperimentConfig& config) {
+                                 const double anchors = static_cast<double>(config.realizations) *
+                                                        config.scenario.NumAnchors();
+                                 return static_cast<std::uintmax_t>(anchors * 150.0 * 5000.0 / PdopStudyOf(config).every) +
+                                        (1 << 16);
                                }),
   };
   return studies;

@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include "anchorbench/eval/oracles.hpp"
+#include "anchorbench/schema/input_error.hpp"
 #include "anchorbench/testing/components.hpp"
 
 namespace anchorbench::studies {
@@ -24,9 +25,16 @@ schema::ExperimentConfig OneAnchor() {
   return config;
 }
 
+// The study on `threads` threads, a checkpoint every 10 samples.
+schema::PdopStudy Study(int threads) {
+  schema::ExperimentConfig config = OneAnchor();
+  config.pdop_study = schema::PdopStudyConfig{10, 10.0};
+  return JoinPdopStudy(RunPdopStudy(config, AllComponents(), threads));
+}
+
 TEST(PdopStudy, IdenticalForAnyThreadCountAndConsistent) {
-  const schema::PdopStudy one = RunPdopStudy(OneAnchor(), AllComponents(), 10, 1);
-  const schema::PdopStudy two = RunPdopStudy(OneAnchor(), AllComponents(), 10, 2);
+  const schema::PdopStudy one = Study(1);
+  const schema::PdopStudy two = Study(2);
   ASSERT_EQ(one.checkpoints.size(), two.checkpoints.size());
   ASSERT_GT(one.checkpoints.size(), 6u * 10u);
   for (std::size_t i = 0; i < one.checkpoints.size(); ++i) {
@@ -63,7 +71,7 @@ TEST(PdopStudy, IdenticalForAnyThreadCountAndConsistent) {
 }
 
 TEST(PdopStudy, EstimatesConvergeToTheAnchor) {
-  const schema::PdopStudy study = RunPdopStudy(OneAnchor(), AllComponents(), 10, 2);
+  const schema::PdopStudy study = Study(2);
   // The last checkpoint of each run has all of the anchor's data: a tunnel pass at 1 m/s.
   for (std::size_t i = 0; i + 1 < study.checkpoints.size(); ++i) {
     const schema::PdopCheckpoint& c = study.checkpoints[i];
@@ -71,6 +79,37 @@ TEST(PdopStudy, EstimatesConvergeToTheAnchor) {
     ASSERT_TRUE(c.nls_error_m.has_value());
     EXPECT_LT(*c.nls_error_m, 1.0) << "realization " << c.realization;
   }
+}
+
+// A realization's record as the journal and a shard keep it: the same text read back, and lines of
+// another realization, a kind no run writes, or a unit cut before its statistics refused.
+TEST(PdopStudy, AUnitsTextReadsBackAndRefusesWhatNoRunWrites) {
+  schema::ExperimentConfig config = OneAnchor();
+  config.pdop_study = schema::PdopStudyConfig{25, 10.0};
+  const engine::UnitRecords<schema::PdopStudy> units = PdopStudyUnits(config, AllComponents());
+  ASSERT_EQ(units.units, 6);
+  const std::string text = units.text(units.compute(2));
+  const engine::UnitPlace place{"journal.csv", 7};
+  EXPECT_EQ(units.text(units.read(text, place, 2)), text);
+  const schema::PdopStudy back = units.read(text, place, 2).front();
+  EXPECT_GT(back.checkpoints.size(), 2u);
+  EXPECT_EQ(back.checkpoints.front().n, 25);
+  EXPECT_EQ(back.anchors, 1);
+  auto refusal = [&](const std::string& edited, int realization) {
+    try {
+      units.read(edited, place, realization);
+    } catch (const schema::InputError& e) {
+      return std::string(e.what());
+    }
+    return std::string("accepted");
+  };
+  EXPECT_NE(refusal(text, 3).find("journal.csv:"), std::string::npos);
+  const std::size_t last_line = text.rfind('\n', text.size() - 2) + 1;
+  EXPECT_NE(refusal(text.substr(0, last_line), 2).find("no statistics line"), std::string::npos);
+  EXPECT_NE(refusal("bogus" + text.substr(text.find(',')), 2).find("not a kind of line"), std::string::npos);
+  std::string negative = text;
+  negative.replace(negative.find(",25,"), 4, ",-25,");
+  EXPECT_NE(refusal(negative, 2), "accepted");
 }
 
 }  // namespace

@@ -20,6 +20,7 @@
 #include "anchorbench/engine/attempt.hpp"
 #include "anchorbench/engine/unit_records.hpp"
 #include "anchorbench/sim/scenario.hpp"
+#include "pdop_lines.hpp"
 
 namespace anchorbench::studies {
 
@@ -195,15 +196,39 @@ schema::PdopStudy StudyRealization(const schema::ExperimentConfig& config, const
 
 }  // namespace
 
-schema::PdopStudy RunPdopStudy(const schema::ExperimentConfig& config, const registry::Components& components, int every, int threads,
-                               const RunControl& control) {
+schema::PdopStudyConfig PdopStudyOf(const schema::ExperimentConfig& config) {
+  return config.pdop_study.value_or(schema::PdopStudyConfig{});
+}
+
+void CheckPdopStudy(const schema::ExperimentConfig& config, const registry::Components& components) {
   std::string why;
   if (!components.filters.Knows(config.estimator.filter.kind, &why)) throw schema::InputError(why);
+  const double anchors = static_cast<double>(config.realizations) * config.scenario.NumAnchors();
+  if (anchors > 1e6) throw schema::InputError(config.name + ": realizations x anchors above 1e6 for a PDOP study");
+}
+
+UnitRecords<schema::PdopStudy> PdopStudyUnits(const schema::ExperimentConfig& config,
+                                              const registry::Components& components) {
   UnitRecords<schema::PdopStudy> units;  // a unit is a realization of the base scenario
   units.units = config.realizations;
-  units.compute = [&](int r) { return std::vector<schema::PdopStudy>{StudyRealization(config, components, r, every)}; };
+  units.compute = [config, every = PdopStudyOf(config).every, &components](int r) {
+    return std::vector<schema::PdopStudy>{StudyRealization(config, components, r, every)};
+  };
+  units.text = PdopUnitText;
+  units.read = ReadPdopUnit;
+  return units;
+}
+
+std::vector<schema::PdopStudy> RunPdopStudy(const schema::ExperimentConfig& config,
+                                            const registry::Components& components, int threads,
+                                            const RunControl& control) {
+  CheckPdopStudy(config, components);
+  return RunUnitRecords(PdopStudyUnits(config, components), threads, Shard{}, control, nullptr);
+}
+
+schema::PdopStudy JoinPdopStudy(const std::vector<schema::PdopStudy>& realizations) {
   schema::PdopStudy study;
-  for (schema::PdopStudy& r : RunUnitRecords(units, threads, Shard{}, control, nullptr)) {
+  for (const schema::PdopStudy& r : realizations) {
     study.checkpoints.insert(study.checkpoints.end(), r.checkpoints.begin(), r.checkpoints.end());
     study.certified.insert(study.certified.end(), r.certified.begin(), r.certified.end());
     study.stats.Add(r.stats);
@@ -212,18 +237,13 @@ schema::PdopStudy RunPdopStudy(const schema::ExperimentConfig& config, const reg
   return study;
 }
 
-void CheckPdopStudy(const schema::ExperimentConfig& config, int every, double bin_s, const std::string& source) {
-  if (every < 1 || every > 1000000) throw schema::InputError("--every: must be in [1, 1000000]");
-  if (!(bin_s >= 0.01 && bin_s <= 120.0)) throw schema::InputError("--bin-s: must be in [0.01, 120] seconds");
-  const double anchors = static_cast<double>(config.realizations) * config.scenario.NumAnchors();
-  if (anchors > 1e6) throw schema::InputError(source + ": realizations x anchors above 1e6 for a PDOP study");
-}
-
 std::string WritePdopStudyFiles(const engine::FileWriter& write, const schema::ExperimentConfig& config,
-                                const schema::PdopStudy& study, int every, double bin_s, const report::RunInfo& info) {
+                                const std::vector<schema::PdopStudy>& realizations, const report::RunInfo& info) {
+  const schema::PdopStudy study = JoinPdopStudy(realizations);
+  const schema::PdopStudyConfig settings = PdopStudyOf(config);
   write("pdop_trace.csv", [&](std::ostream& file) { report::WritePdopTrace(file, study.checkpoints); });
   std::ostringstream md;
-  report::WritePdopStudyMarkdown(md, config, study, every, bin_s);
+  report::WritePdopStudyMarkdown(md, config, study, settings.every, settings.bin_s);
   write("pdop_study.md", [&](std::ostream& file) { file << md.str(); });
   write("manifest.json", [&](std::ostream& file) { file << report::ManifestJson(config, info); });
   return md.str();

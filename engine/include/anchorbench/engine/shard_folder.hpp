@@ -5,7 +5,7 @@
 //   config.yaml    the resolved config (--seed, --set, --realizations applied);
 //   axes.txt       a sweep's axes, one KEY=VALUES a line (empty for a run);
 //   chunk-*.csv    run, sweep: the shard's chunks (chunk.hpp), named by index;
-//   records.csv    a study of record units (navigate, explore; unit_records.hpp): each unit a
+//   records.csv    a study of record units (navigate, explore, pdop-study; unit_records.hpp): each unit a
 //                  block `unit,<index>,<bytes>,<checksum>` and its records' text, as the record
 //                  journal keeps them, the checksum bound to the plan's identity.
 // The config and axes rebuild the plan; its identity must be shard.csv's, so an edited folder is

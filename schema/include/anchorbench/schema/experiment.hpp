@@ -9,6 +9,7 @@
 #include "anchorbench/schema/estimator_config.hpp"
 #include "anchorbench/schema/exploration.hpp"
 #include "anchorbench/schema/navigation.hpp"
+#include "anchorbench/schema/pdop_study.hpp"
 #include "anchorbench/sim/scenario.hpp"
 
 namespace anchorbench::schema {
@@ -66,6 +67,8 @@ struct ExperimentConfig {
   std::optional<NavigationConfig> navigation;
   // The closed-loop exploration study (anchorbench explore; docs/guidance.md): absent unless given.
   std::optional<ExplorationConfig> exploration;
+  // The PDOP study (anchorbench pdop-study; docs/pdop_studies.md): absent unless given.
+  std::optional<PdopStudyConfig> pdop_study;
 };
 
 // The rows `run` executes: config.rows (those in only_rows, if given), or the base as a single

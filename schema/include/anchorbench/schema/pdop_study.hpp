@@ -57,6 +57,14 @@ struct CertifiedOutcome {
   std::string status;  // the event's status, or the trigger's refusal, or "waiting"
 };
 
+// The PDOP study's settings (anchorbench pdop-study; the config's pdop_study, which --every and
+// --bin-s set): absent from a config, these defaults.
+struct PdopStudyConfig {
+  int every = 10;       // a checkpoint (LS and NLS solves) every this many accepted samples
+  double bin_s = 10.0;  // the summary's time bins (pdop_study.md: Fig. 7's first 120 s)
+  bool IsValid(std::string* why) const;
+};
+
 struct PdopStudy {
   std::vector<PdopCheckpoint> checkpoints;  // realization by realization, anchor by anchor
   std::vector<CertifiedOutcome> certified;  // in the same order, one per anchor

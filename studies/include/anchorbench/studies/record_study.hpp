@@ -1,5 +1,5 @@
 #pragma once
-// The studies whose (row, realization) units each give records (navigate, explore), as one kind of
+// The studies whose (row, realization) units each give records (navigate, explore, pdop-study), as one kind of
 // study: what their command, its shards and the merge need of each, the same for all. A unit
 // travels as its records' text (unit_records.hpp: the journal's and a shard's records.csv, at
 // round-trip precision), so a resumed or merged run writes the uninterrupted run's bytes. A new
@@ -47,7 +47,7 @@ struct RecordStudy {
       write;
 };
 
-// navigate and explore.
+// navigate, explore and pdop-study.
 const std::vector<RecordStudy>& RecordStudies();
 // The study `command` names, or null.
 const RecordStudy* FindRecordStudy(std::string_view command);
