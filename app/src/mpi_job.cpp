@@ -187,11 +187,12 @@ int MpiJob::Serve() {
     std::string error = plan ? "" : plan_error;
     std::function<std::string(int)> unit_text;
     if (plan && !start[1].empty()) {
-      const studies::RecordStudy* study = studies::FindRecordStudy(start[1]);
-      if (study) {
+      try {  // reported, like a plan's error, for the first unit asked of it
+        const studies::RecordStudy* study = studies::FindRecordStudy(start[1]);
+        if (!study) throw schema::InputError("'" + start[1] + "' is not a study of record units");
         unit_text = study->unit_text(plan->experiments().front(), components_);
-      } else {
-        error = "'" + start[1] + "' is not a study of record units";
+      } catch (const std::exception& e) {
+        error = e.what();
       }
     }
 #pragma omp parallel num_threads(std::stoi(start[0]))
