@@ -51,12 +51,12 @@ std::vector<double> ParseBins(const io::CsvReader& csv, int column) {
   return bins;
 }
 
-namespace {
-
 std::optional<double> OptionalNumber(const io::CsvReader& csv, int column) {
   if (csv.Empty(column)) return std::nullopt;
   return csv.Number(column);
 }
+
+namespace {
 
 }  // namespace
 

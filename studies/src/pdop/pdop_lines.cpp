@@ -22,19 +22,12 @@ enum Column : int {
   kIdealSamplesPrecondition, kIdealBelowPrecondition, kRatiosBelow, kColumnCount
 };
 
-std::string Optional(const std::optional<double>& value) { return value ? io::FormatNumber(*value) : ""; }
-
 void WriteLine(std::ostringstream& text, const std::vector<std::string>& fields) {
   for (int c = 0; c < kColumnCount; ++c) {
     if (c > 0) text << ',';
     text << fields[static_cast<std::size_t>(c)];
   }
   text << '\n';
-}
-
-std::optional<double> OptionalNumber(const io::CsvReader& csv, int column) {
-  if (csv.Empty(column)) return std::nullopt;
-  return csv.Number(column);
 }
 
 long Count(const io::CsvReader& csv, int column) {
@@ -103,8 +96,8 @@ std::string PdopUnitText(const std::vector<schema::PdopStudy>& records) {
       f[kBiasAwareDop] = io::FormatNumber(c.bias_aware_dop);
       f[kDop4ClosestPoint] = io::FormatNumber(c.dop4_closest_point);
       f[kDop4Confidence] = io::FormatNumber(c.dop4_confidence);
-      f[kLsError] = Optional(c.ls_error_m);
-      f[kNlsError] = Optional(c.nls_error_m);
+      f[kLsError] = io::FormatOptional(c.ls_error_m);
+      f[kNlsError] = io::FormatOptional(c.nls_error_m);
       WriteLine(text, f);
     }
     for (const schema::CertifiedOutcome& o : study.certified) {
@@ -113,8 +106,8 @@ std::string PdopUnitText(const std::vector<schema::PdopStudy>& records) {
       f[kRealization] = std::to_string(o.realization);
       f[kAnchor] = std::to_string(o.anchor_id);
       f[kN] = std::to_string(o.n);
-      f[kT] = Optional(o.t_s);
-      f[kError] = Optional(o.error_m);
+      f[kT] = io::FormatOptional(o.t_s);
+      f[kError] = io::FormatOptional(o.error_m);
       f[kStatus] = o.status;
       WriteLine(text, f);
     }

@@ -3,6 +3,7 @@
 // journal (record_journal.hpp) and its shards' records.csv hold, so that records read back give the
 // uninterrupted, unsharded run's bytes.
 
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -21,6 +22,8 @@ inline constexpr const char* kNavigationRecordColumns =
 // sample; and back from `column` of the reader's line (its error names the line).
 std::string BinsText(const std::vector<double>& bins);
 std::vector<double> ParseBins(const io::CsvReader& csv, int column);
+// A number, or none where `column` is empty (io::FormatOptional's cell).
+std::optional<double> OptionalNumber(const io::CsvReader& csv, int column);
 
 // One record's fields, without a line end.
 std::string NavigationRecordFields(const NavigationRecord& record);
