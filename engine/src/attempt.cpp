@@ -50,6 +50,8 @@ void AddOracleLatency(const eval::OracleLatency& oracle, schema::Attempt& attemp
   attempt.evaluation->t_first_s = oracle.t_first_s;
   attempt.evaluation->t_oracle_s = oracle.t_oracle_s;
   attempt.evaluation->latency_ratio = eval::LatencyRatio(oracle, attempt.initialized ? attempt.t_init_s : std::nullopt);
+  attempt.evaluation->t_ideal_s = oracle.t_ideal_s;
+  attempt.evaluation->ideal_latency_ratio = eval::LatencyRatio(oracle, oracle.t_ideal_s);
 }
 
 }  // namespace anchorbench::engine

@@ -84,10 +84,12 @@ std::map<int, eval::OracleLatency> OracleLatencies(const schema::RowConfig& row,
   });
   for (const estimator::RangeSample& sample : samples) front_end.AddSample(sample);
   front_end.Finish(t_end_s);
+  // The ideal region knows the row's white noise (not its outliers, biases or correlation).
+  const eval::IdealRegion ideal{row.scenario.ranging.sigma_range_m, row.estimator.certificate.confidence};
   std::map<int, eval::OracleLatency> latencies;
   for (const auto& [anchor_id, log] : logs) {
     latencies[anchor_id] = eval::OracleOf(front_end.chains(anchor_id).front(), *log, row.estimator.certificate.accuracy_m,
-                                          truth.at(anchor_id).p_world_anchor, t_end_s);
+                                          truth.at(anchor_id).p_world_anchor, t_end_s, ideal);
   }
   return latencies;
 }

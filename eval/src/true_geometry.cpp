@@ -1,8 +1,10 @@
 #include "anchorbench/eval/true_geometry.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 
+#include <Eigen/Eigenvalues>
 #include <Eigen/LU>
 
 #include "anchorbench/estimator/pdop.hpp"
@@ -25,6 +27,12 @@ double TrueGeometry::Pdop() const { return PdopFromInformation(sum_outer_); }
 
 Eigen::Matrix3d TrueGeometry::BiasAwareInverse() const {
   return (sum_outer_ - sum_unit_ * sum_unit_.transpose() / count_).inverse();  // the Schur complement's
+}
+
+double TrueGeometry::BiasAwareLeastInformation() const {
+  if (count_ == 0.0) return 0.0;
+  const Eigen::Matrix3d information = sum_outer_ - sum_unit_ * sum_unit_.transpose() / count_;
+  return std::max(0.0, Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d>(information, Eigen::EigenvaluesOnly).eigenvalues()(0));
 }
 
 double TrueGeometry::BiasAwareHorizontalDop() const {

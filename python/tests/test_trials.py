@@ -164,15 +164,22 @@ def test_replay_with_navigate_gives_the_command_lines_navigation_tables(small_ya
 def test_the_oracle_times_each_anchor_where_the_truth_is_known_and_can_be_turned_off(small_yaml):
     table = ab.run(str(small_yaml), realizations=2)
     attempts = table.attempts
-    assert {"t_first", "t_oracle", "latency", "blocked_by"} <= set(attempts.columns)
+    assert {"t_first", "t_oracle", "latency", "t_ideal", "ideal_latency", "blocked_by"} <= set(attempts.columns)
     certifiable = attempts.dropna(subset=["t_oracle"])
     assert len(certifiable) > 0
     assert (certifiable["t_oracle"] >= certifiable["t_first"]).all()
     fired = certifiable[(certifiable["initialized"] == 1) & certifiable["latency"].notna()]
     assert (fired["latency"] > 0).all()
+    # The ideal region's time is the anchor's: the same for each of its triggers, and its ratio is
+    # to the oracle's time.
+    ideal = certifiable.dropna(subset=["t_ideal"])
+    assert len(ideal) > 0
+    assert (ideal.groupby(["realization", "anchor_id"])["t_ideal"].nunique() == 1).all()
+    expected = (ideal["t_ideal"] - ideal["t_first"]) / (ideal["t_oracle"] - ideal["t_first"])
+    assert ((ideal["ideal_latency"] - expected).abs() < 1e-9 * expected.abs().clip(lower=1)).all()
     waiting = attempts[(attempts["initialized"] == 0) & (attempts["method"] != "fixed_window")]
     assert waiting["blocked_by"].notna().all()  # every waiting online trigger names its test
     off = ab.run(str(small_yaml), realizations=2, overrides=["estimator.oracle_latency=false"]).attempts
-    assert off["t_oracle"].isna().all() and off["latency"].isna().all()
+    assert off["t_oracle"].isna().all() and off["latency"].isna().all() and off["t_ideal"].isna().all()
     same = ["row", "realization", "anchor_id", "method", "initialized", "t_init", "err_m"]
     assert off[same].equals(attempts[same])  # the oracle only judges: the attempts are the same

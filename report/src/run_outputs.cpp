@@ -109,7 +109,8 @@ void WriteAttemptLine(std::ostream& out, const Attempt& a, const std::vector<Row
       << ',' << a.status << ',' << FormatOptional(e.bias_aware_dop) << ',' << FormatOptional(e.nees_position) << ','
       << FormatOptional(e.nees) << ',' << FormatOptional(e.bias_aware_hdop) << ','
       << FormatOptional(e.bias_aware_vdop) << ',' << WhyNotFields(a.why_not) << ',' << FormatOptional(e.t_first_s) << ','
-      << FormatOptional(e.t_oracle_s) << ',' << FormatOptional(e.latency_ratio);
+      << FormatOptional(e.t_oracle_s) << ',' << FormatOptional(e.latency_ratio) << ',' << FormatOptional(e.t_ideal_s)
+      << ',' << FormatOptional(e.ideal_latency_ratio);
 }
 
 }  // namespace

@@ -144,7 +144,7 @@ TEST(Summary, AttemptsCsvLeavesCellsEmptyWhereThereIsNothing) {
   a.status = "no_data";
   std::ostringstream out;
   WriteAttempts(out, {a}, {RowConfig{"r", {}, {}, std::nullopt}});
-  EXPECT_EQ(out.str().substr(out.str().find('\n') + 1), "r,0,0,fixed_window,0,,0,0,,,,,,,,,no_data,,,,,,,,,,,\n");
+  EXPECT_EQ(out.str().substr(out.str().find('\n') + 1), "r,0,0,fixed_window,0,,0,0,,,,,,,,,no_data,,,,,,,,,,,,,\n");
 }
 
 }  // namespace

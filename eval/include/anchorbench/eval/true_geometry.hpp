@@ -29,6 +29,9 @@ class TrueGeometry {
   // the bias (the rows' vertical parts barely vary): a large VDOP.
   double BiasAwareHorizontalDop() const;
   double BiasAwareVerticalDop() const;
+  // The smallest eigenvalue of the bias-aware information of the position, sum (u - u_mean)(u -
+  // u_mean)^T (per sigma^-2): 1 / lambda_max of BiasAwareDop's Q, and 0, not a NaN, where Q is singular.
+  double BiasAwareLeastInformation() const;
 
  private:
   Eigen::Matrix3d BiasAwareInverse() const;  // the position block of (H^T H)^-1, H = [G | 1]

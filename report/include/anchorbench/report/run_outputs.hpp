@@ -17,11 +17,13 @@ namespace anchorbench::report {
 // row,realization,anchor_id,method,initialized,t_init,n_used,pdop_est,pdop_true,crlb_m,err_m,
 // err_x,err_y,err_z,bias_err,alpha,status,bias_aware_dop,..., then why an attempt that did not
 // initialize waits (blocked_by, its value and limit) and the oracle's time (t_first, t_oracle,
-// latency = (t_init - t_first) / (t_oracle - t_first)); empty where not applicable, never NaN.
+// latency = (t_init - t_first) / (t_oracle - t_first)), then the ideal region's time and its ratio
+// to the oracle's (t_ideal, ideal_latency: the anchor's, the same for every trigger); empty where
+// not applicable, never NaN.
 constexpr const char* kAttemptsColumns =
     "row,realization,anchor_id,method,initialized,t_init,n_used,pdop_est,pdop_true,crlb_m,err_m,err_x,err_y,err_z,"
     "bias_err,alpha,status,bias_aware_dop,nees_pos,nees,bias_aware_hdop,bias_aware_vdop,blocked_by,blocked_value,"
-    "blocked_limit,t_first,t_oracle,latency";
+    "blocked_limit,t_first,t_oracle,latency,t_ideal,ideal_latency";
 void WriteAttempts(std::ostream& out, const std::vector<schema::Attempt>& attempts,
                    const std::vector<schema::RowConfig>& rows);
 // One attempt's line of attempts.csv, without its line break.

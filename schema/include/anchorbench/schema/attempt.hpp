@@ -39,6 +39,10 @@ struct AttemptEvaluation {
   std::optional<double> t_first_s;
   std::optional<double> t_oracle_s;
   std::optional<double> latency_ratio;
+  // The ideal region's time (eval::IdealRegionTime; simulations only, whose noise is known) and
+  // its (t_ideal - t_first) / (t_oracle - t_first): the latency the confidence itself costs.
+  std::optional<double> t_ideal_s;
+  std::optional<double> ideal_latency_ratio;
 };
 
 // One anchor with one trigger (a `method`) in one realization of one row: what happened, and how
