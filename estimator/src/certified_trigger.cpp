@@ -179,9 +179,13 @@ CertifiedTrigger::Verdict CertifiedTrigger::RuleOutAlternatives(std::span<const 
       fit.p_world_anchor = refined.p_world_anchor;
       fit.bias_m = refined.bias_m;
     }
-    // The estimate's own basin (the mirror: also its plain reflection, HeightCheckedSolver's test).
-    if ((fit.p_world_anchor - estimate.p_world_anchor).norm() <= options_.accuracy_m) {
-      if (!start.mirror) continue;
+    // The estimate's own basin (the mirror: also its plain reflection, HeightCheckedSolver's test,
+    // unless the reflection's region, as large as the estimate's, lies within D too: an anchor near
+    // the tags' plane, both readings and all around them within D, nothing farther to rule out).
+    const double apart_m = (fit.p_world_anchor - estimate.p_world_anchor).norm();
+    if (apart_m <= options_.accuracy_m) {
+      const double mirror_apart_m = (start.p_world_anchor - estimate.p_world_anchor).norm();
+      if (!start.mirror || mirror_apart_m + judgement_.region_m <= options_.accuracy_m) continue;
       fit = start;
     }
     const double prior_evidence =

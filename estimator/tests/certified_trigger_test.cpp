@@ -111,6 +111,19 @@ AnchorSolverOptions KnownHeight(double z_m) {
   return options;
 }
 
+// An anchor 0.1 m off the plane of a path that weaves around its height: its mirror through the
+// tags' plane, and the region around it, lie within D of it, so nothing farther than D is left to
+// rule out there. Certified, within D; not held back as a mirror it cannot tell apart.
+TEST(CertifiedTrigger, CertifiesAnAnchorWhoseMirrorLiesWithinD) {
+  const auto level = [](double t) -> Eigen::Vector3d {
+    return kAnchor + Eigen::Vector3d(4.0 * std::cos(0.21 * t), 3.0 * std::sin(0.17 * t), -0.1 + 1.2 * std::sin(0.11 * t));
+  };
+  AnchorInitializer initializer = Certified();
+  const std::optional<InitEvent> event = FeedUntilInit(initializer, Samples(level, 120.0, 0.05, 1));
+  ASSERT_TRUE(event) << (initializer.why_not() ? initializer.why_not()->blocked_by : "");
+  EXPECT_LT((event->solve.p_world_anchor - kAnchor).norm(), 0.75);
+}
+
 // A known height settles the flat floor's mirror: certified, within D.
 TEST(CertifiedTrigger, CertifiesAFlatPathWithAKnownHeight) {
   AnchorInitializer initializer = Certified({}, KnownHeight(kAnchor.z()));

@@ -55,7 +55,9 @@ double ChiSquare3Quantile(double confidence);
 //    height_unobservable, never initialized on a confident mirror; and an estimate that sits in the
 //    mirror's basin of a path that is not quite flat (its reflection refines to a better fit) is
 //    not certified either. Where the refinement returns to the estimate, the plain reflection's
-//    evidence counts (HeightCheckedSolver's test).
+//    evidence counts (HeightCheckedSolver's test), unless the reflection with a region as large
+//    as the estimate's lies within D (an anchor near the tags' plane: nothing farther than D to
+//    rule out).
 // 2. The credible covariance P (credible_covariance.hpp, with the certificate's own options: the
 //    solver's, scaled for correlated noise, plus the model error and the consistency check's
 //    travel bias) must put its
