@@ -25,14 +25,16 @@ void TrueGeometry::Add(const Eigen::Vector3d& p_world_tag) {
 
 double TrueGeometry::Pdop() const { return PdopFromInformation(sum_outer_); }
 
-Eigen::Matrix3d TrueGeometry::BiasAwareInverse() const {
-  return (sum_outer_ - sum_unit_ * sum_unit_.transpose() / count_).inverse();  // the Schur complement's
+Eigen::Matrix3d TrueGeometry::BiasAwareInformation() const {
+  return sum_outer_ - sum_unit_ * sum_unit_.transpose() / count_;  // the Schur complement
 }
+
+Eigen::Matrix3d TrueGeometry::BiasAwareInverse() const { return BiasAwareInformation().inverse(); }
 
 double TrueGeometry::BiasAwareLeastInformation() const {
   if (count_ == 0.0) return 0.0;
-  const Eigen::Matrix3d information = sum_outer_ - sum_unit_ * sum_unit_.transpose() / count_;
-  return std::max(0.0, Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d>(information, Eigen::EigenvaluesOnly).eigenvalues()(0));
+  const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> axes(BiasAwareInformation(), Eigen::EigenvaluesOnly);
+  return std::max(0.0, axes.eigenvalues()(0));
 }
 
 double TrueGeometry::BiasAwareHorizontalDop() const {

@@ -34,7 +34,8 @@ class TrueGeometry {
   double BiasAwareLeastInformation() const;
 
  private:
-  Eigen::Matrix3d BiasAwareInverse() const;  // the position block of (H^T H)^-1, H = [G | 1]
+  Eigen::Matrix3d BiasAwareInformation() const;  // sum (u - u_mean)(u - u_mean)^T: of the position, the bias estimated
+  Eigen::Matrix3d BiasAwareInverse() const;      // its inverse, the position block of (H^T H)^-1, H = [G | 1]
 
   Eigen::Vector3d p_world_anchor_;
   Eigen::Matrix3d sum_outer_ = Eigen::Matrix3d::Zero();  // sum u u^T
