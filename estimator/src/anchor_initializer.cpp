@@ -50,6 +50,7 @@ InitEvent AnchorInitializer::SolveNow(double t_s, double pdop) const {
   event.pdop_closest_point = pdop;
   std::vector<double> fitted_m;  // the ranges less each tag's offset: what the covariance judges
   event.solve = SolveWithTagBiases(*solver_, p_world_tag_, range_m_, tag_id_, options_.tag_biases, nullptr, &fitted_m);
+  trigger_->AdoptJudged(&event.solve);
   const OutlierFilter& filter = *filter_;
   CovarianceOptions covariance = options_.covariance;
   if (options_.tag_biases.estimate) covariance.link_offset_m = 0.0;  // estimated: their own term

@@ -13,6 +13,8 @@
 #include "anchorbench/estimator/anchor_initializer.hpp"
 #include "anchorbench/estimator/anchor_solver.hpp"
 #include "anchorbench/estimator/consistency_filter.hpp"
+#include "anchorbench/estimator/height_check.hpp"
+#include "anchorbench/estimator/nls_solver.hpp"
 #include "anchorbench/testing/test_data.hpp"
 
 namespace anchorbench::estimator {
@@ -210,6 +212,53 @@ class FixedAnswer : public Solver {
   SolveStatus status_;
   double sigma_m_;
 };
+
+// A solver that settles in the mirror's basin wherever it has one: the anchor solver's estimate,
+// then an L2 refinement from its reflection through the tags' plane.
+class MirrorBasin : public Solver {
+ public:
+  SolveResult Solve(std::span<const Eigen::Vector3d> p_world_tag, std::span<const double> range_m) const override {
+    const SolveResult estimate = inner_.Solve(p_world_tag, range_m);
+    if (!Succeeded(estimate.status)) return estimate;
+    const Mirror mirror = MirrorOf(p_world_tag, range_m, estimate, 0.1);
+    if (!mirror.exists) return estimate;
+    const SolveResult mirrored = l2_.Solve(p_world_tag, range_m, mirror.p_world_mirror, mirror.bias_mirror_m);
+    return Succeeded(mirrored.status) ? mirrored : estimate;
+  }
+
+ private:
+  AnchorSolver inner_;
+  NlsSolver l2_{[] {
+    NlsOptions options;
+    options.kernel = KernelMode::kL2;
+    return options;
+  }()};
+};
+
+// A path 2 m below the anchor whose height wanders by +-0.2 m: the mirror above is a minimum of
+// its own, worse. A solver that settles there stays there as data come; the certificate moves the
+// estimate to the better basin, rules the mirror out, and what the initializer reports is the
+// estimate it judged, within D.
+TEST(CertifiedTrigger, MovesAnEstimateFromTheWorseMirrorBasin) {
+  const auto wavy = [](double t) -> Eigen::Vector3d {
+    return kAnchor + Eigen::Vector3d(5.0 * std::cos(0.2 * t), 4.0 * std::sin(0.13 * t), -2.0 + 0.2 * std::sin(0.37 * t));
+  };
+  const std::vector<RangeSample> samples = Samples(wavy, 120.0, 0.05, 5);
+  const auto solver = std::make_shared<MirrorBasin>();
+  AnchorInitializer initializer = Certified({}, {}, solver);
+  const std::optional<InitEvent> event = FeedUntilInit(initializer, samples);
+  ASSERT_TRUE(event) << (initializer.why_not() ? initializer.why_not()->blocked_by : "");
+  EXPECT_LT((event->solve.p_world_anchor - kAnchor).norm(), 0.75);
+  // The solver itself, on the data the event used (no outliers: the first n_used), is in the
+  // worse basin: what was reported is the trigger's judged estimate, not the solver's.
+  std::vector<Eigen::Vector3d> p_world_tag;
+  std::vector<double> range_m;
+  for (std::size_t k = 0; k < static_cast<std::size_t>(event->n_used); ++k) {
+    p_world_tag.push_back(samples[k].p_world_tag);
+    range_m.push_back(samples[k].range_m);
+  }
+  EXPECT_GT((solver->Solve(p_world_tag, range_m).p_world_anchor - kAnchor).norm(), 2.0);
+}
 
 // A region too large around an estimate the solver left short of its minimum (a flat path's height
 // valley, crawled until the iteration budget is spent) is a refusal that repeats: the cadence

@@ -89,6 +89,7 @@ class CertifiedTrigger : public InitTrigger {
   std::optional<Judgement> why_not() const override { return evaluations_ ? std::optional(judgement_) : std::nullopt; }
   std::size_t evaluations() const override { return evaluations_; }
   std::optional<RegionBasis> region_basis() const override { return basis_; }
+  void AdoptJudged(SolveResult* solve) const override;
 
  private:
   struct Alternative {
@@ -109,6 +110,12 @@ class CertifiedTrigger : public InitTrigger {
   };
   // The four tests on one evaluation; Evaluate adds the cadence's back-off.
   bool Judge(const TriggerInput& in);
+  // An estimate in the worse of two mirror basins moved to the better one: where the fit refined
+  // from its reflection (L2) is better by the mirror check's min_evidence and separated from it,
+  // that fit becomes the estimate (true). The cheap plain reflection's evidence first: only an
+  // estimate whose plain mirror is not already clearly worse is refined.
+  bool MoveToBetterBasin(std::span<const Eigen::Vector3d> p_world_tag, std::span<const double> range_m,
+                         SolveResult* estimate) const;
   // The cadence after the judgement: backed off on a refusal that repeats, restored on progress.
   void PaceCadence();
   // Where other minima of the fit may lie: the mirror, and 3 D along the covariance's axes and
@@ -169,6 +176,7 @@ class CertifiedTrigger : public InitTrigger {
   bool mirrored_ = false;                    // a mirror refused an estimate since one got past it
   double smallest_region_m_ = std::numeric_limits<double>::infinity();  // around a converged estimate
   std::vector<double> corrected_m_;          // the ranges less each tag's offset (scratch)
+  std::optional<SolveResult> judged_;        // the estimate of an evaluation that certified it
 };
 
 }  // namespace anchorbench::estimator

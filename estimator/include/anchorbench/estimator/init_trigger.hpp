@@ -93,6 +93,11 @@ class InitTrigger {
   // What a forecast of its region needs from its last evaluation (guidance.hpp), where it judges a
   // region and its last evaluation reached one (a solve that succeeded).
   virtual std::optional<RegionBasis> region_basis() const { return std::nullopt; }
+  // Right after Evaluate() returned true, on the initializer's solve of the same data: a trigger
+  // that judged an estimate of its own (the certified trigger, which may move its estimate to the
+  // better of two mirror basins) puts it in place of a solve that failed or lies farther than its
+  // accuracy from it, so that what is reported is what was judged. The others leave it.
+  virtual void AdoptJudged(SolveResult* /*solve*/) const {}
 };
 
 }  // namespace anchorbench::estimator
