@@ -29,6 +29,8 @@ step bash scripts/halls.sh
 step "$bin" run configs/bias_aware.yaml --out results/bias_aware --quiet --overwrite
 step "$bin" run configs/height_check.yaml --out results/height_check --quiet --overwrite
 step "$bin" run configs/flat_path.yaml --out results/flat_path --quiet --overwrite
+# The consistency check's travel bias against each sample's slack, on a ground robot's paths (docs/method.md)
+step /usr/bin/python3 scripts/travel_bias_slack.py results/travel_bias
 # Real radios and credible covariances (issue 23): the cone approach, the radio biases, the NEES study
 for run in cone_approach radio_biases credibility; do
   step "$bin" run "configs/$run.yaml" --out "results/$run" --quiet --overwrite

@@ -55,7 +55,7 @@ InitEvent AnchorInitializer::SolveNow(double t_s, double pdop) const {
   CovarianceOptions covariance = options_.covariance;
   if (options_.tag_biases.estimate) covariance.link_offset_m = 0.0;  // estimated: their own term
   MakeCredible(p_world_tag_, fitted_m, tag_id_, covariance,
-               [&filter](double scale_m) { return filter.TravelBias(scale_m); }, &event.solve);
+               [&filter](double scale_m, double slack_m) { return filter.TravelBias(scale_m, slack_m); }, &event.solve);
   return event;
 }
 

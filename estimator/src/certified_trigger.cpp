@@ -398,8 +398,10 @@ bool CertifiedTrigger::Judge(const TriggerInput& in) {
       covariance_.correlated_noise
           ? CorrelationFactor(fitted.p_world_tag, fitted.range_m, noise_only.p_world_anchor, noise_only.bias_m)
           : 1.0,
-      travel_bias_ ? travel_bias_(DifferenceScale(fitted.p_world_tag, fitted.range_m, fitted.tag_id,
-                                                  noise_only.p_world_anchor, noise_only.bias_m))
+      travel_bias_ ? TravelBiasOf(fitted.p_world_tag, fitted.tag_id, noise_only.p_world_anchor,
+                                  DifferenceScale(fitted.p_world_tag, fitted.range_m, fitted.tag_id,
+                                                  noise_only.p_world_anchor, noise_only.bias_m),
+                                  travel_bias_)
                    : 0.0,
       reads_unit_covariance ? UnitCovariance(fitted.p_world_tag, noise_only.p_world_anchor) : std::nullopt};
   ShareRegion(fitted, noise_only, noise, axes.eigenvectors().col(2), axes.eigenvalues()(2));

@@ -36,12 +36,12 @@ bool ConsistencyFilter::Accept(int tag_id, const Eigen::Vector3d& p_world_tag, d
   return true;
 }
 
-double ConsistencyFilter::TravelBias(double difference_scale_m) const {
-  // g(tau / q), linear between the measured points (consistency_filter.hpp), 0 beyond 12.
+double ConsistencyFilter::TravelBias(double difference_scale_m, double slack_m) const {
+  // g((tau + s) / q), linear between the measured points (consistency_filter.hpp), 0 beyond 12.
   constexpr double kRatio[] = {0.0, 0.5, 0.92, 1.52, 2.0, 2.4, 3.2, 5.0, 8.0, 12.0};
   constexpr double kBias[] = {1.25, 1.25, 1.2, 0.85, 0.43, 0.2, 0.05, 0.02, 0.015, 0.0};
   if (!(difference_scale_m > 0.0) || !std::isfinite(difference_scale_m)) return 0.0;
-  const double ratio = options_.tau_m / difference_scale_m;
+  const double ratio = (options_.tau_m + slack_m) / difference_scale_m;
   for (std::size_t i = 1; i < std::size(kRatio); ++i) {
     if (ratio <= kRatio[i]) {
       const double w = (ratio - kRatio[i - 1]) / (kRatio[i] - kRatio[i - 1]);

@@ -309,6 +309,34 @@ double DifferenceScale(std::span<const Eigen::Vector3d> p_world_tag, std::span<c
   return count > 0 ? std::sqrt(squares / (2.0 * static_cast<double>(count))) : 0.0;
 }
 
+double TravelBiasOf(std::span<const Eigen::Vector3d> p_world_tag, std::span<const int> tag_id,
+                    const Eigen::Vector3d& p_world_anchor, double difference_scale_m, const TravelBias& travel_bias) {
+  struct Last {
+    int tag_id;
+    std::size_t k;
+  };
+  std::vector<Last> last;  // one per tag: a handful at most
+  double squares = 0.0;
+  std::size_t count = 0;
+  const bool tagged = tag_id.size() == p_world_tag.size();
+  for (std::size_t k = 0; k < p_world_tag.size(); ++k) {
+    const int tag = tagged ? tag_id[k] : 0;
+    const auto it = std::find_if(last.begin(), last.end(), [tag](const Last& l) { return l.tag_id == tag; });
+    if (it == last.end()) {
+      last.push_back({tag, k});
+      continue;
+    }
+    const Eigen::Vector3d& p_previous = p_world_tag[it->k];
+    const double moved_m = (p_world_tag[k] - p_previous).norm();
+    const double range_change_m = std::abs((p_world_tag[k] - p_world_anchor).norm() - (p_previous - p_world_anchor).norm());
+    const double bias_m = travel_bias(difference_scale_m, std::max(moved_m - range_change_m, 0.0));
+    squares += bias_m * bias_m;
+    ++count;
+    it->k = k;
+  }
+  return count > 0 ? std::sqrt(squares / static_cast<double>(count)) : travel_bias(difference_scale_m, 0.0);
+}
+
 void MakeCredible(std::span<const Eigen::Vector3d> p_world_tag, std::span<const double> range_m,
                   std::span<const int> tag_id, const CovarianceOptions& options, const TravelBias& travel_bias,
                   SolveResult* solve) {
@@ -319,7 +347,8 @@ void MakeCredible(std::span<const Eigen::Vector3d> p_world_tag, std::span<const 
   }
   const double travel_bias_m =
       options.travel_bias && travel_bias
-          ? travel_bias(DifferenceScale(p_world_tag, range_m, tag_id, solve->p_world_anchor, solve->bias_m))
+          ? TravelBiasOf(p_world_tag, tag_id, solve->p_world_anchor,
+                         DifferenceScale(p_world_tag, range_m, tag_id, solve->p_world_anchor, solve->bias_m), travel_bias)
           : 0.0;
   solve->covariance +=
       ModelErrorCovariance(p_world_tag, tag_id, solve->p_world_anchor, options, travel_bias_m, solve->height_weight);

@@ -58,7 +58,7 @@ AnchorInitializer Certified(const CertificateOptions& certificate = {}, const An
   return AnchorInitializer(7, InitializerOptions{}, std::make_unique<ConsistencyFilter>(),
                            std::make_unique<CertifiedTrigger>(solver, solver_options, certificate,
                                                               HeightCheckOptions{}, TagBiasOptions{},
-                                                              [](double s) { return ConsistencyFilter().TravelBias(s); },
+                                                              [](double s, double slack) { return ConsistencyFilter().TravelBias(s, slack); },
                                                               SolveCadence(10, 1.1)),
                            solver);
 }
@@ -393,8 +393,32 @@ TEST(DifferenceScale, SeesTheWhiteNoiseNotASlowBias) {
   EXPECT_NEAR(DifferenceScale(p, slow, tags, kAnchor, 0.1), 0.05, 0.005);
   EXPECT_GT(ResidualScale(p, slow, kAnchor, 0.1), 0.2);
   // The filter's bias on it: small at tau = 4 q, large where tau is the white noise's own size.
-  EXPECT_LT(ConsistencyFilter().TravelBias(0.05), 0.003);
-  EXPECT_GT(ConsistencyFilter().TravelBias(0.2), 0.15);
+  EXPECT_LT(ConsistencyFilter().TravelBias(0.05, 0.0), 0.003);
+  EXPECT_GT(ConsistencyFilter().TravelBias(0.2, 0.0), 0.15);
+}
+
+// Motion across the line of sight loosens the check by its slack: the filter's bias shrinks with
+// it, and a path's travel bias is the RMS of its samples' (TravelBiasOf): a tag moving straight
+// away from the anchor keeps the whole bias, one circling it at a constant range, whose every step
+// is slack, almost none.
+TEST(TravelBias, ShrinksWithTheSlackOfEachSample) {
+  const ConsistencyFilter filter;  // tau = 0.2 m
+  const double q_m = 0.1;          // tau = 2 q: the paper's tau of about two sigma
+  EXPECT_GT(filter.TravelBias(q_m, 0.0), filter.TravelBias(q_m, 0.02));
+  EXPECT_GT(filter.TravelBias(q_m, 0.02), filter.TravelBias(q_m, 0.1));
+  const TravelBias travel_bias = [&filter](double q, double slack) { return filter.TravelBias(q, slack); };
+  std::vector<Eigen::Vector3d> receding, circling;
+  std::vector<int> tags;
+  for (int k = 0; k < 200; ++k) {
+    receding.push_back(kAnchor + Eigen::Vector3d(3.0 + 0.1 * k, 0.0, 0.0));  // 1 m/s at 10 Hz, radial
+    const double angle = 0.1 * k / 5.0;                                       // 1 m/s on a 5 m circle
+    circling.push_back(kAnchor + 5.0 * Eigen::Vector3d(std::cos(angle), std::sin(angle), 0.0));
+    tags.push_back(k % 2);
+  }
+  EXPECT_NEAR(TravelBiasOf(receding, tags, kAnchor, q_m, travel_bias), filter.TravelBias(q_m, 0.0), 1e-9);
+  // Each tag's previous sample is two steps back: 0.2 m of slack at every sample.
+  EXPECT_NEAR(TravelBiasOf(circling, tags, kAnchor, q_m, travel_bias), filter.TravelBias(q_m, 0.2), 1e-3);
+  EXPECT_LT(TravelBiasOf(circling, tags, kAnchor, q_m, travel_bias), 0.1 * filter.TravelBias(q_m, 0.0));
 }
 
 // A 3% scale error: the fifth unknown recovers it where the geometry pins it, and the anchor with it.

@@ -119,7 +119,7 @@ AnchorInitializer CertifiedChain(int anchor_id) {
   return AnchorInitializer(anchor_id, InitializerOptions{}, std::make_unique<ConsistencyFilter>(),
                            std::make_unique<CertifiedTrigger>(solver, AnchorSolverOptions{}, CertificateOptions{},
                                                               HeightCheckOptions{}, TagBiasOptions{},
-                                                              [](double s) { return ConsistencyFilter().TravelBias(s); },
+                                                              [](double s, double slack) { return ConsistencyFilter().TravelBias(s, slack); },
                                                               SolveCadence(10, 1.1)),
                            solver);
 }

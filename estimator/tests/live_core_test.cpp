@@ -39,7 +39,7 @@ AnchorInitializer Chain(Kind kind, const std::shared_ptr<const CountingSolver>& 
   if (kind == Kind::kCertified) {
     trigger = std::make_unique<CertifiedTrigger>(solver, AnchorSolverOptions{}, CertificateOptions{},
                                                  HeightCheckOptions{}, TagBiasOptions{},
-                                                 [](double s) { return ConsistencyFilter().TravelBias(s); }, cadence);
+                                                 [](double s, double slack) { return ConsistencyFilter().TravelBias(s, slack); }, cadence);
   }
   return AnchorInitializer(7, InitializerOptions{}, std::make_unique<ConsistencyFilter>(), std::move(trigger), solver);
 }

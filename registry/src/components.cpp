@@ -56,7 +56,7 @@ estimator::AnchorInitializer MakeInitializer(const Components& components, int a
   const estimator::OutlierFilter* online_filter = filter.get();
   std::unique_ptr<estimator::InitTrigger> made = make_trigger(
       {config.trigger, solver_options, solver, p_world_anchor_reference, initializer_options, config.certificate,
-       [online_filter](double scale_m) { return online_filter->TravelBias(scale_m); }},
+       [online_filter](double scale_m, double slack_m) { return online_filter->TravelBias(scale_m, slack_m); }},
       &why);
   if (!made) throw std::invalid_argument(why);
   return estimator::AnchorInitializer(anchor_id, initializer_options, std::move(filter), std::move(made),

@@ -40,8 +40,10 @@ class ConsistencyFilter : public OutlierFilter {
   // the check never truncates it. Measured by simulating the check alone on straight passes at
   // 0.3-6 m/s, 3-8 m off the anchor (scripts/filter_travel_bias.py; the largest over speeds and
   // passes, rounded up): 1.25 q at tau <= 0.5 q, 1.2 at 0.92, 0.85 at 1.52, 0.43 at 2.0, 0.2 at
-  // 2.4, 0.05 at 3.2, 0.02 at 5, 0.015 at 8.
-  double TravelBias(double difference_scale_m) const override;
+  // 2.4, 0.05 at 3.2, 0.02 at 5, 0.015 at 8. A sample whose tag also moved across the line of
+  // sight, by a slack s = ||p_k - p_ref|| - |r_k - r_ref| > 0, is checked against tau + s: g((tau + s) / q) q
+  // (ours; scripts/travel_bias_slack.py measures it on a ground robot's paths).
+  double TravelBias(double difference_scale_m, double slack_m) const override;
 
  private:
   struct Reference {

@@ -133,8 +133,18 @@ double ResidualScale(std::span<const Eigen::Vector3d> p_world_tag, std::span<con
 double DifferenceScale(std::span<const Eigen::Vector3d> p_world_tag, std::span<const double> range_m,
                        std::span<const int> tag_id, const Eigen::Vector3d& p_world_anchor, double bias_m);
 
-// The filter's travel bias for a difference scale (OutlierFilter::TravelBias; none: 0).
-using TravelBias = std::function<double(double difference_scale_m)>;
+// The filter's travel bias for a difference scale and a sample's slack (OutlierFilter::TravelBias;
+// none: 0).
+using TravelBias = std::function<double(double difference_scale_m, double slack_m)>;
+
+// The travel bias of these samples seen from `p_world_anchor` (ours): the RMS over the samples of
+// the filter's bias at each one's slack, s_k = ||p_k - p_prev|| - |r_k - r_prev| >= 0 against the
+// previous sample of its tag (the check's reference: the buffer holds the accepted samples). The
+// check allows a range difference of ||p_k - p_prev|| + tau, so motion across the line of sight
+// loosens it by s_k and truncates less (scripts/travel_bias_slack.py). travel_bias(q, 0) where no
+// tag has two samples.
+double TravelBiasOf(std::span<const Eigen::Vector3d> p_world_tag, std::span<const int> tag_id,
+                    const Eigen::Vector3d& p_world_anchor, double difference_scale_m, const TravelBias& travel_bias);
 
 // A successful solve's covariance made credible: f P_solver + the model error's part.
 void MakeCredible(std::span<const Eigen::Vector3d> p_world_tag, std::span<const double> range_m,

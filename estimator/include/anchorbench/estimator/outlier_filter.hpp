@@ -23,9 +23,9 @@ class OutlierFilter {
 
   // The bias the online stage leaves in the accepted ranges along the direction of travel, in
   // metres, for ranges whose consecutive differences have scale `difference_scale_m`
-  // (DifferenceScale in credible_covariance.hpp); 0 for
-  // a filter that does not select on range differences.
-  virtual double TravelBias(double /*difference_scale_m*/) const { return 0.0; }
+  // (DifferenceScale in credible_covariance.hpp), at a sample whose motion loosens the filter's
+  // test by `slack_m` (TravelBiasOf); 0 for a filter that does not select on range differences.
+  virtual double TravelBias(double /*difference_scale_m*/, double /*slack_m*/) const { return 0.0; }
 };
 
 // The do-nothing baseline (`none`): every sample accepted, the solver unchanged.

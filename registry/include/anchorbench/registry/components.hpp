@@ -51,7 +51,7 @@ struct TriggerContext {
   estimator::CertificateOptions certificate;
   // The anchor's online filter's travel bias (OutlierFilter::TravelBias). The filter is owned by
   // the initializer that owns the trigger, so it outlives every call.
-  std::function<double(double)> travel_bias;
+  estimator::TravelBias travel_bias;
 };
 
 // What an environment factory gets: nothing beyond its own options (RegisterWithOptions).
