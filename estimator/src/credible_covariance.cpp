@@ -38,6 +38,28 @@ double RangeRateSign(std::span<const Eigen::Vector3d> p_world_tag, const Eigen::
   return change > 0.0 ? 1.0 : change < 0.0 ? -1.0 : 0.0;
 }
 
+// Calls step(previous, k) for every sample k and the sample before it of the same tag (one tag for
+// all where tag_id does not cover the samples).
+template <typename Step>
+void ForEachTagStep(std::span<const int> tag_id, std::size_t samples, Step step) {
+  struct Last {
+    int tag_id;
+    std::size_t k;
+  };
+  std::vector<Last> last;  // one per tag: a handful at most
+  const bool tagged = tag_id.size() == samples;
+  for (std::size_t k = 0; k < samples; ++k) {
+    const int tag = tagged ? tag_id[k] : 0;
+    const auto it = std::find_if(last.begin(), last.end(), [tag](const Last& l) { return l.tag_id == tag; });
+    if (it == last.end()) {
+      last.push_back({tag, k});
+      continue;
+    }
+    step(it->k, k);
+    it->k = k;
+  }
+}
+
 }  // namespace
 
 bool CovarianceOptions::IsValid(std::string* why) const {
@@ -286,54 +308,29 @@ double ResidualScale(std::span<const Eigen::Vector3d> p_world_tag, std::span<con
 
 double DifferenceScale(std::span<const Eigen::Vector3d> p_world_tag, std::span<const double> range_m,
                        std::span<const int> tag_id, const Eigen::Vector3d& p_world_anchor, double bias_m) {
-  struct Last {
-    int tag_id;
-    double residual_m;
-  };
-  std::vector<Last> last;  // one per tag: a handful at most
+  auto residual = [&](std::size_t k) { return (p_world_tag[k] - p_world_anchor).norm() + bias_m - range_m[k]; };
   double squares = 0.0;
   std::size_t count = 0;
-  const bool tagged = tag_id.size() == range_m.size();
-  for (std::size_t k = 0; k < range_m.size(); ++k) {
-    const int tag = tagged ? tag_id[k] : 0;
-    const double r = (p_world_tag[k] - p_world_anchor).norm() + bias_m - range_m[k];
-    const auto it = std::find_if(last.begin(), last.end(), [tag](const Last& l) { return l.tag_id == tag; });
-    if (it == last.end()) {
-      last.push_back({tag, r});
-      continue;
-    }
-    squares += (r - it->residual_m) * (r - it->residual_m);
+  ForEachTagStep(tag_id, range_m.size(), [&](std::size_t previous, std::size_t k) {
+    const double change_m = residual(k) - residual(previous);
+    squares += change_m * change_m;
     ++count;
-    it->residual_m = r;
-  }
+  });
   return count > 0 ? std::sqrt(squares / (2.0 * static_cast<double>(count))) : 0.0;
 }
 
 double TravelBiasOf(std::span<const Eigen::Vector3d> p_world_tag, std::span<const int> tag_id,
                     const Eigen::Vector3d& p_world_anchor, double difference_scale_m, const TravelBias& travel_bias) {
-  struct Last {
-    int tag_id;
-    std::size_t k;
-  };
-  std::vector<Last> last;  // one per tag: a handful at most
   double squares = 0.0;
   std::size_t count = 0;
-  const bool tagged = tag_id.size() == p_world_tag.size();
-  for (std::size_t k = 0; k < p_world_tag.size(); ++k) {
-    const int tag = tagged ? tag_id[k] : 0;
-    const auto it = std::find_if(last.begin(), last.end(), [tag](const Last& l) { return l.tag_id == tag; });
-    if (it == last.end()) {
-      last.push_back({tag, k});
-      continue;
-    }
-    const Eigen::Vector3d& p_previous = p_world_tag[it->k];
+  ForEachTagStep(tag_id, p_world_tag.size(), [&](std::size_t previous, std::size_t k) {
+    const Eigen::Vector3d& p_previous = p_world_tag[previous];
     const double moved_m = (p_world_tag[k] - p_previous).norm();
     const double range_change_m = std::abs((p_world_tag[k] - p_world_anchor).norm() - (p_previous - p_world_anchor).norm());
     const double bias_m = travel_bias(difference_scale_m, std::max(moved_m - range_change_m, 0.0));
     squares += bias_m * bias_m;
     ++count;
-    it->k = k;
-  }
+  });
   return count > 0 ? std::sqrt(squares / static_cast<double>(count)) : travel_bias(difference_scale_m, 0.0);
 }
 
