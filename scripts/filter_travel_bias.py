@@ -11,6 +11,8 @@ import sys
 
 import numpy as np
 
+import consistency_check
+
 rng = np.random.default_rng(int(sys.argv[1]) if len(sys.argv) > 1 else 1)
 
 
@@ -20,14 +22,7 @@ def travel_bias(sigma, tau, speed, lateral, rate=10.0, reseed=10):
     distance = np.linalg.norm(p, axis=1)
     noise = sigma * rng.normal(size=len(t))
     ranges = distance + noise
-    accepted, ref, rejections = [0], 0, 0
-    for k in range(1, len(t)):  # Sec. III-B with the re-seeding of consistency_filter.cpp
-        if abs(ranges[k] - ranges[ref]) <= np.linalg.norm(p[k] - p[ref]) + tau or rejections + 1 >= reseed:
-            accepted.append(k)
-            ref, rejections = k, 0
-        else:
-            rejections += 1
-    accepted = np.array(accepted)
+    accepted = consistency_check.accepted(ranges, p, tau, reseed)
     scale = np.sqrt(np.mean(np.diff(noise[accepted]) ** 2) / 2.0)
     return tau / scale, -np.mean(noise[accepted] * np.sign(np.gradient(distance))[accepted]) / scale
 

@@ -26,6 +26,8 @@ import sys
 
 import numpy as np
 
+import consistency_check
+
 OUT = sys.argv[1]
 rng = np.random.default_rng(int(sys.argv[2]) if len(sys.argv) > 2 else 2)
 SOURCE = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "estimator", "src", "consistency_filter.cpp")
@@ -48,14 +50,7 @@ def run():
     r = np.linalg.norm(p - anchor, axis=1)
     noise = SIGMA_M * rng.normal(size=SAMPLES)
     d = r + noise
-    accepted, ref, rejections = [0], 0, 0
-    for k in range(1, SAMPLES):  # Sec. III-B with the re-seeding of consistency_filter.cpp
-        if abs(d[k] - d[ref]) <= np.linalg.norm(p[k] - p[ref]) + TAU_M or rejections + 1 >= RESEED:
-            accepted.append(k)
-            ref, rejections = k, 0
-        else:
-            rejections += 1
-    accepted = np.array(accepted)
+    accepted = consistency_check.accepted(d, p, TAU_M, RESEED)
     q = np.sqrt(np.mean(np.diff(noise[accepted]) ** 2) / 2.0)
     prev, cur = accepted[:-1], accepted[1:]
     slack = np.maximum(np.linalg.norm(p[cur] - p[prev], axis=1) - np.abs(r[cur] - r[prev]), 0.0)

@@ -188,9 +188,6 @@ CertifiedTrigger::Verdict CertifiedTrigger::RuleOutAlternatives(std::span<const 
       if (!start.mirror || mirror_apart_m + judgement_.region_m <= options_.accuracy_m) continue;
       fit = start;
     }
-    const double prior_evidence =
-        height_prior_ ? height_prior_->Chi2(fit.p_world_anchor.z()) - height_prior_->Chi2(estimate.p_world_anchor.z())
-                      : 0.0;
     // What the model error could make of the comparison, at the certificate's confidence (one-sided:
     // only a pattern that favours the estimate fakes evidence): on a real field, a robot's turn read
     // 0.2 m long at the true anchor and made its twin across the path fit better by an evidence of
@@ -199,21 +196,32 @@ CertifiedTrigger::Verdict CertifiedTrigger::RuleOutAlternatives(std::span<const 
         2.0 * pattern_quantile_ *
         PatternCovariation(p_world_tag, estimate.p_world_anchor, estimate.bias_m, fit.p_world_anchor, fit.bias_m,
                            covariance_);
-    const double evidence = FitEvidence(p_world_tag, range_m, estimate.p_world_anchor, estimate.bias_m,
-                                        fit.p_world_anchor, fit.bias_m, mirror_.trim_fraction, explained_squares) +
-                            prior_evidence;
-    // A likelihood ratio's own spread grows with the separation it measures (about 2 sqrt(lambda),
-    // more with noise in the tag positions: on the flat floor, 1 cm of it swung a lambda ~10 fit
-    // from -15 to +28): only a separation no swing crosses counts as evidence, or a height prior
-    // that alone rules the alternative out (a twin at the same height, a line's, it cannot).
-    const bool separated = prior_evidence >= threshold ||
-                           Separation(p_world_tag, estimate.p_world_anchor, estimate.bias_m, fit.p_world_anchor,
-                                      fit.bias_m, scale_m) >= mirror_.min_separation;
+    const Comparison comparison = Compare(p_world_tag, range_m, estimate.p_world_anchor, estimate.bias_m,
+                                          fit.p_world_anchor, fit.bias_m, scale_m, explained_squares, threshold);
     // Too close to tell counts as no evidence at all.
-    judgement_.evidence = std::min(judgement_.evidence, separated ? evidence : 0.0);
-    if (!separated || !(evidence >= threshold)) return start.mirror ? Verdict::kMirror : Verdict::kOtherMinimum;
+    judgement_.evidence = std::min(judgement_.evidence, comparison.separated ? comparison.evidence : 0.0);
+    if (!comparison.separated || !(comparison.evidence >= threshold)) {
+      return start.mirror ? Verdict::kMirror : Verdict::kOtherMinimum;
+    }
   }
   return Verdict::kRuledOut;
+}
+
+CertifiedTrigger::Comparison CertifiedTrigger::Compare(std::span<const Eigen::Vector3d> p_world_tag,
+                                                      std::span<const double> range_m, const Eigen::Vector3d& p_a,
+                                                      double bias_a_m, const Eigen::Vector3d& p_b, double bias_b_m,
+                                                      double scale_m, double explained_squares, double threshold) const {
+  const double prior_evidence = height_prior_ ? height_prior_->Chi2(p_b.z()) - height_prior_->Chi2(p_a.z()) : 0.0;
+  const double evidence =
+      FitEvidence(p_world_tag, range_m, p_a, bias_a_m, p_b, bias_b_m, mirror_.trim_fraction, explained_squares) +
+      prior_evidence;
+  // A likelihood ratio's own spread grows with the separation it measures (about 2 sqrt(lambda),
+  // more with noise in the tag positions: on the flat floor, 1 cm of it swung a lambda ~10 fit
+  // from -15 to +28): only a separation no swing crosses counts as evidence, or a height prior
+  // that alone rules the alternative out (a twin at the same height, a line's, it cannot).
+  const bool separated = prior_evidence >= threshold ||
+                         Separation(p_world_tag, p_a, bias_a_m, p_b, bias_b_m, scale_m) >= mirror_.min_separation;
+  return {evidence, separated};
 }
 
 std::vector<int> CertifiedTrigger::EstimatedTags(std::span<const int> tag_id, std::size_t samples) const {
@@ -439,10 +447,10 @@ bool CertifiedTrigger::Judge(const TriggerInput& in) {
 
 bool CertifiedTrigger::MoveToBetterBasin(std::span<const Eigen::Vector3d> p_world_tag, std::span<const double> range_m,
                                          SolveResult* estimate) const {
-  // A solve started from the linear fit can settle in the mirror's basin of a nearly flat path and
-  // stay there as data come (on the AMR hall, 389 of 1100 anchors ended the run so, their mirror
-  // fitting better by an evidence of up to ~460). The move only picks the basin the tests judge:
-  // the other one must still be ruled out like any alternative (RuleOutAlternatives).
+  // A solve started from the linear fit can settle in the worse basin of a mirror pair and stay
+  // there as data come (a cone approach, a nearly flat path with a little height). The move only
+  // picks the basin the tests judge: the other one must still be ruled out like any alternative
+  // (RuleOutAlternatives, with the model error's discount, which picking a basin does not need).
   const Mirror mirror = MirrorOf(p_world_tag, range_m, *estimate, mirror_.trim_fraction);
   if (!mirror.exists) return false;
   const SolveResult refined =
@@ -451,17 +459,10 @@ bool CertifiedTrigger::MoveToBetterBasin(std::span<const Eigen::Vector3d> p_worl
       (refined.p_world_anchor - estimate->p_world_anchor).norm() <= options_.accuracy_m) {
     return false;  // no other basin farther than D
   }
-  const double prior_evidence = height_prior_ ? height_prior_->Chi2(estimate->p_world_anchor.z()) -
-                                                    height_prior_->Chi2(refined.p_world_anchor.z())
-                                              : 0.0;
-  const double evidence = FitEvidence(p_world_tag, range_m, refined.p_world_anchor, refined.bias_m,
-                                      estimate->p_world_anchor, estimate->bias_m, mirror_.trim_fraction) +
-                          prior_evidence;
-  const double scale_m = ResidualScale(p_world_tag, range_m, refined.p_world_anchor, refined.bias_m);
-  const bool separated = prior_evidence >= mirror_.min_evidence ||
-                         Separation(p_world_tag, refined.p_world_anchor, refined.bias_m, estimate->p_world_anchor,
-                                    estimate->bias_m, scale_m) >= mirror_.min_separation;
-  if (!(evidence >= mirror_.min_evidence) || !separated) return false;
+  const Comparison comparison =
+      Compare(p_world_tag, range_m, refined.p_world_anchor, refined.bias_m, estimate->p_world_anchor, estimate->bias_m,
+              ResidualScale(p_world_tag, range_m, refined.p_world_anchor, refined.bias_m), 0.0, mirror_.min_evidence);
+  if (!(comparison.evidence >= mirror_.min_evidence) || !comparison.separated) return false;
   *estimate = refined;
   return true;
 }

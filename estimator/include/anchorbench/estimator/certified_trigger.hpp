@@ -111,9 +111,8 @@ class CertifiedTrigger : public InitTrigger {
   // The four tests on one evaluation; Evaluate adds the cadence's back-off.
   bool Judge(const TriggerInput& in);
   // An estimate in the worse of two mirror basins moved to the better one: where the fit refined
-  // from its reflection (L2) is better by the mirror check's min_evidence and separated from it,
-  // that fit becomes the estimate (true). The cheap plain reflection's evidence first: only an
-  // estimate whose plain mirror is not already clearly worse is refined.
+  // (L2) from its reflection ends farther than D away, fits better by the mirror check's
+  // min_evidence and is separated from it (Compare), that fit becomes the estimate (true).
   bool MoveToBetterBasin(std::span<const Eigen::Vector3d> p_world_tag, std::span<const double> range_m,
                          SolveResult* estimate) const;
   // The cadence after the judgement: backed off on a refusal that repeats, restored on progress.
@@ -122,6 +121,17 @@ class CertifiedTrigger : public InitTrigger {
   // towards and away from the tags' centroid (with the bias that fits best there).
   std::vector<Alternative> Alternatives(std::span<const Eigen::Vector3d> p_world_tag, std::span<const double> range_m,
                                         const SolveResult& estimate, const Eigen::Matrix3d& axes) const;
+  // Fit a against fit b of the same data: a's evidence over b (FitEvidence after
+  // `explained_squares`, plus the height prior's chi-square difference) and whether the two can be
+  // told apart (a prior that alone reaches `threshold`, or a separation of predicted ranges of at
+  // least min_separation in units of `scale_m`).
+  struct Comparison {
+    double evidence;
+    bool separated;
+  };
+  Comparison Compare(std::span<const Eigen::Vector3d> p_world_tag, std::span<const double> range_m,
+                     const Eigen::Vector3d& p_a, double bias_a_m, const Eigen::Vector3d& p_b, double bias_b_m,
+                     double scale_m, double explained_squares, double threshold) const;
   // Each alternative refined (L2 LM); one that ends farther than D away must fit worse than the
   // estimate by the evidence threshold, and predict ranges that differ enough to tell. The weakest
   // alternative's evidence and the threshold go to the judgement.
