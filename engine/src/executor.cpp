@@ -10,20 +10,20 @@ namespace anchorbench::engine {
 
 void ParallelFor(int count, int threads, const std::function<void(int, int)>& work, const StopFlag* stop) {
   std::exception_ptr first_error;
-  int first_error_at = count;
+  std::atomic<int> first_error_at{count};
   std::mutex error_mutex;
-  std::atomic<bool> failed{false};
 #pragma omp parallel for schedule(dynamic, 1) num_threads(threads)
   for (int i = 0; i < count; ++i) {
-    if (failed.load(std::memory_order_relaxed)) continue;  // an error ends the loop: no new item starts
+    // An error ends the loop for the items after it only: an earlier item still runs, so the
+    // first throwing item always runs and its error is the one rethrown, whatever the timing.
+    if (i > first_error_at.load(std::memory_order_relaxed)) continue;
     try {  // an exception must not leave the parallel region (std::terminate)
       ThrowIfStopped(stop);
       work(i, omp_get_thread_num());
     } catch (...) {
-      failed.store(true, std::memory_order_relaxed);
       const std::lock_guard<std::mutex> lock(error_mutex);
-      if (i < first_error_at) {
-        first_error_at = i;
+      if (i < first_error_at.load(std::memory_order_relaxed)) {
+        first_error_at.store(i, std::memory_order_relaxed);
         first_error = std::current_exception();
       }
     }

@@ -22,7 +22,8 @@ TEST(ParallelFor, RunsEveryItemOnceWithAThreadIndexInRange) {
   }
 }
 
-// Whatever the timing, the error rethrown is the first in item order among those that ran.
+// Whatever the timing, the error rethrown is the first in item order: an error never keeps an
+// earlier item from running.
 TEST(ParallelFor, RethrowsTheFirstErrorInItemOrder) {
   for (int threads : {1, 2, 4}) {
     try {

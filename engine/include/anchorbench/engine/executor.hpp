@@ -47,8 +47,9 @@ class Executor {
 
 // work(item, thread) for every item in [0, count) on `threads` OpenMP threads, one item per
 // thread at a time, dynamically scheduled; `thread` in [0, threads) indexes per-thread scratch.
-// An exception stops new items from starting, and the first one in item order (whatever the
-// timing) is rethrown once the threads are done. With `stop` set, no new item starts either, and
+// An exception stops the items after it from starting (the earlier ones still run, so the first
+// throwing item always runs), and the first one in item order is rethrown once the threads are
+// done, whatever the timing. With `stop` set, no new item starts either, and
 // the loop ends in Interrupted. The one parallel loop of the engine.
 void ParallelFor(int count, int threads, const std::function<void(int item, int thread)>& work,
                  const StopFlag* stop = nullptr);
