@@ -379,7 +379,10 @@ bool CertifiedTrigger::Judge(const TriggerInput& in) {
   MoveToBetterBasin(fitted.p_world_tag, fitted.range_m, &estimate);
   converged_ = estimate.status == SolveStatus::kConverged;
   const SolveResult noise_only = estimate;
-  MakeCredible(fitted.p_world_tag, fitted.range_m, fitted.tag_id, covariance_, travel_bias_, &estimate);
+  // The residuals' terms at the estimate, once: for its covariance here and the tests below.
+  const CredibleTerms terms = CredibleTermsOf(fitted.p_world_tag, fitted.range_m, fitted.tag_id, covariance_,
+                                              travel_bias_, estimate.p_world_anchor, estimate.bias_m);
+  MakeCredible(fitted.p_world_tag, fitted.tag_id, covariance_, terms, &estimate);
   // 0. Stable since a share of the data (stable_since; half: a doubling): every estimate from the
   // last evaluation at or before that share of N on within D of this one. An estimate that slides
   // along a trade-off valley as data come (a wall anchor seen from the room, range against bias)
@@ -398,19 +401,11 @@ bool CertifiedTrigger::Judge(const TriggerInput& in) {
   const Eigen::Matrix3d covariance = estimate.covariance.topLeftCorner<3, 3>();
   if (!covariance.allFinite()) return blocked("region", kInf, d_m);
   const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> axes(covariance);
-  // The residuals' statistics at the estimate, once for every test below (MakeCredible used them
-  // for its covariance only).
+  // The residuals' statistics at the estimate, once for every test below.
   const bool reads_unit_covariance = height_prior_ || EstimatedTags(in.tag_id, in.range_m.size()).size() > 1;
   const NoiseStats noise{
       ResidualScale(fitted.p_world_tag, fitted.range_m, noise_only.p_world_anchor, noise_only.bias_m),
-      covariance_.correlated_noise
-          ? CorrelationFactor(fitted.p_world_tag, fitted.range_m, noise_only.p_world_anchor, noise_only.bias_m)
-          : 1.0,
-      travel_bias_ ? TravelBiasOf(fitted.p_world_tag, fitted.tag_id, noise_only.p_world_anchor,
-                                  DifferenceScale(fitted.p_world_tag, fitted.range_m, fitted.tag_id,
-                                                  noise_only.p_world_anchor, noise_only.bias_m),
-                                  travel_bias_)
-                   : 0.0,
+      terms.correlation_factor, terms.travel_bias_m,
       reads_unit_covariance ? UnitCovariance(fitted.p_world_tag, noise_only.p_world_anchor) : std::nullopt};
   ShareRegion(fitted, noise_only, noise, axes.eigenvectors().col(2), axes.eigenvalues()(2));
   KeepBasis(estimate, noise);

@@ -334,21 +334,35 @@ double TravelBiasOf(std::span<const Eigen::Vector3d> p_world_tag, std::span<cons
   return count > 0 ? std::sqrt(squares / static_cast<double>(count)) : travel_bias(difference_scale_m, 0.0);
 }
 
+CredibleTerms CredibleTermsOf(std::span<const Eigen::Vector3d> p_world_tag, std::span<const double> range_m,
+                              std::span<const int> tag_id, const CovarianceOptions& options,
+                              const TravelBias& travel_bias, const Eigen::Vector3d& p_world_anchor, double bias_m) {
+  CredibleTerms terms;
+  if (options.correlated_noise) terms.correlation_factor = CorrelationFactor(p_world_tag, range_m, p_world_anchor, bias_m);
+  if (options.travel_bias && travel_bias) {
+    terms.travel_bias_m = TravelBiasOf(p_world_tag, tag_id, p_world_anchor,
+                                       DifferenceScale(p_world_tag, range_m, tag_id, p_world_anchor, bias_m), travel_bias);
+  }
+  return terms;
+}
+
 void MakeCredible(std::span<const Eigen::Vector3d> p_world_tag, std::span<const double> range_m,
                   std::span<const int> tag_id, const CovarianceOptions& options, const TravelBias& travel_bias,
                   SolveResult* solve) {
   if (!Succeeded(solve->status) || !solve->covariance.allFinite()) return;
+  MakeCredible(p_world_tag, tag_id, options,
+               CredibleTermsOf(p_world_tag, range_m, tag_id, options, travel_bias, solve->p_world_anchor, solve->bias_m),
+               solve);
+}
+
+void MakeCredible(std::span<const Eigen::Vector3d> p_world_tag, std::span<const int> tag_id,
+                  const CovarianceOptions& options, const CredibleTerms& terms, SolveResult* solve) {
+  if (!Succeeded(solve->status) || !solve->covariance.allFinite()) return;
   if (options.correlated_noise) {
-    solve->covariance = ScaleRangeNoise(solve->covariance, solve->height_information,
-                                        CorrelationFactor(p_world_tag, range_m, solve->p_world_anchor, solve->bias_m));
+    solve->covariance = ScaleRangeNoise(solve->covariance, solve->height_information, terms.correlation_factor);
   }
-  const double travel_bias_m =
-      options.travel_bias && travel_bias
-          ? TravelBiasOf(p_world_tag, tag_id, solve->p_world_anchor,
-                         DifferenceScale(p_world_tag, range_m, tag_id, solve->p_world_anchor, solve->bias_m), travel_bias)
-          : 0.0;
   solve->covariance +=
-      ModelErrorCovariance(p_world_tag, tag_id, solve->p_world_anchor, options, travel_bias_m, solve->height_weight);
+      ModelErrorCovariance(p_world_tag, tag_id, solve->p_world_anchor, options, terms.travel_bias_m, solve->height_weight);
 }
 
 Eigen::Matrix4d ScaleRangeNoise(const Eigen::Matrix4d& covariance, double height_information, double factor) {

@@ -146,9 +146,22 @@ using TravelBias = std::function<double(double difference_scale_m, double slack_
 double TravelBiasOf(std::span<const Eigen::Vector3d> p_world_tag, std::span<const int> tag_id,
                     const Eigen::Vector3d& p_world_anchor, double difference_scale_m, const TravelBias& travel_bias);
 
-// A successful solve's covariance made credible: f P_solver + the model error's part.
+// What the residuals of an estimate make of its covariance: the correlation factor f (1 without
+// correlated_noise) and the travel bias (0 without travel_bias or a filter's TravelBias).
+struct CredibleTerms {
+  double correlation_factor = 1.0;
+  double travel_bias_m = 0.0;
+};
+CredibleTerms CredibleTermsOf(std::span<const Eigen::Vector3d> p_world_tag, std::span<const double> range_m,
+                              std::span<const int> tag_id, const CovarianceOptions& options,
+                              const TravelBias& travel_bias, const Eigen::Vector3d& p_world_anchor, double bias_m);
+
+// A successful solve's covariance made credible: f P_solver + the model error's part, with the
+// terms read at the solve (CredibleTermsOf), or given where the caller has them already.
 void MakeCredible(std::span<const Eigen::Vector3d> p_world_tag, std::span<const double> range_m,
                   std::span<const int> tag_id, const CovarianceOptions& options, const TravelBias& travel_bias,
                   SolveResult* solve);
+void MakeCredible(std::span<const Eigen::Vector3d> p_world_tag, std::span<const int> tag_id,
+                  const CovarianceOptions& options, const CredibleTerms& terms, SolveResult* solve);
 
 }  // namespace anchorbench::estimator
