@@ -308,15 +308,26 @@ double ResidualScale(std::span<const Eigen::Vector3d> p_world_tag, std::span<con
 
 double DifferenceScale(std::span<const Eigen::Vector3d> p_world_tag, std::span<const double> range_m,
                        std::span<const int> tag_id, const Eigen::Vector3d& p_world_anchor, double bias_m) {
+  // The RMS of the differences, then twice that of those within kClip RMS of the last (ours): the
+  // check truncates the noise's Gaussian core, and the few outliers it lets through (a few per
+  // thousand on a ground robot's log) would double an RMS and, through g, the travel bias.
+  constexpr double kClip = 3.0;
+  constexpr double kClippedRms = 0.98658;  // of a unit Gaussian within +-3: sqrt(1 - 6 phi(3) / (2 Phi(3) - 1))
   auto residual = [&](std::size_t k) { return (p_world_tag[k] - p_world_anchor).norm() + bias_m - range_m[k]; };
-  double squares = 0.0;
-  std::size_t count = 0;
-  ForEachTagStep(tag_id, range_m.size(), [&](std::size_t previous, std::size_t k) {
-    const double change_m = residual(k) - residual(previous);
-    squares += change_m * change_m;
-    ++count;
-  });
-  return count > 0 ? std::sqrt(squares / (2.0 * static_cast<double>(count))) : 0.0;
+  auto rms_within = [&](double limit_m) {
+    double squares = 0.0;
+    std::size_t count = 0;
+    ForEachTagStep(tag_id, range_m.size(), [&](std::size_t previous, std::size_t k) {
+      const double change_m = residual(k) - residual(previous);
+      if (!(std::abs(change_m) <= limit_m)) return;
+      squares += change_m * change_m;
+      ++count;
+    });
+    return count > 0 ? std::sqrt(squares / static_cast<double>(count)) : 0.0;
+  };
+  double rms_m = rms_within(std::numeric_limits<double>::infinity());
+  for (int pass = 0; pass < 2 && rms_m > 0.0; ++pass) rms_m = rms_within(kClip * rms_m) / kClippedRms;
+  return rms_m / std::sqrt(2.0);
 }
 
 double TravelBiasOf(std::span<const Eigen::Vector3d> p_world_tag, std::span<const int> tag_id,

@@ -375,11 +375,13 @@ TEST(PatternCovariation, GrowsWithTheModelErrorAndTheFitsApart) {
   EXPECT_NEAR(PatternCovariation(p, kAnchor, 0.1, twin, 0.1, large), 2.0 * at_small, 1e-12 * at_small);
   EXPECT_GT(PatternCovariation(p, kAnchor, 0.1, kAnchor + Eigen::Vector3d(0.0, 0.0, 2.0), 0.1, small), at_small);
 }
-// not their consecutive differences, which is all the consistency check truncates.
-TEST(DifferenceScale, SeesTheWhiteNoiseNotASlowBias) {
+
+// A slow bias (an antenna pattern) widens the residuals but not their consecutive differences,
+// which is all the consistency check truncates; nor do the few outliers the check lets through count.
+TEST(DifferenceScale, SeesTheWhiteNoiseNotASlowBiasNorAFewOutliers) {
   auto rng = testing::TestStream(5);
   std::vector<Eigen::Vector3d> p;
-  std::vector<double> white, slow;
+  std::vector<double> white, slow, outliers;
   std::vector<int> tags;
   for (int k = 0; k < 2000; ++k) {
     p.push_back(Wandering(0.1 * k));
@@ -387,10 +389,14 @@ TEST(DifferenceScale, SeesTheWhiteNoiseNotASlowBias) {
     const double e = 0.05 * rng.Normal();
     white.push_back(d + e);
     slow.push_back(d + e + 0.3 * std::sin(0.05 * k));  // a 12 s period, 0.3 m
+    outliers.push_back(d + e + (k % 400 == 7 ? 1.0 + 0.01 * k : 0.0));  // 5 of 2000, 1-3 m long
     tags.push_back(k % 2);
   }
   EXPECT_NEAR(DifferenceScale(p, white, tags, kAnchor, 0.1), 0.05, 0.005);
   EXPECT_NEAR(DifferenceScale(p, slow, tags, kAnchor, 0.1), 0.05, 0.005);
+  // The few outliers the check lets through would double the differences' RMS: clipped, they do not.
+  EXPECT_NEAR(DifferenceScale(p, outliers, tags, kAnchor, 0.1), 0.05, 0.005);
+  EXPECT_GT(ResidualScale(p, outliers, kAnchor, 0.1), 0.08);
   EXPECT_GT(ResidualScale(p, slow, kAnchor, 0.1), 0.2);
   // The filter's bias on it: small at tau = 4 q, large where tau is the white noise's own size.
   EXPECT_LT(ConsistencyFilter().TravelBias(0.05, 0.0), 0.003);

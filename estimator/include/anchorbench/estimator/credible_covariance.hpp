@@ -129,7 +129,9 @@ double ResidualScale(std::span<const Eigen::Vector3d> p_world_tag, std::span<con
                      const Eigen::Vector3d& p_world_anchor, double bias_m);
 
 // The scale the consistency check's truncation acts on: the RMS of the differences of consecutive
-// residuals of one tag (pooled over the tags), over sqrt(2); 0 with fewer than two of a tag.
+// residuals of one tag (pooled over the tags), over sqrt(2), clipped at 3 RMS twice so that the few
+// outliers the check lets through do not count (and scaled back to a Gaussian's RMS); 0 with
+// fewer than two of a tag.
 double DifferenceScale(std::span<const Eigen::Vector3d> p_world_tag, std::span<const double> range_m,
                        std::span<const int> tag_id, const Eigen::Vector3d& p_world_anchor, double bias_m);
 
