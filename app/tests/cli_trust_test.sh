@@ -62,6 +62,13 @@ check "a_flat_path_certified_never_above_1_m" test "$(count "$a" no_check certif
   --set 'estimator.triggers=[fixed_window,certified]' || fail "straight run"
 check "a_straight_pass_is_refused" test "$(inits "$dir/line/attempts.csv" straight certified)" -eq 0
 
+# --- A solver in the far-bias basin of a range-bias valley ------------------------------------------
+# Table I's white noise, realization 2, anchor 0: a far anchor seen from a short curved pass, where
+# BOBYQA settles 9.9 m off with a bias of 5.7 m. The certificate tests the bias-free reading too.
+"$bin" run "$configs/credibility.yaml" --realizations 3 --out "$dir/valley" --quiet --set 'only_rows=[bobyqa]' \
+  --set 'estimator.triggers=[certified]' || fail "valley run"
+check "a_far_bias_basin_is_never_certified" test "$(count "$dir/valley/attempts.csv" bobyqa certified 1)" -eq 0
+
 # --- Credible covariances on white noise ---------------------------------------------------------
 cat >"$dir/white.yaml" <<YAML
 base: $configs/table1.yaml

@@ -163,7 +163,41 @@ bool TotalLeastSquares(const Eigen::Matrix4d& normal, const Eigen::Vector4d& rhs
   return x->allFinite();
 }
 
+// The rows' normal equations sum w a a^T x = sum w b a, in one O(N) pass, and sum w b^2 (for total
+// least squares).
+struct Normal {
+  Eigen::Matrix4d normal = Eigen::Matrix4d::Zero();
+  Eigen::Vector4d rhs = Eigen::Vector4d::Zero();
+  double b_squares = 0.0;
+};
+
+Normal NormalEquations(const RowBuilder& rows, std::size_t n) {
+  Normal sums;
+  for (std::size_t k = 0; k < n; ++k) {
+    if (k == rows.pivot()) continue;
+    const Row row = rows(k);
+    sums.normal.noalias() += row.weight * row.a * row.a.transpose();
+    sums.rhs += row.weight * row.b * row.a;
+    sums.b_squares += row.weight * row.b * row.b;
+  }
+  return sums;
+}
+
 }  // namespace
+
+std::optional<Eigen::Vector3d> SolveBiasFreeLs(std::span<const Eigen::Vector3d> p_world_tag,
+                                               std::span<const double> range_m) {
+  const std::size_t n = range_m.size();
+  if (n < kMinSamplesLs || p_world_tag.size() != n) return std::nullopt;
+  const RowBuilder rows(p_world_tag, range_m, LsOptions{});
+  // gamma = 0 drops Eq. (9)'s last column: the position block of the same normal equations.
+  const Normal sums = NormalEquations(rows, n);
+  const Eigen::LDLT<Eigen::Matrix3d> ldlt(sums.normal.topLeftCorner<3, 3>());
+  if (!sums.normal.allFinite() || !sums.rhs.allFinite() || !internal::IsWellConditioned(ldlt)) return std::nullopt;
+  const Eigen::Vector3d x = ldlt.solve(sums.rhs.head<3>());
+  if (!x.allFinite()) return std::nullopt;
+  return p_world_tag[rows.pivot()] + x;
+}
 
 SolveResult SolveDoubleDifferenceLs(std::span<const Eigen::Vector3d> p_world_tag, std::span<const double> range_m,
                                     const LsOptions& options, const std::optional<HeightPrior>& height_prior) {
@@ -175,17 +209,7 @@ SolveResult SolveDoubleDifferenceLs(std::span<const Eigen::Vector3d> p_world_tag
   }
   const RowBuilder rows(p_world_tag, range_m, options);
   const std::size_t j = rows.pivot();
-
-  Eigen::Matrix4d normal = Eigen::Matrix4d::Zero();
-  Eigen::Vector4d rhs = Eigen::Vector4d::Zero();
-  double b_squares = 0.0;  // for total least squares
-  for (std::size_t k = 0; k < n; ++k) {
-    if (k == j) continue;
-    const Row row = rows(k);
-    normal.noalias() += row.weight * row.a * row.a.transpose();
-    rhs += row.weight * row.b * row.a;
-    b_squares += row.weight * row.b * row.b;
-  }
+  auto [normal, rhs, b_squares] = NormalEquations(rows, n);
   if (!normal.allFinite() || !rhs.allFinite()) {
     result.status = SolveStatus::kNumericalFailure;
     return result;

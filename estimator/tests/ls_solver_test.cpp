@@ -63,6 +63,31 @@ TEST(DoubleDifferenceLs, CollinearPositionsAreDegenerateNotNan) {
   EXPECT_TRUE(result.p_world_anchor.allFinite());
 }
 
+// The bias-free reading: exact where the ranges are plain distances, off where they carry a bias
+// (which the full fit recovers), and none for a line of tags or too few samples.
+TEST(BiasFreeLs, IsExactOnDistancesAndNoneWhereSingular) {
+  for (int trial = 0; trial < 10; ++trial) {
+    auto rng = testing::TestStream(300 + trial);
+    const Eigen::Vector3d p_anchor = testing::UniformIn(rng, Eigen::Vector3d(-20, -20, 0), Eigen::Vector3d(20, 20, 5));
+    const auto distances = testing::BoxData(rng, 40, p_anchor, p_anchor + Eigen::Vector3d(6, -3, 0), 4.0, 0.0, 0.0);
+    const std::optional<Eigen::Vector3d> exact = SolveBiasFreeLs(distances.p_world_tag, distances.range_m);
+    ASSERT_TRUE(exact);
+    EXPECT_LT((*exact - p_anchor).norm(), 1e-8);
+    const auto biased = testing::BoxData(rng, 40, p_anchor, p_anchor + Eigen::Vector3d(6, -3, 0), 4.0, 0.5, 0.0);
+    const std::optional<Eigen::Vector3d> off = SolveBiasFreeLs(biased.p_world_tag, biased.range_m);
+    ASSERT_TRUE(off);
+    EXPECT_GT((*off - p_anchor).norm(), 0.05);
+  }
+  std::vector<Eigen::Vector3d> line;
+  std::vector<double> d;
+  for (int k = 0; k < 50; ++k) {
+    line.emplace_back(0.2 * k, 0.0, 1.0);
+    d.push_back((line.back() - Eigen::Vector3d(3, 4, 2)).norm());
+  }
+  EXPECT_FALSE(SolveBiasFreeLs(line, d));
+  EXPECT_FALSE(SolveBiasFreeLs(std::span(line).first(3), std::span(d).first(3)));
+}
+
 TEST(DoubleDifferenceLs, TooFewSamples) {
   const std::vector<Eigen::Vector3d> p(3, Eigen::Vector3d::Zero());
   const std::vector<double> d(3, 1.0);

@@ -117,8 +117,9 @@ class CertifiedTrigger : public InitTrigger {
                          SolveResult* estimate) const;
   // The cadence after the judgement: backed off on a refusal that repeats, restored on progress.
   void PaceCadence();
-  // Where other minima of the fit may lie: the mirror, and 3 D along the covariance's axes and
-  // towards and away from the tags' centroid (with the bias that fits best there).
+  // Where other minima of the fit may lie: the mirror, 3 D along the covariance's axes and
+  // towards and away from the tags' centroid (with the bias that fits best there), and the ranges
+  // read as distances (the bias-free linear fit).
   std::vector<Alternative> Alternatives(std::span<const Eigen::Vector3d> p_world_tag, std::span<const double> range_m,
                                         const SolveResult& estimate, const Eigen::Matrix3d& axes) const;
   // Fit a against fit b of the same data: a's evidence over b (FitEvidence after

@@ -57,6 +57,14 @@ SolveResult SolveDoubleDifferenceLs(std::span<const Eigen::Vector3d> p_world_tag
                                     std::span<const double> range_m, const LsOptions& options = {},
                                     const std::optional<HeightPrior>& height_prior = std::nullopt);
 
+// The anchor position that reads the ranges as plain distances (the bias held at 0): Eq. (9)-(10)
+// without the bias column, the position block of the same normal equations. None where singular.
+// Where a far anchor is seen from a short path, range and bias trade off along a long valley whose
+// minima can lie metres apart at nearly equal fits; the certificate starts one of its alternatives
+// here, at the valley's zero-bias end.
+std::optional<Eigen::Vector3d> SolveBiasFreeLs(std::span<const Eigen::Vector3d> p_world_tag,
+                                               std::span<const double> range_m);
+
 // The same behind the Solver interface (ls_double, and the pdop_ls trigger's estimate).
 class DoubleDifferenceLsSolver : public Solver {
  public:
