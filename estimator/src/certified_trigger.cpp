@@ -19,10 +19,10 @@ constexpr double kInf = std::numeric_limits<double>::infinity();
 constexpr double kStartDistance = 3.0;    // the alternatives' starts, in units of D from the estimate
 constexpr int kAlternativeIterations = 20;
 
-// The median of d_k - |p_k - p|: the bias that fits best at p (robust to outliers).
+// The median of d_k - |p_k - p|: the bias that fits best at p (robust to outliers); `r` is scratch.
 double MedianResidual(std::span<const Eigen::Vector3d> p_world_tag, std::span<const double> range_m,
-                      const Eigen::Vector3d& p_world_anchor) {
-  std::vector<double> r(range_m.size());
+                      const Eigen::Vector3d& p_world_anchor, std::vector<double>& r) {
+  r.resize(range_m.size());
   for (std::size_t k = 0; k < range_m.size(); ++k) r[k] = range_m[k] - (p_world_tag[k] - p_world_anchor).norm();
   std::nth_element(r.begin(), r.begin() + static_cast<std::ptrdiff_t>(r.size() / 2), r.end());
   return r.empty() ? 0.0 : r[r.size() / 2];
@@ -165,9 +165,6 @@ std::vector<CertifiedTrigger::Alternative> CertifiedTrigger::Alternatives(std::s
   // vertical plane along the path (a turn about the line at the same height). Where the path is
   // not a line, the twin refines back or fits clearly worse.
   if (height_prior_) starts.push_back({SideMirror(p_world_tag, centroid, estimate.p_world_anchor), 0.0, false});
-  for (Alternative& start : starts) {
-    if (!start.mirror) start.bias_m = MedianResidual(p_world_tag, range_m, start.p_world_anchor);
-  }
   return starts;
 }
 
@@ -179,7 +176,10 @@ CertifiedTrigger::Verdict CertifiedTrigger::RuleOutAlternatives(std::span<const 
   const double threshold = mirror_.min_evidence + 2.0 * std::log(static_cast<double>(tests_));
   judgement_.evidence_needed = threshold;
   judgement_.evidence = kInf;  // none farther than D: nothing to rule out
-  for (const Alternative& start : Alternatives(p_world_tag, range_m, estimate, axes)) {
+  for (Alternative start : Alternatives(p_world_tag, range_m, estimate, axes)) {
+    // Each start's bias only once it is reached: the first alternative not ruled out ends the loop
+    // (on a flat path, the mirror, every evaluation).
+    if (!start.mirror) start.bias_m = MedianResidual(p_world_tag, range_m, start.p_world_anchor, residual_m_);
     Alternative fit = start;
     const SolveResult refined = refine_.Solve(p_world_tag, range_m, start.p_world_anchor, start.bias_m, height_prior_);
     if (Succeeded(refined.status)) {

@@ -117,9 +117,9 @@ class CertifiedTrigger : public InitTrigger {
                          SolveResult* estimate) const;
   // The cadence after the judgement: backed off on a refusal that repeats, restored on progress.
   void PaceCadence();
-  // Where other minima of the fit may lie: the mirror, 3 D along the covariance's axes and
-  // towards and away from the tags' centroid (with the bias that fits best there), and the ranges
-  // read as distances (the bias-free linear fit).
+  // Where other minima of the fit may lie: the mirror (with its bias), 3 D along the covariance's
+  // axes and towards and away from the tags' centroid, and the ranges read as distances (the
+  // bias-free linear fit); RuleOutAlternatives gives these the bias that fits best there.
   std::vector<Alternative> Alternatives(std::span<const Eigen::Vector3d> p_world_tag, std::span<const double> range_m,
                                         const SolveResult& estimate, const Eigen::Matrix3d& axes) const;
   // Fit a against fit b of the same data: a's evidence over b (FitEvidence after
@@ -187,6 +187,7 @@ class CertifiedTrigger : public InitTrigger {
   bool mirrored_ = false;                    // a mirror refused an estimate since one got past it
   double smallest_region_m_ = std::numeric_limits<double>::infinity();  // around a converged estimate
   std::vector<double> corrected_m_;          // the ranges less each tag's offset (scratch)
+  std::vector<double> residual_m_;           // an alternative's residuals, for its bias (scratch)
   std::optional<SolveResult> judged_;        // the estimate of an evaluation that certified it
 };
 
