@@ -55,7 +55,7 @@ class RowBuilder {
 
   std::span<const Eigen::Vector3d> p_;
   std::span<const double> d_;
-  const LsOptions& options_;
+  LsOptions options_;  // a copy: a caller may pass a temporary
   double var_d_;
   double var_p_;
   std::size_t pivot_ = 0;
