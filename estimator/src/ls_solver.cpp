@@ -165,14 +165,14 @@ bool TotalLeastSquares(const Eigen::Matrix4d& normal, const Eigen::Vector4d& rhs
 
 // The rows' normal equations sum w a a^T x = sum w b a, in one O(N) pass, and sum w b^2 (for total
 // least squares).
-struct Normal {
+struct NormalSums {
   Eigen::Matrix4d normal = Eigen::Matrix4d::Zero();
   Eigen::Vector4d rhs = Eigen::Vector4d::Zero();
   double b_squares = 0.0;
 };
 
-Normal NormalEquations(const RowBuilder& rows, std::size_t n) {
-  Normal sums;
+NormalSums NormalEquations(const RowBuilder& rows, std::size_t n) {
+  NormalSums sums;
   for (std::size_t k = 0; k < n; ++k) {
     if (k == rows.pivot()) continue;
     const Row row = rows(k);
@@ -191,7 +191,7 @@ std::optional<Eigen::Vector3d> SolveBiasFreeLs(std::span<const Eigen::Vector3d> 
   if (n < kMinSamplesLs || p_world_tag.size() != n) return std::nullopt;
   const RowBuilder rows(p_world_tag, range_m, LsOptions{});
   // gamma = 0 drops Eq. (9)'s last column: the position block of the same normal equations.
-  const Normal sums = NormalEquations(rows, n);
+  const NormalSums sums = NormalEquations(rows, n);
   const Eigen::LDLT<Eigen::Matrix3d> ldlt(sums.normal.topLeftCorner<3, 3>());
   if (!sums.normal.allFinite() || !sums.rhs.allFinite() || !internal::IsWellConditioned(ldlt)) return std::nullopt;
   const Eigen::Vector3d x = ldlt.solve(sums.rhs.head<3>());
