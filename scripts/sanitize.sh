@@ -8,7 +8,10 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 bash scripts/setup.sh
 fuzz_seconds=${FUZZ_SECONDS:-30}
+# Line tables, not full debug information: a report's stack still names every file and line, and the
+# build takes about a third less time.
 CC=clang CXX=clang++ cmake -S . -B build-asan -DCMAKE_BUILD_TYPE=RelWithDebInfo -DANCHORBENCH_SANITIZE=ON \
+  -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O2 -gline-tables-only -DNDEBUG" \
   -DANCHORBENCH_FUZZ=ON -DANCHORBENCH_BUILD_BENCHMARKS=OFF -DANCHORBENCH_MPI=OFF -DANCHORBENCH_PYTHON=ON >/dev/null
 cmake --build build-asan -j"$(nproc)"
 
