@@ -14,6 +14,8 @@ CC=clang CXX=clang++ cmake -S . -B build-asan -DCMAKE_BUILD_TYPE=RelWithDebInfo 
   -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O2 -gline-tables-only -DNDEBUG" \
   -DANCHORBENCH_FUZZ=ON -DANCHORBENCH_BUILD_BENCHMARKS=OFF -DANCHORBENCH_MPI=OFF -DANCHORBENCH_PYTHON=ON >/dev/null
 cmake --build build-asan -j"$(nproc)"
+echo "sanitize.sh: the clang build took ${SECONDS} s" >&2
+suite_start=$SECONDS
 
 export ASAN_OPTIONS=detect_leaks=1:abort_on_error=1:strict_string_checks=1
 export UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1
@@ -24,6 +26,7 @@ export UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1
 # MPI here (-DANCHORBENCH_MPI=OFF): OpenMPI's own allocations would be reported as leaks; the
 # chunks it carries are the work layer's, tested here.
 ctest --test-dir build-asan --output-on-failure -j"$(nproc)" -E "^(cli\.faults|cli\.resume|scripts\.slurm)$"
+echo "sanitize.sh: the suite under ASan took $((SECONDS - suite_start)) s" >&2
 
 for harness in csv config; do
   corpus=$(mktemp -d)  # new inputs go here, not into the committed corpus

@@ -5,7 +5,14 @@
 # inputs, the clang build's bytes against g++'s).
 set -euo pipefail
 cd "$(dirname "$0")/.."
+# Each phase's wall time on stderr, where the time of the whole goes (README: ~35 min on 2 cores).
+phase_start=$SECONDS
+phase_done() {
+  echo "test.sh: $1 took $((SECONDS - phase_start)) s" >&2
+  phase_start=$SECONDS
+}
 ANCHORBENCH_WERROR=ON bash scripts/build.sh  # a warning fails the build
+phase_done "the build"
 
 # The installed package: install, then build the examples against it and run them.
 cmake --install build --prefix build/install >/dev/null
@@ -16,6 +23,9 @@ done
 build/examples/custom_solver/custom_solver examples/custom_solver/table1_thirds.yaml
 build/app/anchorbench simulate configs/tunnel.yaml --out build/examples/tunnel_log --overwrite >/dev/null
 build/examples/online_front_end/online_front_end build/examples/tunnel_log/poses.csv build/examples/tunnel_log/ranges.csv
+phase_done "the examples"
 
 ctest --test-dir build --output-on-failure -j"$(nproc)"
+phase_done "the suite"
 bash scripts/sanitize.sh
+phase_done "the sanitizer job"
