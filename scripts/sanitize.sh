@@ -8,13 +8,14 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 bash scripts/setup.sh
 fuzz_seconds=${FUZZ_SECONDS:-30}
+build_start=$SECONDS  # each phase's wall time on stderr, as scripts/test.sh prints its own
 # Line tables, not full debug information: a report's stack still names every file and line, and the
 # build is shorter (on a clean clone 600 s, was 670 s).
 CC=clang CXX=clang++ cmake -S . -B build-asan -DCMAKE_BUILD_TYPE=RelWithDebInfo -DANCHORBENCH_SANITIZE=ON \
   -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O2 -gline-tables-only -DNDEBUG" \
   -DANCHORBENCH_FUZZ=ON -DANCHORBENCH_BUILD_BENCHMARKS=OFF -DANCHORBENCH_MPI=OFF -DANCHORBENCH_PYTHON=ON >/dev/null
 cmake --build build-asan -j"$(nproc)"
-echo "sanitize.sh: the clang build took ${SECONDS} s" >&2
+echo "sanitize.sh: the clang build took $((SECONDS - build_start)) s" >&2
 suite_start=$SECONDS
 
 export ASAN_OPTIONS=detect_leaks=1:abort_on_error=1:strict_string_checks=1

@@ -24,10 +24,14 @@ kill_after() {
 }
 
 table="$configs/table1.yaml"
-"$bin" run "$table" --realizations 12 --out "$dir/whole" --quiet --threads 2 || fail "run"
-kill_after 0.7 "$dir/run" "$bin" run "$table" --realizations 12 --out "$dir/run" --threads 2
-kill_after 0.7 "$dir/run" "$bin" run "$table" --realizations 12 --out "$dir/run" --threads 1 --resume
-"$bin" run "$table" --realizations 12 --out "$dir/run" --quiet --threads 2 --resume || fail "resumed run"
+# Small enough to be quick, long enough that a kill after 0.5-0.7 s finds some chunks done and
+# some not (the output says how many were kept).
+run_realizations=12
+sweep_realizations=6
+"$bin" run "$table" --realizations "$run_realizations" --out "$dir/whole" --quiet --threads 2 || fail "run"
+kill_after 0.7 "$dir/run" "$bin" run "$table" --realizations "$run_realizations" --out "$dir/run" --threads 2
+kill_after 0.7 "$dir/run" "$bin" run "$table" --realizations "$run_realizations" --out "$dir/run" --threads 1 --resume
+"$bin" run "$table" --realizations "$run_realizations" --out "$dir/run" --quiet --threads 2 --resume || fail "resumed run"
 for file in attempts.csv summary.csv summary.md; do
   cmp -s "$dir/whole/$file" "$dir/run/$file" || fail "resumed run: $file differs from the uninterrupted run's"
 done
@@ -35,28 +39,28 @@ done
 echo "ok: a run killed twice and resumed writes the uninterrupted run's bytes"
 
 axis="estimator.trigger.pdop_threshold=0.5,1"
-"$bin" sweep "$table" --set "$axis" --realizations 6 --out "$dir/sweep_whole" --quiet || fail "sweep"
-kill_after 0.7 "$dir/sweep" "$bin" sweep "$table" --set "$axis" --realizations 6 --out "$dir/sweep"
-"$bin" sweep "$table" --set "$axis" --realizations 6 --out "$dir/sweep" --quiet --resume || fail "resumed sweep"
+"$bin" sweep "$table" --set "$axis" --realizations "$sweep_realizations" --out "$dir/sweep_whole" --quiet || fail "sweep"
+kill_after 0.7 "$dir/sweep" "$bin" sweep "$table" --set "$axis" --realizations "$sweep_realizations" --out "$dir/sweep"
+"$bin" sweep "$table" --set "$axis" --realizations "$sweep_realizations" --out "$dir/sweep" --quiet --resume || fail "resumed sweep"
 for file in sweep.csv sweep.md; do
   cmp -s "$dir/sweep_whole/$file" "$dir/sweep/$file" || fail "resumed sweep: $file differs"
 done
 echo "ok: a killed sweep resumed writes the uninterrupted sweep's bytes"
 
-kill_after 0.7 "$dir/left" "$bin" run "$table" --realizations 12 --out "$dir/left" --threads 2
+kill_after 0.7 "$dir/left" "$bin" run "$table" --realizations "$run_realizations" --out "$dir/left" --threads 2
 refused "an interrupted run's store without --resume" "finished chunks of an interrupted run: --resume" \
-  "$dir/left" "$bin" run "$table" --realizations 12 --out "$dir/left"
+  "$dir/left" "$bin" run "$table" --realizations "$run_realizations" --out "$dir/left"
 refused "another run's store with --resume" "holds chunks of another run" \
-  "$dir/left" "$bin" run "$table" --realizations 12 --seed 9 --out "$dir/left" --resume
+  "$dir/left" "$bin" run "$table" --realizations "$run_realizations" --seed 9 --out "$dir/left" --resume
 refused "finished results without --overwrite" "--overwrite" "$dir/whole/never" \
-  "$bin" run "$table" --realizations 12 --out "$dir/whole" --resume
-"$bin" run "$table" --realizations 12 --seed 9 --out "$dir/left" --quiet --overwrite || fail "--overwrite"
+  "$bin" run "$table" --realizations "$run_realizations" --out "$dir/whole" --resume
+"$bin" run "$table" --realizations "$run_realizations" --seed 9 --out "$dir/left" --quiet --overwrite || fail "--overwrite"
 [ -e "$dir/left.chunks" ] && fail "--overwrite left the old store"
 
 # A shard resumes like a run: killed, resumed, merged with its sibling, the whole run's bytes.
-kill_after 0.5 "$dir/shard0" "$bin" run "$table" --realizations 12 --shard 0/2 --out "$dir/shard0" --threads 2
-"$bin" run "$table" --realizations 12 --shard 0/2 --out "$dir/shard0" --quiet --resume || fail "resumed shard"
-"$bin" run "$table" --realizations 12 --shard 1/2 --out "$dir/shard1" --quiet || fail "shard 1/2"
+kill_after 0.5 "$dir/shard0" "$bin" run "$table" --realizations "$run_realizations" --shard 0/2 --out "$dir/shard0" --threads 2
+"$bin" run "$table" --realizations "$run_realizations" --shard 0/2 --out "$dir/shard0" --quiet --resume || fail "resumed shard"
+"$bin" run "$table" --realizations "$run_realizations" --shard 1/2 --out "$dir/shard1" --quiet || fail "shard 1/2"
 "$bin" merge "$dir/merged" "$dir/shard1" "$dir/shard0" --quiet || fail "merge"
 cmp -s "$dir/whole/attempts.csv" "$dir/merged/attempts.csv" || fail "a resumed shard merged: attempts.csv differs"
 echo "ok: a killed shard resumed merges to the whole run's bytes"
