@@ -39,7 +39,7 @@ const registry::Components& WithWaitTrigger() {
   return components;
 }
 
-std::string ErrorFor(const std::string& yaml, const std::vector<std::string>& overrides = {}) {
+std::string PartErrorFor(const std::string& yaml, const std::vector<std::string>& overrides = {}) {
   try {
     LoadConfigText(yaml, "c.yaml", overrides, WithWaitTrigger());
   } catch (const schema::InputError& e) {
@@ -68,15 +68,15 @@ TEST(PartOptionsConfig, AnOverrideOrASweepAxisSetsAPartsKey) {
 }
 
 TEST(PartOptionsConfig, BadValuesNameTheKeyAndThePartsRule) {
-  EXPECT_NE(ErrorFor("estimator: {my_wait: {wait_s: -1}}\n").find("key 'estimator.my_wait.wait_s': must be > 0, got '-1'"),
+  EXPECT_NE(PartErrorFor("estimator: {my_wait: {wait_s: -1}}\n").find("key 'estimator.my_wait.wait_s': must be > 0, got '-1'"),
             std::string::npos)
-      << ErrorFor("estimator: {my_wait: {wait_s: -1}}\n");
-  EXPECT_NE(ErrorFor("estimator: {my_wait: {min_count: 2.5}}\n").find("estimator.my_wait.min_count"), std::string::npos);
-  EXPECT_NE(ErrorFor("estimator: {my_wait: {wait: 3}}\n").find("key 'estimator.my_wait.wait': unknown key"),
+      << PartErrorFor("estimator: {my_wait: {wait_s: -1}}\n");
+  EXPECT_NE(PartErrorFor("estimator: {my_wait: {min_count: 2.5}}\n").find("estimator.my_wait.min_count"), std::string::npos);
+  EXPECT_NE(PartErrorFor("estimator: {my_wait: {wait: 3}}\n").find("key 'estimator.my_wait.wait': unknown key"),
             std::string::npos)
-      << ErrorFor("estimator: {my_wait: {wait: 3}}\n");
-  EXPECT_NE(ErrorFor("estimator: {my_wait: {wait_s: soon}}\n").find("expected a number"), std::string::npos);
-  EXPECT_NE(ErrorFor("seed: 1\n", {"estimator.my_wait.wait_s=0"}).find("estimator.my_wait.wait_s"), std::string::npos);
+      << PartErrorFor("estimator: {my_wait: {wait: 3}}\n");
+  EXPECT_NE(PartErrorFor("estimator: {my_wait: {wait_s: soon}}\n").find("expected a number"), std::string::npos);
+  EXPECT_NE(PartErrorFor("seed: 1\n", {"estimator.my_wait.wait_s=0"}).find("estimator.my_wait.wait_s"), std::string::npos);
 }
 
 TEST(PartOptionsConfig, TheResolvedConfigCarriesThePartsSectionAndReadsBackTheSame) {

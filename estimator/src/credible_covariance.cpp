@@ -17,11 +17,11 @@ namespace {
 constexpr int kMaxDegree = 3;
 
 // The unit direction anchor -> tag and its row j = [-u^T, 1] of the range Jacobian.
-struct Row {
+struct JacobianRow {
   Eigen::Vector3d unit;
   Eigen::Vector4d j;
 };
-bool RowAt(const Eigen::Vector3d& p_world_tag, const Eigen::Vector3d& p_world_anchor, Row* row) {
+bool RowAt(const Eigen::Vector3d& p_world_tag, const Eigen::Vector3d& p_world_anchor, JacobianRow* row) {
   const Eigen::Vector3d diff = p_world_tag - p_world_anchor;
   const double distance_m = diff.norm();
   if (!(distance_m > 0.0)) return false;
@@ -119,7 +119,7 @@ ErrorSums SumErrorRows(std::span<const Eigen::Vector3d> p_world_tag, std::span<c
   }
   if (sums.harmonics == 0 && !sums.travel && sums.tags.empty()) return sums;
   for (std::size_t k = 0; k < p_world_tag.size(); ++k) {
-    Row row;
+    JacobianRow row;
     if (!RowAt(p_world_tag[k], p_world_anchor, &row)) continue;
     const std::size_t link = sums.tags.empty() ? 0
         : static_cast<std::size_t>(std::find(sums.tags.begin(), sums.tags.end(), tag_id[k]) - sums.tags.begin());
@@ -131,7 +131,7 @@ ErrorSums SumErrorRows(std::span<const Eigen::Vector3d> p_world_tag, std::span<c
 
 void ErrorSums::Add(const Eigen::Vector3d& p_world_tag, const Eigen::Vector3d& p_world_anchor, int model_error_degree,
                     double count, std::size_t tag_index) {
-  Row row;
+  JacobianRow row;
   if (RowAt(p_world_tag, p_world_anchor, &row)) AddRow(row.unit, row.j, model_error_degree, count, tag_index);
 }
 

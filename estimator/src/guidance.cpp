@@ -10,8 +10,6 @@
 namespace anchorbench::estimator {
 namespace {
 
-constexpr double kInf = std::numeric_limits<double>::infinity();
-
 // The index of the last sample's tag in `tags` (0 where it is not there, or there is none).
 std::size_t IndexOf(const std::vector<int>& tags, std::span<const int> tag_id) {
   if (tag_id.empty()) return 0;
@@ -66,7 +64,7 @@ double RegionForecast::SamplesToCertify(const Eigen::Vector3d& p_world_candidate
   // Doubling to a count that certifies, then bisection between it and the one before.
   double passing = 1.0;
   while (!within(passing)) {
-    if (passing >= max_samples) return kInf;
+    if (passing >= max_samples) return std::numeric_limits<double>::infinity();
     passing = std::min(2.0 * passing, max_samples);
   }
   double failing = std::floor(passing / 2.0);

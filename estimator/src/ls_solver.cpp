@@ -12,7 +12,7 @@ namespace anchorbench::estimator {
 namespace {
 
 // One double-difference row k against the pivot j, positions relative to p_j.
-struct Row {
+struct DifferenceRow {
   Eigen::Vector4d a;
   double b;
   double weight;
@@ -35,11 +35,11 @@ class RowBuilder {
 
   std::size_t pivot() const { return pivot_; }
 
-  Row operator()(std::size_t k) const {
+  DifferenceRow operator()(std::size_t k) const {
     const Eigen::Vector3d dp = p_[k] - p_[pivot_];
     const double d_k = d_[k];
     const double d_j = d_[pivot_];
-    Row row;
+    DifferenceRow row;
     row.a << -dp, d_k - d_j;                                       // Eq. (9)
     row.b = 0.5 * ((d_k * d_k - d_j * d_j) - dp.squaredNorm());  // Eq. (10), origin at p_j
     // UVIO weighting: inverse variance of the row, pivot variance included.
@@ -83,7 +83,7 @@ double WeightedSquares(const RowBuilder& rows, std::size_t n, const Eigen::Vecto
   double weighted_squares = 0.0;
   for (std::size_t k = 0; k < n; ++k) {
     if (k == rows.pivot()) continue;
-    const Row row = rows(k);
+    const DifferenceRow row = rows(k);
     const double residual = row.a.dot(x) - row.b;
     weighted_squares += row.weight * residual * residual;
   }
@@ -131,7 +131,7 @@ Eigen::Matrix4d PropagatedCovariance(const RowBuilder& rows, std::span<const Eig
     const double r = (p[k] - p_anchor).norm() + gamma - d[k];
     squares += r * r;
     if (k == j) continue;
-    const Row row = rows(k);
+    const DifferenceRow row = rows(k);
     const double scale = row.weight * (d[k] - gamma);
     meat.noalias() += scale * scale * row.a * row.a.transpose();
     pivot_column += row.weight * row.a;
@@ -175,7 +175,7 @@ NormalSums NormalEquations(const RowBuilder& rows, std::size_t n) {
   NormalSums sums;
   for (std::size_t k = 0; k < n; ++k) {
     if (k == rows.pivot()) continue;
-    const Row row = rows(k);
+    const DifferenceRow row = rows(k);
     sums.normal.noalias() += row.weight * row.a * row.a.transpose();
     sums.rhs += row.weight * row.b * row.a;
     sums.b_squares += row.weight * row.b * row.b;

@@ -38,7 +38,7 @@ FrontEnd::ChainFactory KeepEverything() {
 }
 
 using EventKey = std::tuple<int, std::size_t, double, int, double, double, double, double>;
-std::vector<EventKey> Keys(const std::vector<FrontEndEvent>& events) {
+std::vector<EventKey> SortedKeys(const std::vector<FrontEndEvent>& events) {
   std::vector<EventKey> keys;
   for (const FrontEndEvent& e : events) {
     const Eigen::Vector3d& p = e.init.solve.p_world_anchor;
@@ -83,9 +83,9 @@ TEST(FrontEnd, DeferredSolvesGiveTheInlineEventsForEveryAnchorAndChain) {
   const double t_end_s = samples.back().t_s;
   inline_solves.Finish(t_end_s);
   deferred.Finish(t_end_s);
-  const auto expected = Keys(inline_solves.TakeEvents());
+  const auto expected = SortedKeys(inline_solves.TakeEvents());
   EXPECT_GE(expected.size(), 8u);  // at least every anchor's fixed window
-  EXPECT_EQ(Keys(deferred.TakeEvents()), expected);
+  EXPECT_EQ(SortedKeys(deferred.TakeEvents()), expected);
   EXPECT_FALSE(deferred.HasPendingSolves());
 }
 

@@ -21,7 +21,7 @@
 namespace anchorbench::estimator {
 namespace {
 
-const Eigen::Vector3d kAnchor(15.0, 4.0, 0.7);  // beside the loop, 0.2 m above its floor: its height hardly seen
+const Eigen::Vector3d kGuidedAnchor(15.0, 4.0, 0.7);  // beside the loop, 0.2 m above its floor: its height hardly seen
 
 std::vector<Eigen::Vector3d> FlatLoop(int n) {  // a robot's loop on the floor, 0.5 m up, within 2 cm
   std::vector<Eigen::Vector3d> p;
@@ -34,7 +34,7 @@ std::vector<Eigen::Vector3d> FlatLoop(int n) {  // a robot's loop on the floor, 
 
 RegionBasis Basis() {
   RegionBasis basis;
-  basis.p_world_anchor = kAnchor;
+  basis.p_world_anchor = kGuidedAnchor;
   basis.noise_variance_m2 = 0.05 * 0.05;
   basis.region_chi2 = ChiSquare3Quantile(0.99);
   basis.accuracy_m = 0.75;
@@ -109,7 +109,7 @@ std::vector<RangeSample> FlatSamples(double seconds) {
   std::vector<RangeSample> samples;
   const std::vector<Eigen::Vector3d> path = FlatLoop(static_cast<int>(10.0 * seconds));
   for (std::size_t k = 0; k < path.size(); ++k) {
-    samples.push_back({0.1 * static_cast<double>(k), 0, 7, (path[k] - kAnchor).norm() + 0.1 + 0.05 * rng.Normal(), path[k]});
+    samples.push_back({0.1 * static_cast<double>(k), 0, 7, (path[k] - kGuidedAnchor).norm() + 0.1 + 0.05 * rng.Normal(), path[k]});
   }
   return samples;
 }

@@ -13,17 +13,17 @@
 namespace anchorbench::estimator {
 namespace {
 
-const Eigen::Vector3d kAnchor(3.0, 4.0, 4.5);
+const Eigen::Vector3d kCheckedAnchor(3.0, 4.0, 4.5);
 
 // A tag weaving in x-y at 1.5 m with a vertical wobble of `wobble_m`.
 testing::AnchorData Path(double wobble_m, double sigma_m, std::uint64_t seed) {
   auto rng = testing::TestStream(seed);
-  testing::AnchorData data{kAnchor, 0.2, {}, {}};
+  testing::AnchorData data{kCheckedAnchor, 0.2, {}, {}};
   for (int k = 0; k < 400; ++k) {
     const double t = 0.1 * k;
     const Eigen::Vector3d p(-10.0 + 0.5 * t, 3.0 * std::sin(0.4 * t), 1.5 + wobble_m * std::sin(0.9 * t));
     data.p_world_tag.push_back(p);
-    data.range_m.push_back((p - kAnchor).norm() + 0.2 + sigma_m * rng.Normal());
+    data.range_m.push_back((p - kCheckedAnchor).norm() + 0.2 + sigma_m * rng.Normal());
   }
   return data;
 }
@@ -44,7 +44,7 @@ TEST(HeightCheck, ANearlyFlatPathIsHeightUnobservableNotAConfidentHeight) {
   const testing::AnchorData flat = Path(0.003, 0.05, 2);
   const SolveResult unchecked = Checked(false)->Solve(flat.p_world_tag, flat.range_m);
   ASSERT_TRUE(Succeeded(unchecked.status));
-  EXPECT_GT((unchecked.p_world_anchor - kAnchor).norm(), 5.0);
+  EXPECT_GT((unchecked.p_world_anchor - kCheckedAnchor).norm(), 5.0);
   EXPECT_LT(unchecked.p_world_anchor.z(), 1.5);  // below the path: the mirror
   const SolveResult checked = Checked(true)->Solve(flat.p_world_tag, flat.range_m);
   EXPECT_EQ(checked.status, SolveStatus::kHeightUnobservable);
@@ -58,7 +58,7 @@ TEST(HeightCheck, APathThatChangesHeightBeatsItsMirror) {
   const testing::AnchorData varied = Path(0.1, 0.05, 2);  // 10 cm of height change already suffice
   const SolveResult result = Checked(true)->Solve(varied.p_world_tag, varied.range_m);
   ASSERT_TRUE(Succeeded(result.status)) << ToString(result.status);
-  EXPECT_LT((result.p_world_anchor - kAnchor).norm(), 0.2);
+  EXPECT_LT((result.p_world_anchor - kCheckedAnchor).norm(), 0.2);
   EXPECT_GT(MirrorEvidence(varied.p_world_tag, varied.range_m, result, 0.1), 100.0);
 }
 
@@ -77,12 +77,12 @@ TEST(HeightCheck, ASidePriorResolvesTheMirror) {
     const testing::AnchorData flat = Path(0.003, 0.05, seed);
     const SolveResult right = HeightCheckedSolver(solver, above).Solve(flat.p_world_tag, flat.range_m);
     ASSERT_TRUE(Succeeded(right.status)) << "seed " << seed;
-    EXPECT_LT((right.p_world_anchor - kAnchor).norm(), 0.3) << "seed " << seed;
+    EXPECT_LT((right.p_world_anchor - kCheckedAnchor).norm(), 0.3) << "seed " << seed;
     EXPECT_NEAR(right.bias_m, 0.2, 0.1) << "seed " << seed;
     const SolveResult wrong = HeightCheckedSolver(solver, below).Solve(flat.p_world_tag, flat.range_m);
     ASSERT_TRUE(Succeeded(wrong.status));
     EXPECT_LT(wrong.p_world_anchor.z(), 1.5) << "seed " << seed;  // below the path: the prior's cost
-    EXPECT_NEAR(wrong.p_world_anchor.head<2>().x(), kAnchor.x(), 0.3);  // x-y survive a wrong prior
+    EXPECT_NEAR(wrong.p_world_anchor.head<2>().x(), kCheckedAnchor.x(), 0.3);  // x-y survive a wrong prior
   }
   HeightCheckOptions::Side side;
   EXPECT_TRUE(ParseSide("below", &side));

@@ -18,18 +18,18 @@
 namespace anchorbench::estimator {
 namespace {
 
-const Eigen::Vector3d kAnchor(3.0, 4.0, 4.5);
+const Eigen::Vector3d kPriorAnchor(3.0, 4.0, 4.5);
 constexpr double kBiasM = 0.2;
 
 // A tag weaving in x-y at 1.5 m with a vertical wobble of `wobble_m` (0: exactly flat).
 testing::AnchorData Path(double wobble_m, std::uint64_t seed) {
   auto rng = testing::TestStream(seed);
-  testing::AnchorData data{kAnchor, kBiasM, {}, {}};
+  testing::AnchorData data{kPriorAnchor, kBiasM, {}, {}};
   for (int k = 0; k < 400; ++k) {
     const double t = 0.1 * k;
     const Eigen::Vector3d p(-10.0 + 0.5 * t, 3.0 * std::sin(0.4 * t), 1.5 + wobble_m * std::sin(0.9 * t));
     data.p_world_tag.push_back(p);
-    data.range_m.push_back((p - kAnchor).norm() + kBiasM + 0.05 * rng.Normal());
+    data.range_m.push_back((p - kPriorAnchor).norm() + kBiasM + 0.05 * rng.Normal());
   }
   return data;
 }
@@ -44,19 +44,19 @@ AnchorSolverOptions Options(std::optional<HeightPrior> prior) {
 TEST(HeightPrior, OnAnExactlyFlatPathTheLsNeedsItAndGetsXyFromTheRanges) {
   const testing::AnchorData flat = Path(0.0, 1);
   EXPECT_EQ(SolveDoubleDifferenceLs(flat.p_world_tag, flat.range_m).status, SolveStatus::kDegenerateGeometry);
-  const SolveResult ls = SolveDoubleDifferenceLs(flat.p_world_tag, flat.range_m, {}, HeightPrior{kAnchor.z(), 0.1});
+  const SolveResult ls = SolveDoubleDifferenceLs(flat.p_world_tag, flat.range_m, {}, HeightPrior{kPriorAnchor.z(), 0.1});
   ASSERT_TRUE(Succeeded(ls.status)) << ToString(ls.status);
-  EXPECT_LT((ls.p_world_anchor - kAnchor).head<2>().norm(), 0.3);
-  EXPECT_NEAR(ls.p_world_anchor.z(), kAnchor.z(), 0.3);
+  EXPECT_LT((ls.p_world_anchor - kPriorAnchor).head<2>().norm(), 0.3);
+  EXPECT_NEAR(ls.p_world_anchor.z(), kPriorAnchor.z(), 0.3);
 }
 
 TEST(HeightPrior, FlatPathsInitializeOnTheRightSideWithXyFromTheRanges) {
   for (std::uint64_t seed : {1, 2, 3}) {  // seed 2 converges to the mirror without a prior
     const testing::AnchorData flat = Path(0.003, seed);
-    const SolveResult with = AnchorSolver(Options(HeightPrior{kAnchor.z(), 0.1})).Solve(flat.p_world_tag, flat.range_m);
+    const SolveResult with = AnchorSolver(Options(HeightPrior{kPriorAnchor.z(), 0.1})).Solve(flat.p_world_tag, flat.range_m);
     ASSERT_TRUE(Succeeded(with.status)) << "seed " << seed;
-    EXPECT_LT((with.p_world_anchor - kAnchor).head<2>().norm(), 0.1) << "seed " << seed;
-    EXPECT_NEAR(with.p_world_anchor.z(), kAnchor.z(), 0.2) << "seed " << seed;
+    EXPECT_LT((with.p_world_anchor - kPriorAnchor).head<2>().norm(), 0.1) << "seed " << seed;
+    EXPECT_NEAR(with.p_world_anchor.z(), kPriorAnchor.z(), 0.2) << "seed " << seed;
     EXPECT_NEAR(with.bias_m, kBiasM, 0.1) << "seed " << seed;
     // The height's standard deviation is the prior's at most (the ranges add a little).
     EXPECT_LE(std::sqrt(with.covariance(2, 2)), 0.1 + 1e-9) << "seed " << seed;
@@ -72,16 +72,16 @@ TEST(HeightPrior, FlatPathsInitializeOnTheRightSideWithXyFromTheRanges) {
 TEST(HeightPrior, OnAFlatPathThePriorPicksTheSideAndTheRangesTheDistance) {
   const testing::AnchorData flat = Path(0.003, 1);
   const SolveResult off =
-      AnchorSolver(Options(HeightPrior{kAnchor.z() + 1.0, 0.05})).Solve(flat.p_world_tag, flat.range_m);
+      AnchorSolver(Options(HeightPrior{kPriorAnchor.z() + 1.0, 0.05})).Solve(flat.p_world_tag, flat.range_m);
   ASSERT_TRUE(Succeeded(off.status));
-  EXPECT_LT(std::abs(off.p_world_anchor.z() - kAnchor.z()), 0.3);
-  EXPECT_LT((off.p_world_anchor - kAnchor).head<2>().norm(), 0.1);
-  const double mirror_z = 1.5 - (kAnchor.z() - 1.5);
+  EXPECT_LT(std::abs(off.p_world_anchor.z() - kPriorAnchor.z()), 0.3);
+  EXPECT_LT((off.p_world_anchor - kPriorAnchor).head<2>().norm(), 0.1);
+  const double mirror_z = 1.5 - (kPriorAnchor.z() - 1.5);
   const SolveResult mirrored =
       AnchorSolver(Options(HeightPrior{mirror_z, 0.5})).Solve(flat.p_world_tag, flat.range_m);
   ASSERT_TRUE(Succeeded(mirrored.status));
   EXPECT_NEAR(mirrored.p_world_anchor.z(), mirror_z, 0.3);
-  EXPECT_LT((mirrored.p_world_anchor - kAnchor).head<2>().norm(), 0.1);  // x-y survive a wrong side
+  EXPECT_LT((mirrored.p_world_anchor - kPriorAnchor).head<2>().norm(), 0.1);  // x-y survive a wrong side
 }
 
 // Where the ranges observe the height, a loose prior (10 m) changes the estimate by a hair, and a
@@ -90,20 +90,20 @@ TEST(HeightPrior, WhereTheRangesSeeTheHeightTheyAreWeighedAgainstIt) {
   const testing::AnchorData varied = Path(1.0, 4);
   const SolveResult none = AnchorSolver(Options(std::nullopt)).Solve(varied.p_world_tag, varied.range_m);
   const SolveResult loose =
-      AnchorSolver(Options(HeightPrior{kAnchor.z() + 1.0, 10.0})).Solve(varied.p_world_tag, varied.range_m);
+      AnchorSolver(Options(HeightPrior{kPriorAnchor.z() + 1.0, 10.0})).Solve(varied.p_world_tag, varied.range_m);
   const SolveResult tight =
-      AnchorSolver(Options(HeightPrior{kAnchor.z() + 1.0, 0.001})).Solve(varied.p_world_tag, varied.range_m);
+      AnchorSolver(Options(HeightPrior{kPriorAnchor.z() + 1.0, 0.001})).Solve(varied.p_world_tag, varied.range_m);
   ASSERT_TRUE(Succeeded(none.status) && Succeeded(loose.status) && Succeeded(tight.status));
-  EXPECT_LT((none.p_world_anchor - kAnchor).norm(), 0.1);
+  EXPECT_LT((none.p_world_anchor - kPriorAnchor).norm(), 0.1);
   EXPECT_LT((loose.p_world_anchor - none.p_world_anchor).norm(), 0.01);
-  EXPECT_NEAR(tight.p_world_anchor.z(), kAnchor.z() + 1.0, 0.01);
+  EXPECT_NEAR(tight.p_world_anchor.z(), kPriorAnchor.z() + 1.0, 0.01);
   EXPECT_LT(std::sqrt(loose.covariance(2, 2)), 10.0 * 0.01);  // the ranges' information dominates
 }
 
 // The mirror check weighs the prior too: on a flat path with a prior it accepts the estimate.
 TEST(HeightPrior, TheMirrorCheckCountsThePrior) {
   const testing::AnchorData flat = Path(0.003, 2);
-  const HeightPrior prior{kAnchor.z(), 0.1};
+  const HeightPrior prior{kPriorAnchor.z(), 0.1};
   const HeightCheckOptions check;
   EXPECT_EQ(HeightCheckedSolver(std::make_shared<AnchorSolver>(Options(std::nullopt)), check)
                 .Solve(flat.p_world_tag, flat.range_m)
@@ -114,7 +114,7 @@ TEST(HeightPrior, TheMirrorCheckCountsThePrior) {
   ASSERT_TRUE(solver->height_prior().has_value());
   const SolveResult checked = HeightCheckedSolver(solver, check).Solve(flat.p_world_tag, flat.range_m);
   ASSERT_TRUE(Succeeded(checked.status)) << ToString(checked.status);
-  EXPECT_LT((checked.p_world_anchor - kAnchor).norm(), 0.2);
+  EXPECT_LT((checked.p_world_anchor - kPriorAnchor).norm(), 0.2);
 }
 
 // The closest-point DOP of x-y: finite on an exactly flat path, where the 3-D one is not, and

@@ -9,19 +9,19 @@
 namespace anchorbench::estimator {
 namespace {
 
-const Eigen::Vector3d kAnchor(0, 4, 3);
+const Eigen::Vector3d kRansacAnchor(0, 4, 3);
 
-struct Samples {
+struct PassData {
   std::vector<Eigen::Vector3d> p;
   std::vector<double> d;
 };
 
 // The weaving pass (sigma 0.05 m), with every `every`-th range 2-6 m long (NLOS).
-Samples WithOutliers(int every, std::uint64_t seed) {
-  Samples out;
+PassData WithOutliers(int every, std::uint64_t seed) {
+  PassData out;
   auto rng = testing::TestStream(seed + 100);
   int k = 0;
-  for (const RangeSample& s : testing::PassBy(kAnchor, 0.05, seed)) {
+  for (const RangeSample& s : testing::PassBy(kRansacAnchor, 0.05, seed)) {
     out.p.push_back(s.p_world_tag);
     out.d.push_back(s.range_m + (every > 0 && k++ % every == 0 ? rng.Uniform(2.0, 6.0) : 0.0));
   }
@@ -42,13 +42,13 @@ RansacOptions TableII() {
   return options;
 }
 
-double Error(const SolveResult& result) { return (result.p_world_anchor - kAnchor).norm(); }
+double Error(const SolveResult& result) { return (result.p_world_anchor - kRansacAnchor).norm(); }
 
 // A third of the ranges NLOS: plain least squares lands off (the bias soaks up part); the minimal
 // scheme finds the anchor at its floor of draws. The Table II baseline cannot: a subset of 60
 // is clean with probability (2/3)^60 = 3e-11, and its count assumes 10% outliers.
 TEST(Ransac, MinimalSchemeFindsTheAnchorThroughAThirdOfOutliers) {
-  const Samples data = WithOutliers(3, 1);
+  const PassData data = WithOutliers(3, 1);
   const auto inner = PlainLeastSquares();
   const SolveResult minimal = RansacSolver(inner, RansacOptions{}, 5).Solve(data.p, data.d);
   ASSERT_TRUE(Succeeded(minimal.status));
@@ -63,7 +63,7 @@ TEST(Ransac, MinimalSchemeFindsTheAnchorThroughAThirdOfOutliers) {
 
 // At the 10% of outliers the baseline assumes, both find it.
 TEST(Ransac, BothSchemesFindTheAnchorAtTenPercent) {
-  const Samples data = WithOutliers(10, 1);
+  const PassData data = WithOutliers(10, 1);
   const auto inner = PlainLeastSquares();
   EXPECT_LT(Error(RansacSolver(inner, RansacOptions{}, 5).Solve(data.p, data.d)), 0.05);
   EXPECT_LT(Error(RansacSolver(inner, TableII(), 5).Solve(data.p, data.d)), 0.05);
@@ -75,7 +75,7 @@ TEST(Ransac, BothSchemesFindTheAnchorAtTenPercent) {
 TEST(Ransac, DrawsFollowTheObservedInlierShare) {
   const auto inner = std::make_shared<DoubleDifferenceLsSolver>();  // one iteration: iterations - 1 = draws
   const RansacSolver ransac(inner, RansacOptions{}, 3);
-  const Samples clean = WithOutliers(0, 2), half = WithOutliers(2, 2);
+  const PassData clean = WithOutliers(0, 2), half = WithOutliers(2, 2);
   EXPECT_EQ(ransac.Solve(clean.p, clean.d).iterations - 1, RansacOptions{}.min_subsets);
   const int draws = ransac.Solve(half.p, half.d).iterations - 1;
   EXPECT_GE(draws, 293);
@@ -84,7 +84,7 @@ TEST(Ransac, DrawsFollowTheObservedInlierShare) {
 
 // Same seed, same subsets, same bytes; another seed draws other subsets.
 TEST(Ransac, RepeatsExactlyForOneSeed) {
-  const Samples data = WithOutliers(4, 3);
+  const PassData data = WithOutliers(4, 3);
   const auto inner = PlainLeastSquares();
   const SolveResult a = RansacSolver(inner, RansacOptions{}, 9).Solve(data.p, data.d);
   const SolveResult b = RansacSolver(inner, RansacOptions{}, 9).Solve(data.p, data.d);
@@ -96,7 +96,7 @@ TEST(Ransac, RepeatsExactlyForOneSeed) {
 // Too few samples to leave any out: the inner solver alone; all outliers of one kind leave no
 // consensus big enough to solve.
 TEST(Ransac, SmallOrHopelessInputsSayWhatHappened) {
-  const Samples data = WithOutliers(0, 4);
+  const PassData data = WithOutliers(0, 4);
   const auto inner = PlainLeastSquares();
   const std::span<const Eigen::Vector3d> few_p(data.p.data(), 6);
   const std::span<const double> few_d(data.d.data(), 6);

@@ -21,6 +21,10 @@ std::string FormatFixed(double value, int decimals) {
   return buffer;
 }
 
+std::string FormatFixed(const std::optional<double>& value, int decimals) {
+  return value ? FormatFixed(*value, decimals) : "-";
+}
+
 std::string FormatOptional(const std::optional<double>& value) { return value ? FormatNumber(*value) : ""; }
 
 

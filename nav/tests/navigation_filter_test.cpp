@@ -35,7 +35,7 @@ Trajectory Loop() {
   return trajectory;
 }
 
-const std::vector<Eigen::Vector3d> kAnchors = {{15, 10, 3}, {-15, 10, 1}, {-15, -10, 3}, {15, -10, 1}};
+const std::vector<Eigen::Vector3d> kFilterAnchors = {{15, 10, 3}, {-15, 10, 1}, {-15, -10, 3}, {15, -10, 1}};
 
 struct Anchors {
   std::vector<Eigen::Vector3d> p_world_anchor;  // what the filter is told
@@ -54,7 +54,7 @@ double FinalNees(int run, const Anchors* anchors, const OdometryDrift& drift, do
   for (int i = 0; i < 3; ++i) start[i] += kSigmaStart * rng.Normal();
   NavigationFilter filter(start, kSigmaStart, drift);
   if (anchors) {
-    for (std::size_t a = 0; a < kAnchors.size(); ++a) {
+    for (std::size_t a = 0; a < kFilterAnchors.size(); ++a) {
       filter.AddAnchor(static_cast<int>(a), anchors->p_world_anchor[a], anchors->bias_m[a], anchors->covariance);
     }
   }
@@ -62,8 +62,8 @@ double FinalNees(int run, const Anchors* anchors, const OdometryDrift& drift, do
     filter.Predict(steps[k]);
     if (!anchors) continue;
     if (k % 5 != 4) continue;  // ranges at 2 Hz
-    for (std::size_t a = 0; a < kAnchors.size(); ++a) {
-      const double d = (truth.p_world_tag[k + 1] - kAnchors[a]).norm() + 0.2 + kSigmaRange * rng.Normal();
+    for (std::size_t a = 0; a < kFilterAnchors.size(); ++a) {
+      const double d = (truth.p_world_tag[k + 1] - kFilterAnchors[a]).norm() + 0.2 + kSigmaRange * rng.Normal();
       filter.UpdateRange(static_cast<int>(a), d, kSigmaRange, kNoGate);
     }
   }
@@ -96,7 +96,7 @@ TEST(NavigationFilter, WithoutAnchorsItsCovarianceIsTheConfiguredDrift) {
 
 TEST(NavigationFilter, WithPerfectAnchorsItIsConsistentAndAccurate) {
   const OdometryDrift drift{0.004, 0.002, 0.02};
-  Anchors perfect{kAnchors, std::vector<double>(kAnchors.size(), 0.2), Eigen::Matrix4d::Zero()};
+  Anchors perfect{kFilterAnchors, std::vector<double>(kFilterAnchors.size(), 0.2), Eigen::Matrix4d::Zero()};
   double error_sum = 0.0;
   const double nees = MeanNees([&](int run) {
     double error = 0.0;
@@ -125,7 +125,7 @@ TEST(NavigationFilter, AnAnchorsUncertaintyIsCarriedNotAveragedAway) {
     return MeanNees([&](int run) {
       sim::RandomStream rng(91, static_cast<std::uint64_t>(run), 13);
       Anchors wrong;
-      for (const Eigen::Vector3d& p : kAnchors) {
+      for (const Eigen::Vector3d& p : kFilterAnchors) {
         wrong.p_world_anchor.push_back(p + Eigen::Vector3d(sigma[0] * rng.Normal(), sigma[1] * rng.Normal(),
                                                            sigma[2] * rng.Normal()));
         wrong.bias_m.push_back(0.2 + sigma[3] * rng.Normal());

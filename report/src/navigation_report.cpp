@@ -30,8 +30,6 @@ std::pair<double, double> BootstrapMean(const std::vector<double>& values, int r
   return {*Percentile(means, 0.025), *Percentile(means, 0.975)};
 }
 
-std::string Cell(const std::optional<double>& value, int decimals) { return value ? FormatFixed(*value, decimals) : "-"; }
-
 }  // namespace
 
 std::vector<NavigationSummary> SummarizeNavigation(const std::vector<nav::NavigationRecord>& records, int rows,
@@ -147,7 +145,7 @@ void WriteNavigationMarkdown(std::ostream& out, const std::vector<NavigationSumm
     out << "| " << rows[static_cast<std::size_t>(s.row)].name << " | " << s.method << " | " << FormatFixed(s.rmse_mean_m, 3)
         << (s.rmse_lo_m ? " [" + FormatFixed(*s.rmse_lo_m, 3) + ", " + FormatFixed(*s.rmse_hi_m, 3) + "]" : "") << " | "
         << FormatFixed(s.final_error_median_m, 3) << " | " << FormatFixed(100.0 * s.fix_share_mean, 1) << " | "
-        << Cell(s.t_first_anchor_median_s, 1) << " | " << Cell(s.t_kth_anchor_median_s, 1) << " | "
+        << FormatFixed(s.t_first_anchor_median_s, 1) << " | " << FormatFixed(s.t_kth_anchor_median_s, 1) << " | "
         << (s.worse_than_drift ? FormatFixed(100.0 * *s.worse_than_drift / s.runs, 0) : "-") << " |\n";
   }
 }

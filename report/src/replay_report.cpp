@@ -98,11 +98,11 @@ void WriteEstimates(std::ostream& out, const std::vector<schema::Attempt>& attem
 
 void PrintEstimates(std::ostream& out, const std::vector<schema::Attempt>& attempts) {
   // The terminal shows the columns up to err_z; the DOP split is in estimates.csv.
-  constexpr int kWidth[] = {10, 20, 12, 10, 8, 10, 10, 10, 10, 10, 10, 10, 21, 10, 10};
+  static constexpr int kWidth[] = {10, 20, 12, 10, 8, 10, 10, 10, 10, 10, 10, 10, 21, 10, 10};
   static_assert(std::size(kWidth) <= std::size(kEstimateColumns));
   // Each cell right-aligned in its width less one, after one space: a wider value (an epoch time)
   // pushes the row right but never runs into its neighbour.
-  const auto cell = [&out, &kWidth](std::size_t i, const std::string& text) {
+  const auto cell = [&out](std::size_t i, const std::string& text) {
     if (i > 0) out << ' ';
     out << std::setw(kWidth[i] - 1) << text;
   };

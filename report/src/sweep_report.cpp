@@ -6,10 +6,6 @@
 namespace anchorbench::report {
 namespace {
 
-std::string Cell(const std::optional<double>& value, int decimals) {
-  return value ? io::FormatFixed(*value, decimals) : "-";
-}
-
 // Every (point, summary) line: the point's values, then `fields` of the summary.
 template <typename Fields>
 void WriteLines(std::ostream& out, const std::vector<SweepPointResult>& results, Fields fields) {
@@ -52,8 +48,8 @@ void WriteSweepMarkdown(std::ostream& out, const std::string& name, int realizat
     for (const MethodSummary& s : result.summaries) {
       out << '|';
       for (const std::string& value : result.point.values) out << ' ' << value << " |";
-      out << ' ' << result.rows[static_cast<std::size_t>(s.row)].name << " | " << s.method << " | " << Cell(s.avg_m, 3)
-          << " | " << Cell(s.med_m, 3) << " | " << s.init << " | " << s.gt1m << " | " << Cell(s.ratio_pct, 2) << " |\n";
+      out << ' ' << result.rows[static_cast<std::size_t>(s.row)].name << " | " << s.method << " | " << io::FormatFixed(s.avg_m, 3)
+          << " | " << io::FormatFixed(s.med_m, 3) << " | " << s.init << " | " << s.gt1m << " | " << io::FormatFixed(s.ratio_pct, 2) << " |\n";
     }
   }
 }

@@ -8,7 +8,6 @@
 namespace anchorbench::studies {
 namespace {
 
-constexpr double kInf = std::numeric_limits<double>::infinity();
 
 // The summed PDOP with `samples` more from `p`; an anchor still singular counts a large constant,
 // so that a waypoint that makes it observable is worth more than any other improvement.
@@ -48,7 +47,7 @@ std::vector<Eigen::Vector3d> PlanDopWaypoints(std::vector<PlannedAnchor> anchors
   std::vector<bool> taken(p_world_candidate.size(), false);
   for (int w = 0; w < count && !anchors.empty(); ++w) {
     std::size_t best = p_world_candidate.size();
-    double best_cost = kInf;
+    double best_cost = std::numeric_limits<double>::infinity();
     for (std::size_t c = 0; c < p_world_candidate.size(); ++c) {
       if (taken[c]) continue;
       const double cost = CostWith(anchors, p_world_candidate[c], samples_each);

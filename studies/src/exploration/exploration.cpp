@@ -33,7 +33,6 @@ using engine::TruthOf;
 using engine::UnitRecords;
 namespace {
 
-constexpr double kInf = std::numeric_limits<double>::infinity();
 
 // The environment's box shrunk by the clearance: where a detour may go.
 struct FreeSpace {
@@ -96,7 +95,7 @@ std::optional<Detour> Soonest(const std::vector<estimator::AnchorGuidance>& guid
                               const schema::ExplorationConfig& ex, double samples, double rate_hz,
                               const std::map<int, int>& detours_of) {
   std::optional<Detour> soonest;
-  double soonest_s = kInf;
+  double soonest_s = std::numeric_limits<double>::infinity();
   for (const estimator::AnchorGuidance& anchor : guidance) {
     if (!(anchor.region_m > anchor.accuracy_m)) continue;  // held by another test
     if (const auto had = detours_of.find(anchor.anchor_id); had != detours_of.end() && had->second >= ex.detours_per_anchor) {

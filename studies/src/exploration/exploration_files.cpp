@@ -17,13 +17,12 @@ namespace anchorbench::studies {
 using engine::FileWriter;
 namespace {
 
-constexpr double kInf = std::numeric_limits<double>::infinity();
 
 struct PolicySummary {
   int row = 0;
   std::string policy;
   int runs = 0, all_certified = 0, anchors = 0, certified = 0, beyond_accuracy = 0;
-  double median_t_all_s = kInf;  // over the runs, a run not all certified counting as +inf
+  double median_t_all_s = std::numeric_limits<double>::infinity();  // over the runs, a run not all certified counting as +inf
   // Paired by realization (the same anchors, pattern and link noise): the median of this policy's
   // time over the pattern's, over the realizations the pattern certifies whole (a run of this
   // policy that does not counts +inf); NaN for the pattern itself or without such a realization.
@@ -33,7 +32,7 @@ struct PolicySummary {
 };
 
 double Median(std::vector<double> values) {
-  if (values.empty()) return kInf;
+  if (values.empty()) return std::numeric_limits<double>::infinity();
   std::sort(values.begin(), values.end());
   const std::size_t n = values.size();
   return n % 2 == 1 ? values[n / 2] : 0.5 * (values[n / 2 - 1] + values[n / 2]);
@@ -74,7 +73,7 @@ std::vector<PolicySummary> Summarize(const std::vector<ExplorationRecord>& recor
           rmse_sum_m += r.navigation_rmse_m;
           ++navigated;
         }
-        t_all.push_back(r.t_all_certified_s >= 0.0 ? r.t_all_certified_s : kInf);
+        t_all.push_back(r.t_all_certified_s >= 0.0 ? r.t_all_certified_s : std::numeric_limits<double>::infinity());
         const auto pattern = t_pattern_s.find({r.row, r.realization});
         if (policy != schema::kPatternPolicy && pattern != t_pattern_s.end()) to_pattern.push_back(t_all.back() / pattern->second);
       }

@@ -10,7 +10,7 @@
 namespace anchorbench::studies {
 namespace {
 
-constexpr const char* kColumns =
+constexpr const char* kExplorationColumns =
     "row,realization,policy,anchors,certified,beyond_accuracy,max_error_m,t_all_certified_s,duration_s,distance_m,"
     "detours,navigation_rmse_m,navigation_error_by_bin_m";
 
@@ -40,7 +40,7 @@ std::string ExplorationUnitText(const std::vector<ExplorationRecord>& records) {
 
 std::vector<ExplorationRecord> ReadExplorationUnit(const std::string& text, const engine::UnitPlace& place, int row,
                                                    int realization, const std::vector<std::string>& policies) {
-  std::istringstream in(std::string(kColumns) + "\n" + text);
+  std::istringstream in(std::string(kExplorationColumns) + "\n" + text);
   io::CsvReader csv(in, place.file, static_cast<int>(place.line));  // the columns in the block header's place
   const int row_column = csv.Column({"row"}), realization_column = csv.Column({"realization"});
   const int policy = csv.Column({"policy"}), anchors = csv.Column({"anchors"}), certified = csv.Column({"certified"});

@@ -12,7 +12,7 @@ namespace anchorbench::studies {
 namespace {
 
 // Every kind's columns; a line leaves the others empty.
-constexpr const char* kColumns =
+constexpr const char* kPdopColumns =
     "kind,realization,anchor_id,n,t_s,pdop_closest_point,pdop_ls,pdop_nls,pdop_true,bias_aware_dop,"
     "dop4_closest_point,dop4_confidence,ls_error_m,nls_error_m,error_m,status,anchors,samples,below,worst_ratio,"
     "ideal_below,ideal_samples_precondition,ideal_below_precondition,ratios_below";
@@ -128,7 +128,7 @@ std::string PdopUnitText(const std::vector<schema::PdopStudy>& records) {
 }
 
 std::vector<schema::PdopStudy> ReadPdopUnit(const std::string& text, const engine::UnitPlace& place, int realization) {
-  std::istringstream in(std::string(kColumns) + "\n" + text);
+  std::istringstream in(std::string(kPdopColumns) + "\n" + text);
   io::CsvReader csv(in, place.file, static_cast<int>(place.line));  // the columns in the block header's place
   schema::PdopStudy study;
   bool whole = false;

@@ -12,6 +12,8 @@ namespace anchorbench::io {
 std::string FormatNumber(double value);
 // Fixed decimals for tables meant for people; "-" for a non-finite value.
 std::string FormatFixed(double value, int decimals);
+// FormatFixed, or "-" where there is no value.
+std::string FormatFixed(const std::optional<double>& value, int decimals);
 // FormatNumber, or an empty cell where there is no value (never "nan").
 std::string FormatOptional(const std::optional<double>& value);
 // The text with control bytes and non-ASCII bytes as \xNN, so a message quoting input stays one
