@@ -5,7 +5,7 @@
 # inputs, the clang build's bytes against g++'s).
 set -euo pipefail
 cd "$(dirname "$0")/.."
-# Each phase's wall time on stderr, where the time of the whole goes (README: ~35 min on 2 cores).
+# Each phase's wall time on stderr, where the time of the whole goes (README: ~22 min on 2 cores).
 phase_start=$SECONDS
 phase_done() {
   echo "test.sh: $1 took $((SECONDS - phase_start)) s" >&2
