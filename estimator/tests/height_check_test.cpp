@@ -15,17 +15,9 @@ namespace {
 
 const Eigen::Vector3d kCheckedAnchor(3.0, 4.0, 4.5);
 
-// A tag weaving in x-y at 1.5 m with a vertical wobble of `wobble_m`.
+// A tag weaving in x-y at 1.5 m with a vertical wobble of `wobble_m`, range bias 0.2 m.
 testing::AnchorData Path(double wobble_m, double sigma_m, std::uint64_t seed) {
-  auto rng = testing::TestStream(seed);
-  testing::AnchorData data{kCheckedAnchor, 0.2, {}, {}};
-  for (int k = 0; k < 400; ++k) {
-    const double t = 0.1 * k;
-    const Eigen::Vector3d p(-10.0 + 0.5 * t, 3.0 * std::sin(0.4 * t), 1.5 + wobble_m * std::sin(0.9 * t));
-    data.p_world_tag.push_back(p);
-    data.range_m.push_back((p - kCheckedAnchor).norm() + 0.2 + sigma_m * rng.Normal());
-  }
-  return data;
+  return testing::WeavingData(kCheckedAnchor, 0.2, wobble_m, sigma_m, seed);
 }
 
 // LS + L2 refinement, wrapped in the check or not.

@@ -21,17 +21,9 @@ namespace {
 const Eigen::Vector3d kPriorAnchor(3.0, 4.0, 4.5);
 constexpr double kBiasM = 0.2;
 
-// A tag weaving in x-y at 1.5 m with a vertical wobble of `wobble_m` (0: exactly flat).
+// A tag weaving in x-y at 1.5 m with a vertical wobble of `wobble_m` (0: exactly flat), noise 0.05 m.
 testing::AnchorData Path(double wobble_m, std::uint64_t seed) {
-  auto rng = testing::TestStream(seed);
-  testing::AnchorData data{kPriorAnchor, kBiasM, {}, {}};
-  for (int k = 0; k < 400; ++k) {
-    const double t = 0.1 * k;
-    const Eigen::Vector3d p(-10.0 + 0.5 * t, 3.0 * std::sin(0.4 * t), 1.5 + wobble_m * std::sin(0.9 * t));
-    data.p_world_tag.push_back(p);
-    data.range_m.push_back((p - kPriorAnchor).norm() + kBiasM + 0.05 * rng.Normal());
-  }
-  return data;
+  return testing::WeavingData(kPriorAnchor, kBiasM, wobble_m, 0.05, seed);
 }
 
 AnchorSolverOptions Options(std::optional<HeightPrior> prior) {

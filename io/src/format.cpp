@@ -25,6 +25,10 @@ std::string FormatFixed(const std::optional<double>& value, int decimals) {
   return value ? FormatFixed(*value, decimals) : "-";
 }
 
+std::string FormatInterval(const std::optional<double>& lo, const std::optional<double>& hi, int decimals) {
+  return lo && hi ? " [" + FormatFixed(*lo, decimals) + ", " + FormatFixed(*hi, decimals) + "]" : std::string();
+}
+
 std::string FormatOptional(const std::optional<double>& value) { return value ? FormatNumber(*value) : ""; }
 
 

@@ -12,6 +12,7 @@ namespace anchorbench::report {
 namespace {
 
 using io::FormatFixed;
+using io::FormatInterval;
 using io::FormatNumber;
 using io::FormatOptional;
 using schema::Attempt;
@@ -20,10 +21,6 @@ using schema::RowConfig;
 // The cells of a solve or an evaluation, empty where there is none.
 std::optional<double> Of(const std::optional<Eigen::Vector3d>& v, int axis) {
   return v ? std::optional<double>((*v)[axis]) : std::nullopt;
-}
-
-std::string IntervalText(const std::optional<double>& lo, const std::optional<double>& hi, int decimals) {
-  return lo ? " [" + FormatFixed(*lo, decimals) + ", " + FormatFixed(*hi, decimals) + "]" : std::string();
 }
 
 void WriteOurTable(std::ostream& out, const std::vector<MethodSummary>& summaries, const std::vector<RowConfig>& rows,
@@ -38,9 +35,9 @@ void WriteOurTable(std::ostream& out, const std::vector<MethodSummary>& summarie
       << "|---|---|---|---|---|---|---|---|\n";
   for (const MethodSummary& s : summaries) {
     out << "| " << rows[static_cast<std::size_t>(s.row)].name << " | " << s.method << " | "
-        << (s.avg_m ? FormatFixed(*s.avg_m, 3) + IntervalText(s.avg_lo, s.avg_hi, 3) : "-") << " | "
-        << (s.med_m ? FormatFixed(*s.med_m, 3) + IntervalText(s.med_lo, s.med_hi, 3) : "-") << " | " << s.init << " / " << s.attempts << " | " << s.gt1m << " | "
-        << (s.ratio_pct ? FormatFixed(*s.ratio_pct, 2) + IntervalText(s.ratio_lo, s.ratio_hi, 2) : "-") << " | "
+        << (s.avg_m ? FormatFixed(*s.avg_m, 3) + FormatInterval(s.avg_lo, s.avg_hi, 3) : "-") << " | "
+        << (s.med_m ? FormatFixed(*s.med_m, 3) + FormatInterval(s.med_lo, s.med_hi, 3) : "-") << " | " << s.init << " / " << s.attempts << " | " << s.gt1m << " | "
+        << (s.ratio_pct ? FormatFixed(*s.ratio_pct, 2) + FormatInterval(s.ratio_lo, s.ratio_hi, 2) : "-") << " | "
         << (s.t_init_mean_s ? FormatFixed(*s.t_init_mean_s, 1) + " / " + FormatFixed(*s.t_init_med_s, 1) : "-") << " |\n";
   }
 }

@@ -89,6 +89,21 @@ inline AnchorData BoxData(TestRng& rng, int n, const Eigen::Vector3d& p_anchor,
   return data;
 }
 
+// A tag weaving in x-y at 1.5 m for 40 s at 10 Hz, with a vertical wobble of `wobble_m` (0: exactly
+// flat), ranges by Eq. (1) with bias and Gaussian noise: the flat paths of the height tests.
+inline AnchorData WeavingData(const Eigen::Vector3d& p_anchor, double bias_m, double wobble_m, double sigma_m,
+                              std::uint64_t seed) {
+  auto rng = TestStream(seed);
+  AnchorData data{p_anchor, bias_m, {}, {}};
+  for (int k = 0; k < 400; ++k) {
+    const double t = 0.1 * k;
+    const Eigen::Vector3d p(-10.0 + 0.5 * t, 3.0 * std::sin(0.4 * t), 1.5 + wobble_m * std::sin(0.9 * t));
+    data.p_world_tag.push_back(p);
+    data.range_m.push_back((p - p_anchor).norm() + bias_m + sigma_m * rng.Normal());
+  }
+  return data;
+}
+
 // A tag weaving past a wall anchor at 10 Hz for 120 s (range bias 0.1 m): the closest-point PDOP
 // falls as the anchor is passed.
 inline std::vector<estimator::RangeSample> PassBy(const Eigen::Vector3d& p_anchor, double sigma_m, std::uint64_t seed) {
