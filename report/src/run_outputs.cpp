@@ -30,15 +30,17 @@ void WriteOurTable(std::ostream& out, const std::vector<MethodSummary>& summarie
   out << "# " << config.name << ": " << compared << "\n\n"
       << config.realizations << " realizations per row, seed " << config.seed
       << ". Errors over initialized attempts; Avg and Med [95% bootstrap interval over realizations], Ratio [95% "
-         "Wilson interval].\n\n"
-      << "| # | Method | Avg. (m) | Med. (m) | Init. | >1m | Ratio (%) | t_init mean / median (s) |\n"
-      << "|---|---|---|---|---|---|---|---|\n";
+         "Wilson interval]. "
+      << kLatencyNote << "\n\n"
+      << "| # | Method | Avg. (m) | Med. (m) | Init. | >1m | Ratio (%) | t_init mean / median (s) | Latency |\n"
+      << "|---|---|---|---|---|---|---|---|---|\n";
   for (const MethodSummary& s : summaries) {
     out << "| " << rows[static_cast<std::size_t>(s.row)].name << " | " << s.method << " | "
         << (s.avg_m ? FormatFixed(*s.avg_m, 3) + FormatInterval(s.avg_lo, s.avg_hi, 3) : "-") << " | "
         << (s.med_m ? FormatFixed(*s.med_m, 3) + FormatInterval(s.med_lo, s.med_hi, 3) : "-") << " | " << s.init << " / " << s.attempts << " | " << s.gt1m << " | "
         << (s.ratio_pct ? FormatFixed(*s.ratio_pct, 2) + FormatInterval(s.ratio_lo, s.ratio_hi, 2) : "-") << " | "
-        << (s.t_init_mean_s ? FormatFixed(*s.t_init_mean_s, 1) + " / " + FormatFixed(*s.t_init_med_s, 1) : "-") << " |\n";
+        << (s.t_init_mean_s ? FormatFixed(*s.t_init_mean_s, 1) + " / " + FormatFixed(*s.t_init_med_s, 1) : "-") << " | "
+        << LatencyCell(s) << " |\n";
   }
 }
 
@@ -128,6 +130,11 @@ void WriteAttempts(std::ostream& out, const std::vector<Attempt>& attempts, cons
 
 void WriteAttemptLines(std::ostream& out, std::string_view lines) {
   out << kAttemptsColumns << '\n' << lines;
+}
+
+std::string LatencyCell(const MethodSummary& s) {
+  if (!s.latency_med) return "-";
+  return FormatFixed(*s.latency_med, 2) + "x (" + FormatFixed(*s.latency_p90, 2) + "x)";
 }
 
 std::string SummaryCsvFields(const MethodSummary& s, const std::vector<RowConfig>& rows) {

@@ -39,17 +39,18 @@ void WriteSweepTiming(std::ostream& out, const std::vector<schema::SweepAxis>& a
 
 void WriteSweepMarkdown(std::ostream& out, const std::string& name, int realizations, std::uint64_t seed,
                         const std::vector<schema::SweepAxis>& axes, const std::vector<SweepPointResult>& results) {
-  out << "# " << name << ": sweep\n\n" << realizations << " realizations per point and row, seed " << seed << ".\n\n|";
+  out << "# " << name << ": sweep\n\n" << realizations << " realizations per point and row, seed " << seed << ". "
+      << kLatencyNote << "\n\n|";
   for (const schema::SweepAxis& axis : axes) out << ' ' << axis.key << " |";
-  out << " Row | Method | Avg. (m) | Med. (m) | Init. | >1m | Ratio (%) |\n|";
-  for (std::size_t a = 0; a < axes.size() + 7; ++a) out << "---|";
+  out << " Row | Method | Avg. (m) | Med. (m) | Init. | >1m | Ratio (%) | Latency |\n|";
+  for (std::size_t a = 0; a < axes.size() + 8; ++a) out << "---|";
   out << '\n';
   for (const SweepPointResult& result : results) {
     for (const MethodSummary& s : result.summaries) {
       out << '|';
       for (const std::string& value : result.point.values) out << ' ' << value << " |";
       out << ' ' << result.rows[static_cast<std::size_t>(s.row)].name << " | " << s.method << " | " << io::FormatFixed(s.avg_m, 3)
-          << " | " << io::FormatFixed(s.med_m, 3) << " | " << s.init << " | " << s.gt1m << " | " << io::FormatFixed(s.ratio_pct, 2) << " |\n";
+          << " | " << io::FormatFixed(s.med_m, 3) << " | " << s.init << " | " << s.gt1m << " | " << io::FormatFixed(s.ratio_pct, 2) << " | " << LatencyCell(s) << " |\n";
     }
   }
 }

@@ -83,8 +83,24 @@ TEST(SweepFiles, TheMarkdownHasARowPerLineAndADashWhereNothingInitialized) {
   WriteSweepMarkdown(md, "sweep_pdop", 20, 3, axes, TwoPoints());
   const std::string text = md.str();
   EXPECT_NE(text.find("20 realizations per point and row, seed 3."), std::string::npos);
-  EXPECT_NE(text.find("| 0.5 | a | fixed_window | 0.250 | 0.250 | 10 | 0 | - |"), std::string::npos) << text;
-  EXPECT_NE(text.find("| 2 | b | pdop_closest_point | - | - | 0 | 0 | - |"), std::string::npos) << text;
+  EXPECT_NE(text.find("| 0.5 | a | fixed_window | 0.250 | 0.250 | 10 | 0 | - | - |\n"), std::string::npos) << text;
+  EXPECT_NE(text.find("| 2 | b | pdop_closest_point | - | - | 0 | 0 | - | - |\n"), std::string::npos) << text;
+  EXPECT_NE(text.find("Latency: t_init over t_oracle"), std::string::npos) << text;
+}
+
+TEST(SweepFiles, TheLatencyCellIsTheMedianAndThe90thPercentileOverTheOracle) {
+  MethodSummary s = Summary(0, "certified", 10, 0.25);
+  EXPECT_EQ(LatencyCell(s), "-");  // no attempt the oracle reaches
+  s.latency_med = 1.654;
+  s.latency_p90 = 2.3;
+  EXPECT_EQ(LatencyCell(s), "1.65x (2.30x)");
+  std::vector<SweepPointResult> point = TwoPoints();
+  point.resize(1);
+  point[0].summaries = {s};
+  std::ostringstream md;
+  WriteSweepMarkdown(md, "sweep_pdop", 20, 3, {{"estimator.trigger.pdop_threshold", {"0.5"}}}, point);
+  EXPECT_NE(md.str().find("| 0.5 | a | certified | 0.250 | 0.250 | 10 | 0 | - | 1.65x (2.30x) |\n"), std::string::npos)
+      << md.str();
 }
 
 TEST(ReplayFiles, EstimatesLeaveCellsEmptyWithoutAnEstimateOrTheTruth) {

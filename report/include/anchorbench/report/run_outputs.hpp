@@ -41,6 +41,16 @@ std::string SummaryCsvFields(const MethodSummary& summary, const std::vector<sch
 void WriteSummaryCsv(std::ostream& out, const std::vector<MethodSummary>& summaries,
                      const std::vector<schema::RowConfig>& rows);
 
+// A markdown table's latency cell: the median (90th percentile) of (t_init - t_first) / (t_oracle -
+// t_first) over the initialized attempts the oracle reaches (eval/oracle_latency.hpp), "1.65x
+// (2.31x)"; "-" where there is none.
+std::string LatencyCell(const MethodSummary& summary);
+// The sentence under a markdown table that says what the latency cell is.
+constexpr const char* kLatencyNote =
+    "Latency: t_init over t_oracle, the earliest time after which the anchor's solver on the accepted samples stays "
+    "within D (estimator.certificate.accuracy_m) of the truth, both from the anchor's first sample; the median (90th "
+    "percentile) over the initialized attempts the oracle reaches.";
+
 // summary.md: our table, and where rows carry the paper's values, the two side by side cell by
 // cell with the relative difference, and whether the paper's conclusions hold.
 void WriteSummaryMarkdown(std::ostream& out, const std::vector<MethodSummary>& summaries,
