@@ -1,6 +1,7 @@
 """Shared helpers for the figure scripts: paths, CSV loading, a paper-sized style."""
 import csv
 import pathlib
+import sys
 
 import matplotlib
 
@@ -8,6 +9,8 @@ matplotlib.use("Agg")  # files only, no display
 import matplotlib.pyplot as plt  # noqa: E402
 
 RESULTS = pathlib.Path(__file__).resolve().parent.parent / "results"
+sys.path.append(str(RESULTS.parent / "scripts"))
+from quantile import percentile  # noqa: E402,F401  (the tables' one quantile)
 
 plt.rcParams.update({
     "figure.figsize": (7.0, 2.6),  # a two-column paper figure, in inches

@@ -2,7 +2,7 @@
 table, plus a figure of one LOS and one NLOS case: trajectory, anchors and estimates."""
 import pathlib
 
-from common import COLORS, FIXED, GATED, RESULTS, number, plt, read_csv, save
+from common import COLORS, FIXED, GATED, RESULTS, number, percentile, plt, read_csv, save
 
 root = RESULTS / "hanyang"
 cases = sorted(p for p in root.iterdir() if (p / "estimates.csv").exists())
@@ -64,20 +64,24 @@ if prior_root.exists():
     prior_methods = list(dict.fromkeys(r["method"] for r in read_csv(prior_root / cases[0].name / "estimates.csv")))
     lines += ["", "With each anchor's surveyed height as a prior, sigma 0.1 m (`configs/hanyang_height_prior.yaml`, "
               "results/hanyang_height_prior/), over all 8 cases: initialized of 32, median x-y / z error, mean and "
-              "worst error, median t_init.", "",
-              "| trigger | initialized | median x-y / z (m) | mean / worst (m) | median t_init (s) |", "|---|---|---|---|---|"]
+              "worst error, median t_init, and the latency against the oracle (`latency` of estimates.csv: the median "
+              "and 90th percentile over the initialized anchors the oracle reaches; README, summary.md).", "",
+              "| trigger | initialized | median x-y / z (m) | mean / worst (m) | median t_init (s) | latency |",
+              "|---|---|---|---|---|---|"]
     for method in prior_methods:
         rows = [r for case in cases for r in read_csv(prior_root / case.name / "estimates.csv") if r["method"] == method]
         done = [r for r in rows if r["initialized"] == "1"]
         if not done:
-            lines.append(f"| {method} | 0 / {len(rows)} | - | - | - |")
+            lines.append(f"| {method} | 0 / {len(rows)} | - | - | - | - |")
             continue
         xy = sorted(number(r["err_xy"]) for r in done)
         z = sorted(number(r["err_z"]) for r in done)
         errors = [number(r["err_m"]) for r in done]
         t = sorted(number(r["t_init"]) for r in done)
+        latencies = [number(r["latency"]) for r in done if r["latency"]]
+        latency = (f"{percentile(latencies, 0.5):.2f}x ({percentile(latencies, 0.9):.2f}x)" if latencies else "-")
         lines.append(f"| {method} | {len(done)} / {len(rows)} | {xy[len(xy) // 2]:.2f} / {z[len(z) // 2]:.2f} | "
-                     f"{sum(errors) / len(errors):.2f} / {max(errors):.2f} | {t[len(t) // 2]:.0f} |")
+                     f"{sum(errors) / len(errors):.2f} / {max(errors):.2f} | {t[len(t) // 2]:.0f} | {latency} |")
 (root / "summary.md").write_text("\n".join(lines) + "\n")
 print(f"wrote {(root / 'summary.md').relative_to(RESULTS.parent)}")
 

@@ -10,6 +10,8 @@ import math
 import re
 import sys
 
+from quantile import percentile
+
 ROOT = pathlib.Path(__file__).resolve().parent.parent
 RESULTS = ROOT / "results"
 
@@ -373,11 +375,6 @@ def certified_everywhere():
                  by_scenario_row(scenarios, methods, trigger_outcome))
 
 
-def median(values):
-    """The upper median (the middle of an odd count), as every table here quotes it."""
-    return sorted(values)[len(values) // 2]
-
-
 def wilson_upper(k, n, z=1.959964):
     """The upper end of the Wilson 95% interval of a share k / n (meaningful at k = 0)."""
     if n == 0:
@@ -398,8 +395,7 @@ def latency_cell(attempts, accuracy_m=0.75):
     text = (f"{len(done)} / {len(attempts)} ({len(certifiable)}), {beyond} beyond D "
             f"(<= {100 * wilson_upper(beyond, len(done)):.1f}%)")
     if latencies:
-        text += (f", {median(latencies):.2f}x "
-                 f"({latencies[min(len(latencies) - 1, int(0.9 * len(latencies)))]:.2f}x)")
+        text += f", {percentile(latencies, 0.5):.2f}x ({percentile(latencies, 0.9):.2f}x)"
     return text
 
 
@@ -411,7 +407,7 @@ def ideal_cell(attempts):
         return "-"
     over = [float(a["latency"]) / float(a["ideal_latency"]) for a in attempts
             if a["initialized"] == "1" and a.get("latency") and a.get("ideal_latency")]
-    return f"{median(ideal):.2f}x" + (f"; {median(over):.2f}x" if over else "")
+    return f"{percentile(ideal, 0.5):.2f}x" + (f"; {percentile(over, 0.5):.2f}x" if over else "")
 
 
 def certified_latency():
@@ -441,8 +437,9 @@ def certified_ideal():
         fired = [a for a in certified if a["initialized"] == "1" and a.get("latency") and a.get("ideal_latency")]
         if not ideal or not fired:
             continue
-        parts.append(f"{label} {median(ideal):.2f}x (certified {median([float(a['latency']) for a in fired]):.2f}x, "
-                     f"{median([float(a['latency']) / float(a['ideal_latency']) for a in fired]):.2f}x the ideal)")
+        parts.append(f"{label} {percentile(ideal, 0.5):.2f}x (certified "
+                     f"{percentile([float(a['latency']) for a in fired], 0.5):.2f}x, "
+                     f"{percentile([float(a['latency']) / float(a['ideal_latency']) for a in fired], 0.5):.2f}x the ideal)")
     return ("Pooled over each study's rows, the ideal region's median latency against the oracle: " + "; ".join(parts) +
             " (`results/{table1,radio_biases,uav_hall,amr_hall,cone_approach}/attempts.csv`).")
 
@@ -474,7 +471,7 @@ def latency_totals(method):
     done = [a for a in attempts if a["initialized"] == "1" and a["err_m"]]
     latencies = [float(a["latency"]) for a in done if a.get("latency")]
     return (len(done), len(attempts), sum(float(a["err_m"]) > 0.75 for a in done),
-            median(latencies) if latencies else float("nan"))
+            percentile(latencies, 0.5) if latencies else float("nan"))
 
 
 def certified_summary():
@@ -528,9 +525,9 @@ def certified_summary():
     text += (f" Over the simulated real-radio studies it initializes {c_done} of {c_all} anchors, {c_beyond} beyond "
              f"D = 0.75 m (the paper's trigger: {p_done}, {p_beyond} beyond D), at a median of {c_latency:.2f}x "
              f"the oracle's time (the paper's trigger: {p_latency:.2f}x); on Table I at "
-             f"{median(t1_latency):.2f}x (the oracle: the earliest time after which the anchor's "
+             f"{percentile(t1_latency, 0.5):.2f}x (the oracle: the earliest time after which the anchor's "
              f"solver on the accepted samples stays within D of the truth), where an ideal 99% region that knew the "
-             f"truth and the noise would lie within D at {median(t1_ideal):.2f}x.")
+             f"truth and the noise would lie within D at {percentile(t1_ideal, 0.5):.2f}x.")
     return text
 
 

@@ -114,10 +114,6 @@ std::optional<double> Percentile(std::vector<double> values, double q) {
   return i + 1 < values.size() ? values[i] + fraction * (values[i + 1] - values[i]) : values[i];
 }
 
-namespace {
-
-}  // namespace
-
 std::uint32_t MethodSubstream(const std::string& method) {
   std::uint32_t hash = 2166136261u;
   for (const char c : method) hash = (hash ^ static_cast<unsigned char>(c)) * 16777619u;
