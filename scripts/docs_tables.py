@@ -463,6 +463,24 @@ def stable_since_sweep():
                  [[share] + [cell(cells[(folder, row, share)]) for folder, row, _ in columns] for share in shares])
 
 
+def region_ends_sweep():
+    """The certificate's region from the ends of its axes on and off (results/sweep_region_ends*/sweep.csv): per study and row,
+    initializations, those above 1 m and the median latency against the oracle, on beside off."""
+    key = "estimator.certificate.region_ends"
+    rows = []
+    for folder, label in (("sweep_region_ends_table1", "Table I"), ("sweep_region_ends", "UAV hall, radio biases"),
+                          ("sweep_region_ends_cone", "cone approach")):
+        by_row = {}
+        for r in read(f"{folder}/sweep.csv"):
+            by_row.setdefault(r["row"], {})[r[key]] = r
+
+        def cell(r):
+            latency = f", {float(r['latency_med']):.2f}x" if r["latency_med"] else ""
+            return f"{r['init']}, {r['gt1m']}{latency}"
+        rows += [[f"{label}, {row}", cell(points["true"]), cell(points["false"])] for row, points in by_row.items()]
+    return table(["study, row", "region_ends on: Init, > 1 m, latency", "off"], rows)
+
+
 def latency_totals(method):
     """Over the simulated real-radio studies (cone approach, UAV hall with radio biases): initialized,
     attempts, beyond D, the median latency."""
@@ -1166,7 +1184,7 @@ GENERATORS = {f.__name__: f for f in (live_latency, guidance_cost, exploration_u
                                       calibration_objective, calibration_profiles, calibration_cells, calibration_headline,
                                       cluster_overhead, cluster_cost_model, cluster_bullets,
                                       calibration_reachability, certified_everywhere, credibility_study,
-                                      replay_triggers, certified_summary, certified_latency, certified_ideal, stable_since_sweep, pdop_certified, ransac_speed,
+                                      replay_triggers, certified_summary, certified_latency, certified_ideal, stable_since_sweep, region_ends_sweep, pdop_certified, ransac_speed,
                                       python_overhead, navigation_tunnel, navigation_uav_hall,
                                       navigation_radio_biases, hanyang_navigation,
                                       navigation_headline)}

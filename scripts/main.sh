@@ -21,7 +21,8 @@ step /usr/bin/python3 scripts/table1_sensitivity.py 50   # one scenario choice a
 # Table I's scenario fitted to the paper and verified on unseen seeds (~9 min; never --reuse here,
 # so the results follow the code) -> results/calibrate_table1/, configs/table1.calibrated.yaml
 step "$bin" calibrate configs/calibrate_table1.yaml --out results/calibrate_table1 --overwrite --quiet
-for sweep in sweep_pdop_threshold sweep_tau sweep_noise_outliers sweep_stable_since sweep_stable_since_radio; do
+for sweep in sweep_pdop_threshold sweep_tau sweep_noise_outliers sweep_stable_since sweep_stable_since_radio \
+    sweep_region_ends sweep_region_ends_table1 sweep_region_ends_cone; do
   step "$bin" sweep "configs/$sweep.yaml" --out "results/$sweep" --quiet --overwrite
 done
 step "$bin" pdop-study configs/pdop_study.yaml --out results/pdop_study --quiet --overwrite

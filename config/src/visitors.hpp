@@ -231,6 +231,7 @@ void Estimator(V& v, schema::EstimatorConfig& o, const registry::Components& com
     s.Number("confidence", o.certificate.confidence);
     s.Number("evaluate_growth", o.certificate.evaluate_growth);
     s.Number("stable_since", o.certificate.stable_since);
+    s.Flag("region_ends", o.certificate.region_ends);
     Covariance(s, o.certificate.covariance);
     s.Check(o.certificate);
   });

@@ -418,8 +418,10 @@ bool CertifiedTrigger::Judge(const TriggerInput& in) {
   KeepBasis(estimate, noise);
   const double limit = d_m * d_m / region_chi2_;  // of the largest variance
   if (!(axes.eigenvalues().maxCoeff() <= limit)) return blocked("region", judgement_.region_m, d_m);
-  const double from_ends_m = RegionFromEnds(fitted, estimate, axes, noise);
-  if (!(from_ends_m <= d_m)) return blocked("region_ends", from_ends_m, d_m);
+  if (options_.region_ends) {
+    const double from_ends_m = RegionFromEnds(fitted, estimate, axes, noise);
+    if (!(from_ends_m <= d_m)) return blocked("region_ends", from_ends_m, d_m);
+  }
   // A known height the estimate disagrees with beyond what the model lets the two differ by (or
   // the prior's own interval) means an error the model does not hold: on a real field, the anchors
   // whose ranges pulled z 3-8 sigma off the survey were the ones 0.8-1.1 m off. Wait until the

@@ -296,6 +296,31 @@ TEST(CertifiedTrigger, AShorterStabilityWindowFiresNoLater) {
   EXPECT_NE(why.find("stable_since"), std::string::npos);
 }
 
+// Test 3 off (certificate.region_ends, for a sweep of what it buys): the trace never names it, and
+// the certificate fires no later than with it on, on a run that test 3 held back once.
+TEST(CertifiedTrigger, WithoutTheRegionsEndsFiresNoLaterAndNeverNamesThem) {
+  const std::vector<RangeSample> samples = Samples(Circling, 120.0, 0.1, 1);
+  auto run = [&samples](bool region_ends, bool* named_ends) {
+    CertificateOptions options;
+    options.region_ends = region_ends;
+    AnchorInitializer initializer = Certified(options);
+    for (const RangeSample& s : samples) {
+      const std::optional<InitEvent> event = initializer.Feed(s).event;
+      while (const std::optional<Judgement> judgement = initializer.TakeJudgement()) {
+        *named_ends = *named_ends || judgement->blocked_by == "region_ends";
+      }
+      if (event) return event;
+    }
+    return std::optional<InitEvent>();
+  };
+  bool named_with = false, named_without = false;
+  const std::optional<InitEvent> with = run(true, &named_with), without = run(false, &named_without);
+  ASSERT_TRUE(with && without);
+  EXPECT_TRUE(named_with);  // this run is one test 3 holds back
+  EXPECT_FALSE(named_without);
+  EXPECT_LE(without->n_used, with->n_used);
+}
+
 // A verdict that repeats is asked again later each time; Resume() restores the cadence, and a fixed
 // cadence (growth 1) stays fixed.
 TEST(SolveCadence, BacksOffARepeatedVerdict) {

@@ -29,6 +29,9 @@ struct CertificateOptions {
   // before stable_since N) within D. 0.5: a doubling of the data; larger waits less after the
   // estimate settles (the latency to the oracle is at least 1 / stable_since) and sees less drift.
   double stable_since = 0.7;
+  // Test 3, the region seen from the ends of its axes. Off only to measure what it buys (a sweep):
+  // without it the UAV hall's radio biases and Table I certify anchors beyond 1 m.
+  bool region_ends = true;
   // The covariance the certificate judges: its own, so that it stays honest where the reported
   // one is configured as the paper's (estimator.covariance).
   CovarianceOptions covariance;
@@ -62,7 +65,8 @@ double ChiSquare3Quantile(double confidence);
 //    solver's, scaled for correlated noise, plus the model error and the consistency check's
 //    travel bias) must put its
 //    `confidence` region inside the ball of radius D: chi2_3(confidence) lambda_max(P) <= D^2.
-// 3. So must the covariance seen from every end of that region's principal axes (6 points), with
+// 3. So must the covariance seen from every end of that region's principal axes (6 points; unless
+//    region_ends is off), with
 //    the estimate's residual scale (floored at the model error): an early estimate can look well
 //    conditioned from where it stands, and the region's ends are where a trade-off of range and
 //    bias along a narrow cone of directions, or a line of tags, shows.
