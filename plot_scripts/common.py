@@ -10,7 +10,7 @@ import matplotlib.pyplot as plt  # noqa: E402
 
 RESULTS = pathlib.Path(__file__).resolve().parent.parent / "results"
 sys.path.append(str(RESULTS.parent / "scripts"))
-from quantile import percentile  # noqa: E402,F401  (the tables' one quantile)
+from quantile import latency_text  # noqa: E402,F401  (the tables' one latency cell)
 
 plt.rcParams.update({
     "figure.figsize": (7.0, 2.6),  # a two-column paper figure, in inches

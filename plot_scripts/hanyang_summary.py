@@ -2,7 +2,7 @@
 table, plus a figure of one LOS and one NLOS case: trajectory, anchors and estimates."""
 import pathlib
 
-from common import COLORS, FIXED, GATED, RESULTS, number, percentile, plt, read_csv, save
+from common import COLORS, FIXED, GATED, RESULTS, latency_text, number, plt, read_csv, save
 
 root = RESULTS / "hanyang"
 cases = sorted(p for p in root.iterdir() if (p / "estimates.csv").exists())
@@ -78,8 +78,7 @@ if prior_root.exists():
         z = sorted(number(r["err_z"]) for r in done)
         errors = [number(r["err_m"]) for r in done]
         t = sorted(number(r["t_init"]) for r in done)
-        latencies = [number(r["latency"]) for r in done if r["latency"]]
-        latency = (f"{percentile(latencies, 0.5):.2f}x ({percentile(latencies, 0.9):.2f}x)" if latencies else "-")
+        latency = latency_text([number(r["latency"]) for r in done if r["latency"]]) or "-"
         lines.append(f"| {method} | {len(done)} / {len(rows)} | {xy[len(xy) // 2]:.2f} / {z[len(z) // 2]:.2f} | "
                      f"{sum(errors) / len(errors):.2f} / {max(errors):.2f} | {t[len(t) // 2]:.0f} | {latency} |")
 (root / "summary.md").write_text("\n".join(lines) + "\n")

@@ -10,7 +10,7 @@ import math
 import re
 import sys
 
-from quantile import percentile
+from quantile import latency_text, percentile
 
 ROOT = pathlib.Path(__file__).resolve().parent.parent
 RESULTS = ROOT / "results"
@@ -391,12 +391,10 @@ def latency_cell(attempts, accuracy_m=0.75):
     certifiable = [a for a in attempts if a.get("t_oracle")]
     done = [a for a in attempts if a["initialized"] == "1" and a["err_m"]]
     beyond = sum(float(a["err_m"]) > accuracy_m for a in done)
-    latencies = sorted(float(a["latency"]) for a in done if a.get("latency"))
+    latency = latency_text([float(a["latency"]) for a in done if a.get("latency")])
     text = (f"{len(done)} / {len(attempts)} ({len(certifiable)}), {beyond} beyond D "
             f"(<= {100 * wilson_upper(beyond, len(done)):.1f}%)")
-    if latencies:
-        text += f", {percentile(latencies, 0.5):.2f}x ({percentile(latencies, 0.9):.2f}x)"
-    return text
+    return text + (f", {latency}" if latency else "")
 
 
 def ideal_cell(attempts):
@@ -442,6 +440,10 @@ def certified_ideal():
                      f"{percentile([float(a['latency']) / float(a['ideal_latency']) for a in fired], 0.5):.2f}x the ideal)")
     return ("Pooled over each study's rows, the ideal region's median latency against the oracle: " + "; ".join(parts) +
             " (`results/{table1,radio_biases,uav_hall,amr_hall,cone_approach}/attempts.csv`).")
+def sweep_cell(r):
+    """"Init, > 1 m, median latency" of one point and row of a sweep.csv."""
+    latency = f", {float(r['latency_med']):.2f}x" if r["latency_med"] else ""
+    return f"{r['init']}, {r['gt1m']}{latency}"
 
 
 def stable_since_sweep():
@@ -455,30 +457,28 @@ def stable_since_sweep():
         for r in read(f"{folder}/sweep.csv"):
             cells[(folder, r["row"], r[key])] = r
     shares = sorted(dict.fromkeys(share for (_, _, share) in cells), key=float)
-
-    def cell(r):
-        latency = f", {float(r['latency_med']):.2f}x" if r["latency_med"] else ""
-        return f"{r['init']}, {r['gt1m']}{latency}"
     return table(["stable_since"] + [label + ": Init, > 1 m, latency" for _, _, label in columns],
-                 [[share] + [cell(cells[(folder, row, share)]) for folder, row, _ in columns] for share in shares])
+                 [[share] + [sweep_cell(cells[(folder, row, share)]) for folder, row, _ in columns] for share in shares])
 
 
 def region_ends_sweep():
-    """The certificate's region from the ends of its axes on and off (results/sweep_region_ends*/sweep.csv): per study and row,
-    initializations, those above 1 m and the median latency against the oracle, on beside off."""
+    """The certificate's region from the ends of its axes on and off (results/sweep_region_ends*/sweep.csv):
+    per study and row, initializations, those above 1 m and the median latency against the oracle, on
+    beside off; and per study the range of the off median latency over the on one."""
     key = "estimator.certificate.region_ends"
-    rows = []
+    rows, spans = [], []
     for folder, label in (("sweep_region_ends_table1", "Table I"), ("sweep_region_ends", "UAV hall, radio biases"),
                           ("sweep_region_ends_cone", "cone approach")):
         by_row = {}
         for r in read(f"{folder}/sweep.csv"):
             by_row.setdefault(r["row"], {})[r[key]] = r
-
-        def cell(r):
-            latency = f", {float(r['latency_med']):.2f}x" if r["latency_med"] else ""
-            return f"{r['init']}, {r['gt1m']}{latency}"
-        rows += [[f"{label}, {row}", cell(points["true"]), cell(points["false"])] for row, points in by_row.items()]
-    return table(["study, row", "region_ends on: Init, > 1 m, latency", "off"], rows)
+        rows += [[f"{label}, {row}", sweep_cell(points["true"]), sweep_cell(points["false"])]
+                 for row, points in by_row.items()]
+        ratios = [float(p["false"]["latency_med"]) / float(p["true"]["latency_med"]) for p in by_row.values()
+                  if p["true"]["latency_med"] and p["false"]["latency_med"]]
+        spans.append(f"{label} {min(ratios):.2f}-{max(ratios):.2f}x")
+    return (table(["study, row", "region_ends on: Init, > 1 m, latency", "off"], rows) +
+            "\n\nThe median latency off over on, across each study's rows: " + "; ".join(spans) + ".")
 
 
 def latency_totals(method):

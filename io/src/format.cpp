@@ -29,6 +29,11 @@ std::string FormatInterval(const std::optional<double>& lo, const std::optional<
   return lo && hi ? " [" + FormatFixed(*lo, decimals) + ", " + FormatFixed(*hi, decimals) + "]" : std::string();
 }
 
+std::string FormatWithInterval(const std::optional<double>& value, const std::optional<double>& lo,
+                               const std::optional<double>& hi, int decimals) {
+  return value ? FormatFixed(*value, decimals) + FormatInterval(lo, hi, decimals) : "-";
+}
+
 std::string FormatOptional(const std::optional<double>& value) { return value ? FormatNumber(*value) : ""; }
 
 

@@ -18,6 +18,9 @@ TEST(Format, AnIntervalFollowsItsValueOrIsNothing) {
   EXPECT_EQ(FormatInterval(0.1, 0.25, 2), " [0.10, 0.25]");
   EXPECT_EQ(FormatInterval(std::nullopt, std::nullopt, 2), "");
   EXPECT_EQ(FormatInterval(0.1, std::nullopt, 2), "");
+  EXPECT_EQ(FormatWithInterval(0.25, 0.1, 0.4, 2), "0.25 [0.10, 0.40]");
+  EXPECT_EQ(FormatWithInterval(0.25, std::nullopt, std::nullopt, 2), "0.25");
+  EXPECT_EQ(FormatWithInterval(std::nullopt, 0.1, 0.4, 2), "-");
 }
 
 }  // namespace

@@ -13,7 +13,7 @@ namespace anchorbench::report {
 namespace {
 
 using io::FormatFixed;
-using io::FormatInterval;
+using io::FormatWithInterval;
 using io::FormatNumber;
 using io::FormatOptional;
 
@@ -143,8 +143,8 @@ void WriteNavigationMarkdown(std::ostream& out, const std::vector<NavigationSumm
       << "| Row | Method | RMSE (m) | End error (m) | Fix (%) | First anchor (s) | k-th anchor (s) | Worse than none (%) |\n"
       << "|---|---|---|---|---|---|---|---|\n";
   for (const NavigationSummary& s : summaries) {
-    out << "| " << rows[static_cast<std::size_t>(s.row)].name << " | " << s.method << " | " << FormatFixed(s.rmse_mean_m, 3)
-        << FormatInterval(s.rmse_lo_m, s.rmse_hi_m, 3) << " | "
+    out << "| " << rows[static_cast<std::size_t>(s.row)].name << " | " << s.method << " | "
+        << FormatWithInterval(s.rmse_mean_m, s.rmse_lo_m, s.rmse_hi_m, 3) << " | "
         << FormatFixed(s.final_error_median_m, 3) << " | " << FormatFixed(100.0 * s.fix_share_mean, 1) << " | "
         << FormatFixed(s.t_first_anchor_median_s, 1) << " | " << FormatFixed(s.t_kth_anchor_median_s, 1) << " | "
         << (s.worse_than_drift ? FormatFixed(100.0 * *s.worse_than_drift / s.runs, 0) : "-") << " |\n";

@@ -12,7 +12,7 @@ namespace anchorbench::report {
 namespace {
 
 using io::FormatFixed;
-using io::FormatInterval;
+using io::FormatWithInterval;
 using io::FormatNumber;
 using io::FormatOptional;
 using schema::Attempt;
@@ -36,9 +36,9 @@ void WriteOurTable(std::ostream& out, const std::vector<MethodSummary>& summarie
       << "|---|---|---|---|---|---|---|---|---|\n";
   for (const MethodSummary& s : summaries) {
     out << "| " << rows[static_cast<std::size_t>(s.row)].name << " | " << s.method << " | "
-        << (s.avg_m ? FormatFixed(*s.avg_m, 3) + FormatInterval(s.avg_lo, s.avg_hi, 3) : "-") << " | "
-        << (s.med_m ? FormatFixed(*s.med_m, 3) + FormatInterval(s.med_lo, s.med_hi, 3) : "-") << " | " << s.init << " / " << s.attempts << " | " << s.gt1m << " | "
-        << (s.ratio_pct ? FormatFixed(*s.ratio_pct, 2) + FormatInterval(s.ratio_lo, s.ratio_hi, 2) : "-") << " | "
+        << FormatWithInterval(s.avg_m, s.avg_lo, s.avg_hi, 3) << " | " << FormatWithInterval(s.med_m, s.med_lo, s.med_hi, 3)
+        << " | " << s.init << " / " << s.attempts << " | " << s.gt1m << " | "
+        << FormatWithInterval(s.ratio_pct, s.ratio_lo, s.ratio_hi, 2) << " | "
         << (s.t_init_mean_s ? FormatFixed(*s.t_init_mean_s, 1) + " / " + FormatFixed(*s.t_init_med_s, 1) : "-") << " | "
         << LatencyCell(s) << " |\n";
   }

@@ -16,6 +16,9 @@ std::string FormatFixed(double value, int decimals);
 std::string FormatFixed(const std::optional<double>& value, int decimals);
 // " [lo, hi]" in fixed decimals after a table's value, or "" where there is no interval.
 std::string FormatInterval(const std::optional<double>& lo, const std::optional<double>& hi, int decimals);
+// A table's value with its interval after it ("0.25 [0.10, 0.40]"), or "-" where there is no value.
+std::string FormatWithInterval(const std::optional<double>& value, const std::optional<double>& lo,
+                               const std::optional<double>& hi, int decimals);
 // FormatNumber, or an empty cell where there is no value (never "nan").
 std::string FormatOptional(const std::optional<double>& value);
 // The text with control bytes and non-ASCII bytes as \xNN, so a message quoting input stays one
