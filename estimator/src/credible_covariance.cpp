@@ -137,13 +137,17 @@ void ErrorSums::Add(const Eigen::Vector3d& p_world_tag, const Eigen::Vector3d& p
 
 void ErrorSums::AddRow(const Eigen::Vector3d& unit, const Eigen::Vector4d& j, int model_error_degree, double count,
                        std::size_t tag_index) {
-  a.noalias() += count * j * j.transpose();
-  if (harmonics > 0) {
+  // count * j once (each sum below multiplies it as it did when written count * j * ...), and the
+  // harmonics' count read once: the stores into the sums may alias it.
+  const Eigen::Vector4d counted_j = count * j;
+  const int harmonic_count = harmonics;
+  a.noalias() += counted_j * j.transpose();
+  if (harmonic_count > 0) {
     double y[kMaxHarmonics];
     Harmonics(unit, model_error_degree, y);
-    for (int h = 0; h < harmonics; ++h) jt_harmonics.col(h) += count * j * y[h];
+    for (int h = 0; h < harmonic_count; ++h) jt_harmonics.col(h) += counted_j * y[h];
   }
-  if (tag_index < jt_links.size()) jt_links[tag_index] += count * j;
+  if (tag_index < jt_links.size()) jt_links[tag_index] += counted_j;
 }
 
 namespace {

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <utility>
 #include <vector>
 
 #include <Eigen/Eigenvalues>
@@ -14,14 +15,17 @@ constexpr double kOnPlaneM = 1e-3;        // an estimate this close to the plane
 constexpr double kMadToSigma = 1.4826;    // sigma of Gaussian noise from its median absolute deviation
 constexpr double kMinSigmaM = 1e-6;       // noiseless data: a floor, so the evidence stays finite
 
-double Median(std::vector<double> values) {
+// The median of `values`, which it reorders (the evidence below passes buffers it no longer needs:
+// every nth_element sees the same values in the same order as a copy would, so the sums are the
+// same to the bit).
+double MedianInPlace(std::vector<double>& values) {
   const auto middle = values.begin() + static_cast<std::ptrdiff_t>(values.size() / 2);
   std::nth_element(values.begin(), middle, values.end());
   return *middle;
 }
 
-// The sum of squares of the smallest (1 - trim) share of |r|.
-double TrimmedSquares(std::vector<double> residuals, double trim_fraction) {
+// The sum of squares of the smallest (1 - trim) share of |r|; squares and reorders `residuals`.
+double TrimmedSquaresInPlace(std::vector<double>& residuals, double trim_fraction) {
   for (double& r : residuals) r = r * r;
   const auto kept = static_cast<std::size_t>(std::ceil((1.0 - trim_fraction) * static_cast<double>(residuals.size())));
   std::nth_element(residuals.begin(), residuals.begin() + static_cast<std::ptrdiff_t>(kept - 1), residuals.end());
@@ -39,6 +43,17 @@ std::vector<double> Residuals(std::span<const Eigen::Vector3d> p, std::span<cons
   std::vector<double> r(p.size());
   for (std::size_t k = 0; k < p.size(); ++k) r[k] = d[k] - (p[k] - p_anchor).norm() - bias_m;
   return r;
+}
+
+// FitEvidence of two fits' residuals, both consumed: one scratch buffer besides them (the medians
+// of a and of its deviations), so a test over N samples allocates three arrays, not seven.
+double EvidenceOfResiduals(std::vector<double> a, std::vector<double> b, double trim_fraction, double explained_squares) {
+  std::vector<double> scratch = a;
+  const double a_median = MedianInPlace(scratch);
+  for (std::size_t k = 0; k < a.size(); ++k) scratch[k] = std::abs(a[k] - a_median);
+  const double sigma_m = std::max(kMadToSigma * MedianInPlace(scratch), kMinSigmaM);
+  return (TrimmedSquaresInPlace(b, trim_fraction) - TrimmedSquaresInPlace(a, trim_fraction) - explained_squares) /
+         (sigma_m * sigma_m);
 }
 
 }  // namespace
@@ -72,22 +87,22 @@ Mirror MirrorOf(std::span<const Eigen::Vector3d> p_world_tag, std::span<const do
   mirror.exists = true;
   mirror.p_world_mirror = estimate.p_world_anchor - 2.0 * mirror.height_m * mirror.normal;
 
-  mirror.bias_mirror_m = Median(Residuals(p_world_tag, range_m, mirror.p_world_mirror, 0.0));
-  mirror.evidence = FitEvidence(p_world_tag, range_m, estimate.p_world_anchor, estimate.bias_m, mirror.p_world_mirror,
-                                mirror.bias_mirror_m, trim_fraction);
+  // The mirror's residuals with its bias refit, as the median of those without: d - |p - m| - gamma
+  // computed as (d - |p - m|) - gamma, the same rounding as Residuals at that bias.
+  std::vector<double> mirror_residuals = Residuals(p_world_tag, range_m, mirror.p_world_mirror, 0.0);
+  std::vector<double> scratch = mirror_residuals;
+  mirror.bias_mirror_m = MedianInPlace(scratch);
+  for (double& r : mirror_residuals) r -= mirror.bias_mirror_m;
+  mirror.evidence = EvidenceOfResiduals(Residuals(p_world_tag, range_m, estimate.p_world_anchor, estimate.bias_m),
+                                        std::move(mirror_residuals), trim_fraction, 0.0);
   return mirror;
 }
 
 double FitEvidence(std::span<const Eigen::Vector3d> p_world_tag, std::span<const double> range_m,
                    const Eigen::Vector3d& p_a, double bias_a_m, const Eigen::Vector3d& p_b, double bias_b_m,
                    double trim_fraction, double explained_squares) {
-  const std::vector<double> a = Residuals(p_world_tag, range_m, p_a, bias_a_m);
-  const std::vector<double> b = Residuals(p_world_tag, range_m, p_b, bias_b_m);
-  std::vector<double> deviations(a.size());
-  const double a_median = Median(a);
-  for (std::size_t k = 0; k < a.size(); ++k) deviations[k] = std::abs(a[k] - a_median);
-  const double sigma_m = std::max(kMadToSigma * Median(deviations), kMinSigmaM);
-  return (TrimmedSquares(b, trim_fraction) - TrimmedSquares(a, trim_fraction) - explained_squares) / (sigma_m * sigma_m);
+  return EvidenceOfResiduals(Residuals(p_world_tag, range_m, p_a, bias_a_m), Residuals(p_world_tag, range_m, p_b, bias_b_m),
+                             trim_fraction, explained_squares);
 }
 
 double Separation(std::span<const Eigen::Vector3d> p_world_tag, const Eigen::Vector3d& p_a, double bias_a_m,
