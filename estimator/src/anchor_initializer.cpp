@@ -187,6 +187,20 @@ std::optional<Judgement> AnchorInitializer::why_not() const {
     return j;
   };
   if (n_admitted_ < static_cast<std::size_t>(options_.min_samples)) return own("samples", options_.min_samples);
+  // A solve the mirror check refused, while it still stands (the fixed window's at the end, or an
+  // online trigger's until its retry): the check's own numbers say more than the retry's count.
+  const bool refusal_stands = !trigger_->online() || n_admitted_ < next_attempt_size_;
+  if (refusal_stands && last_failed_solve_ && last_failed_solve_->solve.mirror_refusal) {
+    const MirrorRefusal& refusal = *last_failed_solve_->solve.mirror_refusal;
+    Judgement j;
+    j.t_s = last_failed_solve_->t_s;
+    j.samples = refusal.samples;
+    j.blocked_by = "mirror";
+    j.value = j.evidence = refusal.evidence;
+    j.limit = j.evidence_needed = refusal.evidence_needed;
+    j.samples_needed = refusal.SamplesNeeded();
+    return j;
+  }
   if (n_admitted_ < next_attempt_size_) return own("retry", static_cast<double>(next_attempt_size_));
   return trigger_->why_not();
 }
@@ -207,6 +221,7 @@ std::optional<InitEvent> AnchorInitializer::Finish(double t_s) {
   // a range dropped at the end) never moves this anchor's time.
   InitEvent event = SolveNow(n_admitted_ > 0 ? t_last_s_ : t_s, pdop_.Value());
   initialized_ = Succeeded(event.solve.status);
+  if (!initialized_) last_failed_solve_ = event;  // why_not() reads it
   return event;
 }
 

@@ -208,6 +208,7 @@ CertifiedTrigger::Verdict CertifiedTrigger::RuleOutAlternatives(std::span<const 
     // Too close to tell counts as no evidence at all.
     judgement_.evidence = std::min(judgement_.evidence, comparison.separated ? comparison.evidence : 0.0);
     if (!comparison.separated || !(comparison.evidence >= threshold)) {
+      judgement_.samples_needed = comparison.numbers.SamplesNeeded();
       return start.mirror ? Verdict::kMirror : Verdict::kOtherMinimum;
     }
   }
@@ -226,9 +227,10 @@ CertifiedTrigger::Comparison CertifiedTrigger::Compare(std::span<const Eigen::Ve
   // more with noise in the tag positions: on the flat floor, 1 cm of it swung a lambda ~10 fit
   // from -15 to +28): only a separation no swing crosses counts as evidence, or a height prior
   // that alone rules the alternative out (a twin at the same height, a line's, it cannot).
-  const bool separated = prior_evidence >= threshold ||
-                         Separation(p_world_tag, p_a, bias_a_m, p_b, bias_b_m, scale_m) >= mirror_.min_separation;
-  return {evidence, separated};
+  const bool by_prior = prior_evidence >= threshold;
+  const double separation = by_prior ? kInf : Separation(p_world_tag, p_a, bias_a_m, p_b, bias_b_m, scale_m);
+  return {evidence, separation >= mirror_.min_separation,
+          MirrorRefusal{evidence, threshold, separation, mirror_.min_separation, range_m.size()}};
 }
 
 std::vector<int> CertifiedTrigger::EstimatedTags(std::span<const int> tag_id, std::size_t samples) const {

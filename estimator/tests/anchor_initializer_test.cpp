@@ -167,6 +167,36 @@ TEST(AnchorInitializer, ASpentSolveBudgetIsAFailedSolve) {
   EXPECT_EQ(initializer.last_failed_solve()->solve.status, SolveStatus::kBudgetSpent);
 }
 
+// A solve the mirror check refused says so in why_not(), with the check's numbers: the fixed
+// window's at the end, and an online trigger's while it waits to retry.
+TEST(AnchorInitializer, AMirrorRefusalIsWhyNotWithTheChecksNumbers) {
+  const testing::AnchorData flat = testing::WeavingData(Eigen::Vector3d(3.0, 4.0, 4.5), 0.2, 0.003, 0.05, 1);
+  std::vector<RangeSample> samples;
+  for (std::size_t k = 0; k < flat.range_m.size(); ++k) {
+    samples.push_back({0.1 * static_cast<double>(k), 0, 7, flat.range_m[k], flat.p_world_tag[k]});
+  }
+  for (const bool online : {false, true}) {
+    std::unique_ptr<InitTrigger> trigger = online ? std::unique_ptr<InitTrigger>(std::make_unique<SampleCountTrigger>(300))
+                                                  : std::make_unique<FixedWindowTrigger>();
+    AnchorInitializer initializer(7, InitializerOptions{}, std::make_unique<NullFilter>(), std::move(trigger),
+                                  std::make_shared<AnchorSolver>());
+    for (const RangeSample& s : samples) EXPECT_FALSE(initializer.Feed(s).event);
+    initializer.Finish(samples.back().t_s);
+    ASSERT_FALSE(initializer.initialized());
+    ASSERT_TRUE(initializer.last_failed_solve().has_value());
+    const SolveResult& refused = initializer.last_failed_solve()->solve;
+    EXPECT_EQ(refused.status, SolveStatus::kHeightUnobservable);
+    ASSERT_TRUE(refused.mirror_refusal.has_value());
+    const std::optional<Judgement> why = initializer.why_not();
+    ASSERT_TRUE(why.has_value());
+    EXPECT_EQ(why->blocked_by, "mirror") << (online ? "online" : "fixed window");
+    EXPECT_EQ(why->value, refused.mirror_refusal->evidence);
+    EXPECT_EQ(why->limit, HeightCheckOptions{}.min_evidence);
+    EXPECT_EQ(why->samples_needed, refused.mirror_refusal->SamplesNeeded());
+    EXPECT_GT(why->samples_needed, 10.0 * static_cast<double>(samples.size()));  // 3 mm of height: not soon
+  }
+}
+
 TEST(InitializerOptions, ValidationNamesTheProblem) {
   InitializerOptions options;
   std::string why;

@@ -3,6 +3,7 @@
 #include "anchorbench/estimator/height_check.hpp"
 
 #include <cmath>
+#include <limits>
 #include <memory>
 
 #include <gtest/gtest.h>
@@ -80,6 +81,55 @@ TEST(HeightCheck, ASidePriorResolvesTheMirror) {
   EXPECT_TRUE(ParseSide("below", &side));
   EXPECT_EQ(side, HeightCheckOptions::Side::kBelow);
   EXPECT_FALSE(ParseSide("up", &side));
+}
+
+// Every `every`-th sample of a path: the same geometry, sparser.
+testing::AnchorData EveryNth(const testing::AnchorData& all, std::size_t every) {
+  testing::AnchorData sparse{all.p_world_anchor, all.bias_m, {}, {}};
+  for (std::size_t k = 0; k < all.range_m.size(); k += every) {
+    sparse.p_world_tag.push_back(all.p_world_tag[k]);
+    sparse.range_m.push_back(all.range_m[k]);
+  }
+  return sparse;
+}
+
+// A refusal says why and what more data would settle it: on a sparse log of a path with 5 cm of
+// height, the samples at which both tests would pass at the rates they show; the same path sampled
+// that densely passes. A path with 3 mm of height needs far more than it has, or never.
+TEST(HeightCheck, ARefusalSaysHowManySamplesOfTheSamePathWouldSettleIt) {
+  for (std::uint64_t seed : {1, 2, 3}) {
+    const testing::AnchorData dense = Path(0.05, 0.05, seed);
+    const testing::AnchorData sparse = EveryNth(dense, 5);
+    const SolveResult refused = Checked(true)->Solve(sparse.p_world_tag, sparse.range_m);
+    ASSERT_EQ(refused.status, SolveStatus::kHeightUnobservable) << "seed " << seed;
+    ASSERT_TRUE(refused.mirror_refusal.has_value());
+    const MirrorRefusal& why = *refused.mirror_refusal;
+    EXPECT_EQ(why.samples, sparse.range_m.size());
+    EXPECT_EQ(why.evidence_needed, HeightCheckOptions{}.min_evidence);
+    EXPECT_EQ(why.separation_needed, HeightCheckOptions{}.min_separation);
+    EXPECT_TRUE(why.evidence < why.evidence_needed || why.separation < why.separation_needed);
+    const double needed = why.SamplesNeeded();
+    EXPECT_GT(needed, static_cast<double>(sparse.range_m.size())) << "seed " << seed;
+    EXPECT_LT(needed, static_cast<double>(dense.range_m.size())) << "seed " << seed;
+    const SolveResult settled = Checked(true)->Solve(dense.p_world_tag, dense.range_m);
+    EXPECT_TRUE(Succeeded(settled.status)) << "seed " << seed << ": " << ToString(settled.status);
+    EXPECT_FALSE(settled.mirror_refusal.has_value());
+  }
+  for (std::uint64_t seed : {1, 2, 3}) {
+    const testing::AnchorData flat = Path(0.003, 0.05, seed);
+    const SolveResult refused = Checked(true)->Solve(flat.p_world_tag, flat.range_m);
+    ASSERT_TRUE(refused.mirror_refusal.has_value());
+    EXPECT_GT(refused.mirror_refusal->SamplesNeeded(), 50.0 * static_cast<double>(flat.range_m.size())) << "seed " << seed;
+  }
+}
+
+TEST(HeightCheck, SamplesNeededGrowsEachTestAtItsOwnRate) {
+  const double inf = std::numeric_limits<double>::infinity();
+  EXPECT_DOUBLE_EQ((MirrorRefusal{3.0, 9.0, 50.0, 100.0, 40}.SamplesNeeded()), 120.0);  // the evidence's rate binds
+  EXPECT_DOUBLE_EQ((MirrorRefusal{30.0, 9.0, 20.0, 100.0, 40}.SamplesNeeded()), 200.0);  // the separation's
+  EXPECT_EQ((MirrorRefusal{-1.0, 9.0, 500.0, 100.0, 40}.SamplesNeeded()), inf);  // the mirror fits as well
+  EXPECT_EQ((MirrorRefusal{3.0, 9.0, 0.0, 100.0, 40}.SamplesNeeded()), inf);     // a flat path
+  EXPECT_DOUBLE_EQ((MirrorRefusal{3.0, 9.0, inf, 0.0, 40}.SamplesNeeded()), 120.0);  // a prior separates
 }
 
 TEST(HeightCheck, OnByDefaultAndAnchorOnThePlaneHasNoMirror) {

@@ -95,6 +95,22 @@ def test_why_not_says_which_test_holds_each_waiting_anchor_back():
     assert {w["trigger"] for w in front_end.why_not()}.isdisjoint(fired)  # nothing holds a fired trigger back
 
 
+def test_a_mirror_refusal_says_what_more_data_would_settle_it():
+    # A ground robot's loop, the tags within 3 mm of a plane: the whole-log fit's mirror through
+    # that plane fits as well, so the fit is refused, and more of the same would not settle it.
+    k = np.arange(400)
+    p = np.column_stack([3.0 * np.cos(0.05 * k), 2.0 * np.sin(0.05 * k), 1.5 + 0.003 * np.sin(0.9 * k)])
+    d = np.linalg.norm(p - [1.0, 1.0, 3.5], axis=1) + 0.1 + np.random.default_rng(3).normal(0.0, 0.05, len(k))
+    front_end = ab.FrontEnd({"estimator": {"triggers": ["fixed_window"]}})
+    front_end.add_samples(0.1 * k, np.zeros(len(k), dtype=np.int32), np.full(len(k), 2, dtype=np.int32), d, p)
+    front_end.finish(0.1 * k[-1])
+    (refused,) = front_end.take_events()
+    assert refused.solve.status == "height_unobservable"
+    (why,) = front_end.why_not()
+    assert why["blocked_by"] == "mirror" and why["limit"] == 9.21 and why["value"] < why["limit"]
+    assert why["samples_needed"] > 10 * len(k)  # not soon, or never (inf)
+
+
 def test_guide_ranks_where_to_range_from_for_a_waiting_anchor():
     # A robot's loop on the floor beside an anchor 0.2 m above it: its height is barely seen, so
     # the certificate waits, and ranging from above the floor is what would close its region.

@@ -133,6 +133,7 @@ class CertifiedTrigger : public InitTrigger {
   struct Comparison {
     double evidence;
     bool separated;
+    MirrorRefusal numbers;  // both tests' numbers, for why not yet
   };
   Comparison Compare(std::span<const Eigen::Vector3d> p_world_tag, std::span<const double> range_m,
                      const Eigen::Vector3d& p_a, double bias_a_m, const Eigen::Vector3d& p_b, double bias_b_m,

@@ -52,6 +52,9 @@ struct Judgement {
          share_link_offsets = kNone, share_tag_offsets = kNone;
   double evidence = kNone, evidence_needed = kNone;  // the weakest alternative's fit evidence, and the threshold
   double stability_m = kNone;                        // the largest move of the estimate since half the data
+  // `mirror` from the mirror check of a solve (MirrorRefusal): the samples at which it would pass
+  // if the data went on as they have; +infinity where more of the same will not settle it.
+  double samples_needed = kNone;
 };
 
 // When to initialize an anchor (Sec. III-C): one interface, so the paper's comparisons (closest-

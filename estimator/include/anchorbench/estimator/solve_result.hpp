@@ -1,5 +1,7 @@
 #pragma once
 
+#include <cstddef>
+#include <optional>
 #include <string_view>
 
 #include <Eigen/Core>
@@ -30,6 +32,23 @@ inline bool Succeeded(SolveStatus s) {
   return s == SolveStatus::kConverged || s == SolveStatus::kMaxIterations;
 }
 
+// Why the mirror check refused an estimate (kHeightUnobservable; HeightCheckedSolver): both of its
+// tests' numbers, and when more of the same data would pass them (ours). The separation lambda is
+// the evidence the data give on average where the estimate is the anchor (its expectation under
+// the noise model), and at a geometry that goes on as it has it grows in proportion to the samples.
+struct MirrorRefusal {
+  double evidence = 0.0;           // for the estimate over its mirror (height_check.hpp)
+  double evidence_needed = 0.0;    // HeightCheckOptions::min_evidence
+  double separation = 0.0;         // lambda of the two fits (Separation)
+  double separation_needed = 0.0;  // HeightCheckOptions::min_separation (0 with a height prior)
+  std::size_t samples = 0;         // the samples judged
+  // The samples at which both tests would pass if each number went on growing in proportion to
+  // the samples (the evidence at its own rate, lambda at the geometry's); +infinity where one does
+  // not grow: the mirror fits as well (evidence <= 0) or the path is flat (lambda ~ 0). Then more
+  // height in the path, or a height prior, settles it, not more of the same.
+  double SamplesNeeded() const;
+};
+
 // Anchor position and range bias theta = (p_A, gamma) with its summary, after Ceres' Summary.
 struct SolveResult {
   Eigen::Vector3d p_world_anchor = Eigen::Vector3d::Zero();
@@ -50,6 +69,7 @@ struct SolveResult {
   // which decides how far a range error moves the height; 0 without a prior or where the solver
   // weighs it otherwise (the LS alone: its model error then ignores the prior, the cautious side).
   double height_weight = 0.0;
+  std::optional<MirrorRefusal> mirror_refusal;  // status kHeightUnobservable from the mirror check: why
 };
 
 }  // namespace anchorbench::estimator
