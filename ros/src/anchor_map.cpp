@@ -52,6 +52,10 @@ std::string WaitingFor(const std::optional<estimator::Judgement>& judgement) {
   text << judgement->blocked_by;
   if (!std::isnan(judgement->value)) text << ' ' << io::FormatNumber(judgement->value);
   if (!std::isnan(judgement->limit)) text << " (limit " << io::FormatNumber(judgement->limit) << ')';
+  if (std::isinf(judgement->samples_needed)) text << "; more of the same path will not settle it";
+  if (std::isfinite(judgement->samples_needed)) {
+    text << "; settled at about " << static_cast<long long>(std::ceil(judgement->samples_needed)) << " samples";
+  }
   return text.str();
 }
 
