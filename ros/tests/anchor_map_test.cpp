@@ -64,6 +64,26 @@ TEST(AnchorMap, PublishesTheCertifiedAnchorsAndSaysWhatTheOthersWaitFor) {
   for (const AnchorState& state : map.States()) EXPECT_FALSE(state.initialized);
 }
 
+// A ground robot's loop (the tag within 2 mm of one height): the certificate waits on each anchor's
+// mirror, and the diagnostics say whether more of the same path would settle it.
+TEST(AnchorMap, AMirrorsWaitSaysWhetherMoreOfTheSamePathWouldSettleIt) {
+  AnchorMap map("", {}, "");
+  std::mt19937 rng(5);
+  std::normal_distribution<double> noise(0.0, 0.05);
+  for (int k = 0; 0.1 * k <= 120.0; ++k) {
+    const double t = 0.1 * k;
+    const Eigen::Vector3d p(5.0 * std::cos(0.21 * t), 4.0 * std::sin(0.17 * t), 1.0 + 0.002 * std::sin(0.9 * t));
+    map.AddPose(t, 0, p);
+    map.AddRange(t, 0, 0, (p - kAnchors[0]).norm() + 0.1 + noise(rng));
+  }
+  RunSolves(map);
+  const std::vector<AnchorState> states = map.States();
+  ASSERT_EQ(states.size(), 1u);
+  EXPECT_FALSE(states[0].initialized);
+  EXPECT_EQ(states[0].waiting_for.rfind("mirror", 0), 0u) << states[0].waiting_for;
+  EXPECT_NE(states[0].waiting_for.find("settle"), std::string::npos) << states[0].waiting_for;
+}
+
 // Guidance for the anchors it waits for only: the far one, its best candidates ranked, and the test
 // that holds it.
 TEST(AnchorMap, GuidesOnlyTheAnchorsItWaitsFor) {
