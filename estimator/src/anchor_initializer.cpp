@@ -191,15 +191,7 @@ std::optional<Judgement> AnchorInitializer::why_not() const {
   // online trigger's until its retry): the check's own numbers say more than the retry's count.
   const bool refusal_stands = !trigger_->online() || n_admitted_ < next_attempt_size_;
   if (refusal_stands && last_failed_solve_ && last_failed_solve_->solve.mirror_refusal) {
-    const MirrorRefusal& refusal = *last_failed_solve_->solve.mirror_refusal;
-    Judgement j;
-    j.t_s = last_failed_solve_->t_s;
-    j.samples = refusal.samples;
-    j.blocked_by = "mirror";
-    j.value = j.evidence = refusal.evidence;
-    j.limit = j.evidence_needed = refusal.evidence_needed;
-    j.samples_needed = refusal.SamplesNeeded();
-    return j;
+    return MirrorJudgement(*last_failed_solve_->solve.mirror_refusal, last_failed_solve_->t_s);
   }
   if (n_admitted_ < next_attempt_size_) return own("retry", static_cast<double>(next_attempt_size_));
   return trigger_->why_not();

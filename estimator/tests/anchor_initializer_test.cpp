@@ -4,6 +4,7 @@
 
 #include <gtest/gtest.h>
 
+#include "anchorbench/estimator/height_check.hpp"
 #include "anchorbench/estimator/triggers.hpp"
 #include "anchorbench/testing/test_data.hpp"
 
@@ -194,6 +195,36 @@ TEST(AnchorInitializer, AMirrorRefusalIsWhyNotWithTheChecksNumbers) {
     EXPECT_EQ(why->limit, HeightCheckOptions{}.min_evidence);
     EXPECT_EQ(why->samples_needed, refused.mirror_refusal->SamplesNeeded());
     EXPECT_GT(why->samples_needed, 10.0 * static_cast<double>(samples.size()));  // 3 mm of height: not soon
+  }
+}
+
+// The triggers that solve for their own estimate say why they wait too: their DOP at the estimate
+// against the threshold, or, where the mirror check refused their solve, the mirror's numbers.
+TEST(AnchorInitializer, SolvingTriggersSayWhyTheyWait) {
+  const auto checked = std::make_shared<HeightCheckedSolver>(std::make_shared<AnchorSolver>(), HeightCheckOptions{});
+  const testing::AnchorData flat = testing::WeavingData(Eigen::Vector3d(3.0, 4.0, 4.5), 0.2, 0.003, 0.05, 1);
+  std::vector<RangeSample> weave;
+  for (std::size_t k = 0; k < flat.range_m.size(); ++k) {
+    weave.push_back({0.1 * static_cast<double>(k), 0, 7, flat.range_m[k], flat.p_world_tag[k]});
+  }
+  const std::vector<RangeSample> pass = PassBy(Eigen::Vector3d(0, 4, 3), 0.05, 1);
+  for (const bool region : {false, true}) {
+    const auto make = [&] {
+      return region ? std::unique_ptr<InitTrigger>(std::make_unique<ConfidenceRegionDopTrigger>(checked, 1e-3, SolveCadence(10, 1.1), 1.0))
+                    : std::make_unique<EstimatePdopTrigger>(checked, 1e-3, SolveCadence(10, 1.1));
+    };
+    const std::string_view test = region ? "dop4" : "pdop";
+    AnchorInitializer on_flat(7, InitializerOptions{}, std::make_unique<NullFilter>(), make(), checked);
+    for (const RangeSample& s : weave) on_flat.Feed(s);
+    ASSERT_TRUE(on_flat.why_not().has_value());
+    EXPECT_EQ(on_flat.why_not()->blocked_by, "mirror") << test;
+    EXPECT_GT(on_flat.why_not()->samples_needed, 10.0 * static_cast<double>(weave.size())) << test;
+    AnchorInitializer on_pass(7, InitializerOptions{}, std::make_unique<NullFilter>(), make(), checked);
+    for (const RangeSample& s : pass) on_pass.Feed(s);  // a threshold no geometry meets
+    ASSERT_TRUE(on_pass.why_not().has_value());
+    EXPECT_EQ(on_pass.why_not()->blocked_by, test);
+    EXPECT_GT(on_pass.why_not()->value, 1e-3);
+    EXPECT_EQ(on_pass.why_not()->limit, 1e-3);
   }
 }
 

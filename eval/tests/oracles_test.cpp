@@ -56,6 +56,26 @@ TEST(Oracles, TrueBiasAwareDopFiresWhereItFirstDropsBelowItsThreshold) {
   EXPECT_EQ(fired, expected);
 }
 
+// Before it fires, each oracle says why it waits: its true DOP against the threshold.
+TEST(Oracles, WhyNotIsTheTrueDopAgainstTheThreshold) {
+  const auto samples = testing::PassBy(kAnchor, 0.05, 2);
+  const registry::Components components = MakeComponentsWithOracles();
+  for (const std::string trigger : {"pdop_true", "dop4_true"}) {
+    estimator::AnchorInitializer initializer = registry::MakeInitializer(components, 7, Unfiltered(), trigger, 0, kAnchor);
+    std::vector<Eigen::Vector3d> p;
+    for (std::size_t i = 0; i < 100; ++i) {
+      initializer.Feed(samples[i]);
+      p.push_back(samples[i].p_world_tag);
+    }
+    ASSERT_FALSE(initializer.initialized()) << trigger;
+    const std::optional<estimator::Judgement> why = initializer.why_not();
+    ASSERT_TRUE(why.has_value());
+    EXPECT_EQ(why->blocked_by, trigger);
+    EXPECT_DOUBLE_EQ(why->value, trigger == "pdop_true" ? TruePdop(p, kAnchor) : BiasAwareDop(p, kAnchor));
+    EXPECT_GE(why->value, why->limit);
+  }
+}
+
 TEST(Oracles, WithoutTheTruthTheOracleIsRefusedWithTheReason) {
   const registry::Components components = MakeComponentsWithOracles();
   try {

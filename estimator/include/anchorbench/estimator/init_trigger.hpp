@@ -57,6 +57,19 @@ struct Judgement {
   double samples_needed = kNone;
 };
 
+// A solve the mirror check refused, judged at t_s: `mirror`, the evidence against its threshold,
+// and the samples that would settle it.
+inline Judgement MirrorJudgement(const MirrorRefusal& refusal, double t_s) {
+  Judgement j;
+  j.t_s = t_s;
+  j.samples = refusal.samples;
+  j.blocked_by = "mirror";
+  j.value = j.evidence = refusal.evidence;
+  j.limit = j.evidence_needed = refusal.evidence_needed;
+  j.samples_needed = refusal.SamplesNeeded();
+  return j;
+}
+
 // When to initialize an anchor (Sec. III-C): one interface, so the paper's comparisons (closest-
 // point PDOP vs the PDOP at the LS or NLS estimate vs the true PDOP vs a fixed window) are a
 // configuration choice. One instance per anchor; it may keep state between samples.

@@ -78,12 +78,19 @@ class EstimatePdopTrigger : public InitTrigger {
       : solver_(std::move(solver)), threshold_(threshold), cadence_(cadence) {}
   bool Fire(const TriggerInput& in) override { return cadence_.Due(in); }
   bool Evaluate(const TriggerInput& in) override;
+  std::optional<Judgement> why_not() const override { return judgement_; }
 
  private:
   std::shared_ptr<const Solver> solver_;
   double threshold_;
   SolveCadence cadence_;
+  std::optional<Judgement> judgement_;  // of the last evaluation: `pdop`, or why its solve failed
 };
+
+// A solving trigger's evaluation as a judgement: the solve's refusal (`mirror` from the mirror
+// check, `solve` for any other failure), else `test` with its value against the threshold.
+Judgement SolvedJudgement(const TriggerInput& in, const SolveResult& estimate, std::string_view test, double value,
+                          double threshold);
 
 // Ours: a closest-point DOP other than the paper's, O(1) per sample: Eq. (4)'s rows with the bias
 // as a fourth column (dop4_closest_point), or their x-y block alone, the DOP with the height known
@@ -133,12 +140,14 @@ class ConfidenceRegionDopTrigger : public InitTrigger {
       : solver_(std::move(solver)), threshold_(threshold), cadence_(cadence), sigmas_(sigmas) {}
   bool Fire(const TriggerInput& in) override { return cadence_.Due(in); }
   bool Evaluate(const TriggerInput& in) override;
+  std::optional<Judgement> why_not() const override { return judgement_; }
 
  private:
   std::shared_ptr<const Solver> solver_;
   double threshold_;
   SolveCadence cadence_;
   double sigmas_;
+  std::optional<Judgement> judgement_;  // of the last evaluation: `dop4`, or why its solve failed
 };
 
 // The worst bias-aware DOP over the estimate and the 6 ends of the principal axes of its

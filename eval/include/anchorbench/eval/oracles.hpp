@@ -1,5 +1,8 @@
 #pragma once
 
+#include <cstddef>
+#include <optional>
+
 #include <Eigen/Core>
 
 #include "anchorbench/estimator/init_trigger.hpp"
@@ -17,13 +20,28 @@ class TruePdopTrigger : public estimator::InitTrigger {
       : geometry_(p_world_anchor), threshold_(threshold), bias_aware_(bias_aware) {}
   bool Fire(const estimator::TriggerInput& in) override {
     geometry_.Add(in.sample_p_world_tag);
-    return in.eligible && (bias_aware_ ? geometry_.BiasAwareDop() : geometry_.Pdop()) < threshold_;
+    last_t_s_ = in.t_s;
+    last_samples_ = in.range_m.size();
+    return in.eligible && Value() < threshold_;
+  }
+  std::optional<estimator::Judgement> why_not() const override {
+    if (last_samples_ == 0) return std::nullopt;
+    estimator::Judgement j;
+    j.t_s = last_t_s_;
+    j.samples = last_samples_;
+    j.blocked_by = bias_aware_ ? "dop4_true" : "pdop_true";
+    j.value = Value();
+    j.limit = threshold_;
+    return j;
   }
 
  private:
+  double Value() const { return bias_aware_ ? geometry_.BiasAwareDop() : geometry_.Pdop(); }
   TrueGeometry geometry_;
   double threshold_;
   bool bias_aware_;
+  double last_t_s_ = estimator::Judgement::kNone;
+  std::size_t last_samples_ = 0;
 };
 
 // pdop_true and dop4_true: built from the trigger context's reference position (the truth),
