@@ -179,12 +179,7 @@ std::optional<RegionForecast> AnchorInitializer::Forecast() const {
 std::optional<Judgement> AnchorInitializer::why_not() const {
   if (initialized_ || n_admitted_ == 0) return std::nullopt;
   auto own = [this](std::string_view test, double limit) {
-    Judgement j;
-    j.samples = range_m_.size();
-    j.blocked_by = test;
-    j.value = static_cast<double>(n_admitted_);
-    j.limit = limit;
-    return j;
+    return BlockedBy(test, static_cast<double>(n_admitted_), limit, Judgement::kNone, range_m_.size());
   };
   if (n_admitted_ < static_cast<std::size_t>(options_.min_samples)) return own("samples", options_.min_samples);
   // A solve the mirror check refused, while it still stands (the fixed window's at the end, or an

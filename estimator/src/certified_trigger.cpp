@@ -203,22 +203,22 @@ CertifiedTrigger::Verdict CertifiedTrigger::RuleOutAlternatives(std::span<const 
         2.0 * pattern_quantile_ *
         PatternCovariation(p_world_tag, estimate.p_world_anchor, estimate.bias_m, fit.p_world_anchor, fit.bias_m,
                            covariance_);
-    const Comparison comparison = Compare(p_world_tag, range_m, estimate.p_world_anchor, estimate.bias_m,
+    const FitComparison comparison = Compare(p_world_tag, range_m, estimate.p_world_anchor, estimate.bias_m,
                                           fit.p_world_anchor, fit.bias_m, scale_m, explained_squares, threshold);
     // Too close to tell counts as no evidence at all.
-    judgement_.evidence = std::min(judgement_.evidence, comparison.separated ? comparison.evidence : 0.0);
-    if (!comparison.separated || !(comparison.evidence >= threshold)) {
-      judgement_.samples_needed = comparison.numbers.SamplesNeeded();
+    judgement_.evidence = std::min(judgement_.evidence, comparison.separated() ? comparison.evidence : 0.0);
+    if (!comparison.separated() || !(comparison.evidence >= threshold)) {
+      judgement_.samples_needed = comparison.SamplesNeeded();
       return start.mirror ? Verdict::kMirror : Verdict::kOtherMinimum;
     }
   }
   return Verdict::kRuledOut;
 }
 
-CertifiedTrigger::Comparison CertifiedTrigger::Compare(std::span<const Eigen::Vector3d> p_world_tag,
-                                                      std::span<const double> range_m, const Eigen::Vector3d& p_a,
-                                                      double bias_a_m, const Eigen::Vector3d& p_b, double bias_b_m,
-                                                      double scale_m, double explained_squares, double threshold) const {
+FitComparison CertifiedTrigger::Compare(std::span<const Eigen::Vector3d> p_world_tag, std::span<const double> range_m,
+                                        const Eigen::Vector3d& p_a, double bias_a_m, const Eigen::Vector3d& p_b,
+                                        double bias_b_m, double scale_m, double explained_squares,
+                                        double threshold) const {
   const double prior_evidence = height_prior_ ? height_prior_->Chi2(p_b.z()) - height_prior_->Chi2(p_a.z()) : 0.0;
   const double evidence =
       FitEvidence(p_world_tag, range_m, p_a, bias_a_m, p_b, bias_b_m, mirror_.trim_fraction, explained_squares) +
@@ -227,10 +227,9 @@ CertifiedTrigger::Comparison CertifiedTrigger::Compare(std::span<const Eigen::Ve
   // more with noise in the tag positions: on the flat floor, 1 cm of it swung a lambda ~10 fit
   // from -15 to +28): only a separation no swing crosses counts as evidence, or a height prior
   // that alone rules the alternative out (a twin at the same height, a line's, it cannot).
-  const bool by_prior = prior_evidence >= threshold;
-  const double separation = by_prior ? kInf : Separation(p_world_tag, p_a, bias_a_m, p_b, bias_b_m, scale_m);
-  return {evidence, separation >= mirror_.min_separation,
-          MirrorRefusal{evidence, threshold, separation, mirror_.min_separation, range_m.size()}};
+  const double separation =
+      prior_evidence >= threshold ? kInf : Separation(p_world_tag, p_a, bias_a_m, p_b, bias_b_m, scale_m);
+  return {evidence, threshold, separation, mirror_.min_separation, range_m.size()};
 }
 
 std::vector<int> CertifiedTrigger::EstimatedTags(std::span<const int> tag_id, std::size_t samples) const {
@@ -465,10 +464,10 @@ bool CertifiedTrigger::MoveToBetterBasin(std::span<const Eigen::Vector3d> p_worl
       (refined.p_world_anchor - estimate->p_world_anchor).norm() <= options_.accuracy_m) {
     return false;  // no other basin farther than D
   }
-  const Comparison comparison =
+  const FitComparison comparison =
       Compare(p_world_tag, range_m, refined.p_world_anchor, refined.bias_m, estimate->p_world_anchor, estimate->bias_m,
               ResidualScale(p_world_tag, range_m, refined.p_world_anchor, refined.bias_m), 0.0, mirror_.min_evidence);
-  if (!(comparison.evidence >= mirror_.min_evidence) || !comparison.separated) return false;
+  if (!(comparison.evidence >= mirror_.min_evidence) || !comparison.separated()) return false;
   *estimate = refined;
   return true;
 }

@@ -130,23 +130,24 @@ SolveResult HeightCheckedSolver::Solve(std::span<const Eigen::Vector3d> p_world_
   // estimate's joins the evidence.
   const std::optional<HeightPrior> prior = height_prior();
   if (mirror.exists && prior) mirror.evidence += prior->Chi2(mirror.p_world_mirror.z()) - prior->Chi2(result.p_world_anchor.z());
+  if (!mirror.exists) return result;
+  // The data (and a height prior, which alone separates the two) decide.
   const auto separation = [&] {
+    if (prior) return std::numeric_limits<double>::infinity();
     double squares = 0.0;
     for (const double r : Residuals(p_world_tag, range_m, result.p_world_anchor, result.bias_m)) squares += r * r;
     const double scale_m = std::sqrt(squares / static_cast<double>(std::max<std::size_t>(range_m.size(), 5) - 4));
     return Separation(p_world_tag, result.p_world_anchor, result.bias_m, mirror.p_world_mirror, mirror.bias_mirror_m,
                       scale_m);
   };
-  const double separation_needed = prior ? 0.0 : options_.min_separation;  // a prior alone rules the mirror out
-  const auto separated = [&] { return prior || separation() >= separation_needed; };
-  // The data (and a height prior) decide.
-  if (!mirror.exists || (mirror.evidence >= options_.min_evidence && separated())) return result;
+  const FitComparison comparison{mirror.evidence, options_.min_evidence, separation(), options_.min_separation,
+                                 range_m.size()};
+  if (comparison.evidence >= comparison.evidence_needed && comparison.separated()) return result;
   // Ambiguous. Without a usable side prior, say so, with both tests' numbers.
   constexpr double kMinNormalZ = 0.5;  // cos(60 deg): a steeper plane has no above and below
   if (options_.side == Side::kAny || mirror.normal.z() < kMinNormalZ) {
     result.status = SolveStatus::kHeightUnobservable;
-    result.mirror_refusal =
-        MirrorRefusal{mirror.evidence, options_.min_evidence, separation(), separation_needed, range_m.size()};
+    result.mirror_refusal = comparison;
     return result;
   }
   const bool above = mirror.height_m > 0.0;

@@ -16,7 +16,7 @@ double SamplesToReach(double samples, double value, double needed) {
 
 }  // namespace
 
-double MirrorRefusal::SamplesNeeded() const {
+double FitComparison::SamplesNeeded() const {
   // Both tests at the rates they have shown: the evidence at its own (it is what the test judges;
   // at zero or below, the mirror fits as well as the estimate and more of the same will not tell),
   // the separation at the geometry's.

@@ -10,26 +10,26 @@
 
 namespace anchorbench::estimator {
 
-Judgement SolvedJudgement(const TriggerInput& in, const SolveResult& estimate, std::string_view test, double value,
-                          double threshold) {
+namespace {
+
+// Why a solving trigger's failed solve holds the anchor back: `mirror` from the mirror check (its
+// numbers), `solve` for any other failure.
+Judgement FailedSolveJudgement(const TriggerInput& in, const SolveResult& estimate) {
   if (estimate.mirror_refusal) return MirrorJudgement(*estimate.mirror_refusal, in.t_s);
-  Judgement j;
-  j.t_s = in.t_s;
-  j.samples = in.range_m.size();
-  j.blocked_by = Succeeded(estimate.status) ? test : std::string_view("solve");
-  if (Succeeded(estimate.status)) {
-    j.value = value;
-    j.limit = threshold;
-  }
-  return j;
+  return BlockedBy("solve", Judgement::kNone, Judgement::kNone, in.t_s, in.range_m.size());
 }
+
+}  // namespace
 
 bool EstimatePdopTrigger::Evaluate(const TriggerInput& in) {
   const SolveResult estimate = solver_->Solve(in.p_world_tag, in.range_m);
-  const double pdop = Succeeded(estimate.status) ? GeometryPdop(in.p_world_tag, in.range_m, estimate.p_world_anchor)
-                                                 : std::numeric_limits<double>::infinity();
-  judgement_ = SolvedJudgement(in, estimate, "pdop", pdop, threshold_);
-  return Succeeded(estimate.status) && pdop < threshold_;
+  if (!Succeeded(estimate.status)) {
+    judgement_ = FailedSolveJudgement(in, estimate);
+    return false;
+  }
+  const double pdop = GeometryPdop(in.p_world_tag, in.range_m, estimate.p_world_anchor);
+  judgement_ = BlockedBy("pdop", pdop, threshold_, in.t_s, in.range_m.size());
+  return pdop < threshold_;
 }
 
 double WorstBiasAwareDop(std::span<const Eigen::Vector3d> p_world_tag, const SolveResult& estimate, double sigmas) {
@@ -48,10 +48,13 @@ double WorstBiasAwareDop(std::span<const Eigen::Vector3d> p_world_tag, const Sol
 
 bool ConfidenceRegionDopTrigger::Evaluate(const TriggerInput& in) {
   const SolveResult estimate = solver_->Solve(in.p_world_tag, in.range_m);
-  const double dop = Succeeded(estimate.status) ? WorstBiasAwareDop(in.p_world_tag, estimate, sigmas_)
-                                                : std::numeric_limits<double>::infinity();
-  judgement_ = SolvedJudgement(in, estimate, "dop4", dop, threshold_);
-  return Succeeded(estimate.status) && dop < threshold_;
+  if (!Succeeded(estimate.status)) {
+    judgement_ = FailedSolveJudgement(in, estimate);
+    return false;
+  }
+  const double dop = WorstBiasAwareDop(in.p_world_tag, estimate, sigmas_);
+  judgement_ = BlockedBy("dop4", dop, threshold_, in.t_s, in.range_m.size());
+  return dop < threshold_;
 }
 
 }  // namespace anchorbench::estimator

@@ -168,14 +168,21 @@ TEST(AnchorInitializer, ASpentSolveBudgetIsAFailedSolve) {
   EXPECT_EQ(initializer.last_failed_solve()->solve.status, SolveStatus::kBudgetSpent);
 }
 
-// A solve the mirror check refused says so in why_not(), with the check's numbers: the fixed
-// window's at the end, and an online trigger's while it waits to retry.
-TEST(AnchorInitializer, AMirrorRefusalIsWhyNotWithTheChecksNumbers) {
+// A tag weaving at 10 Hz within 3 mm of one height, ranging anchor 7 (testing::WeavingData): the
+// mirror through its plane fits as well.
+std::vector<RangeSample> FlatWeave() {
   const testing::AnchorData flat = testing::WeavingData(Eigen::Vector3d(3.0, 4.0, 4.5), 0.2, 0.003, 0.05, 1);
   std::vector<RangeSample> samples;
   for (std::size_t k = 0; k < flat.range_m.size(); ++k) {
     samples.push_back({0.1 * static_cast<double>(k), 0, 7, flat.range_m[k], flat.p_world_tag[k]});
   }
+  return samples;
+}
+
+// A solve the mirror check refused says so in why_not(), with the check's numbers: the fixed
+// window's at the end, and an online trigger's while it waits to retry.
+TEST(AnchorInitializer, AMirrorRefusalIsWhyNotWithTheChecksNumbers) {
+  const std::vector<RangeSample> samples = FlatWeave();
   for (const bool online : {false, true}) {
     std::unique_ptr<InitTrigger> trigger = online ? std::unique_ptr<InitTrigger>(std::make_unique<SampleCountTrigger>(300))
                                                   : std::make_unique<FixedWindowTrigger>();
@@ -202,11 +209,7 @@ TEST(AnchorInitializer, AMirrorRefusalIsWhyNotWithTheChecksNumbers) {
 // against the threshold, or, where the mirror check refused their solve, the mirror's numbers.
 TEST(AnchorInitializer, SolvingTriggersSayWhyTheyWait) {
   const auto checked = std::make_shared<HeightCheckedSolver>(std::make_shared<AnchorSolver>(), HeightCheckOptions{});
-  const testing::AnchorData flat = testing::WeavingData(Eigen::Vector3d(3.0, 4.0, 4.5), 0.2, 0.003, 0.05, 1);
-  std::vector<RangeSample> weave;
-  for (std::size_t k = 0; k < flat.range_m.size(); ++k) {
-    weave.push_back({0.1 * static_cast<double>(k), 0, 7, flat.range_m[k], flat.p_world_tag[k]});
-  }
+  const std::vector<RangeSample> weave = FlatWeave();
   const std::vector<RangeSample> pass = PassBy(Eigen::Vector3d(0, 4, 3), 0.05, 1);
   for (const bool region : {false, true}) {
     const auto make = [&] {

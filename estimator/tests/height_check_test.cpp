@@ -103,7 +103,7 @@ TEST(HeightCheck, ARefusalSaysHowManySamplesOfTheSamePathWouldSettleIt) {
     const SolveResult refused = Checked(true)->Solve(sparse.p_world_tag, sparse.range_m);
     ASSERT_EQ(refused.status, SolveStatus::kHeightUnobservable) << "seed " << seed;
     ASSERT_TRUE(refused.mirror_refusal.has_value());
-    const MirrorRefusal& why = *refused.mirror_refusal;
+    const FitComparison& why = *refused.mirror_refusal;
     EXPECT_EQ(why.samples, sparse.range_m.size());
     EXPECT_EQ(why.evidence_needed, HeightCheckOptions{}.min_evidence);
     EXPECT_EQ(why.separation_needed, HeightCheckOptions{}.min_separation);
@@ -125,11 +125,11 @@ TEST(HeightCheck, ARefusalSaysHowManySamplesOfTheSamePathWouldSettleIt) {
 
 TEST(HeightCheck, SamplesNeededGrowsEachTestAtItsOwnRate) {
   const double inf = std::numeric_limits<double>::infinity();
-  EXPECT_DOUBLE_EQ((MirrorRefusal{3.0, 9.0, 50.0, 100.0, 40}.SamplesNeeded()), 120.0);  // the evidence's rate binds
-  EXPECT_DOUBLE_EQ((MirrorRefusal{30.0, 9.0, 20.0, 100.0, 40}.SamplesNeeded()), 200.0);  // the separation's
-  EXPECT_EQ((MirrorRefusal{-1.0, 9.0, 500.0, 100.0, 40}.SamplesNeeded()), inf);  // the mirror fits as well
-  EXPECT_EQ((MirrorRefusal{3.0, 9.0, 0.0, 100.0, 40}.SamplesNeeded()), inf);     // a flat path
-  EXPECT_DOUBLE_EQ((MirrorRefusal{3.0, 9.0, inf, 0.0, 40}.SamplesNeeded()), 120.0);  // a prior separates
+  EXPECT_DOUBLE_EQ((FitComparison{3.0, 9.0, 50.0, 100.0, 40}.SamplesNeeded()), 120.0);  // the evidence's rate binds
+  EXPECT_DOUBLE_EQ((FitComparison{30.0, 9.0, 20.0, 100.0, 40}.SamplesNeeded()), 200.0);  // the separation's
+  EXPECT_EQ((FitComparison{-1.0, 9.0, 500.0, 100.0, 40}.SamplesNeeded()), inf);  // the mirror fits as well
+  EXPECT_EQ((FitComparison{3.0, 9.0, 0.0, 100.0, 40}.SamplesNeeded()), inf);     // a flat path
+  EXPECT_DOUBLE_EQ((FitComparison{3.0, 9.0, inf, 0.0, 40}.SamplesNeeded()), 120.0);  // a prior separates
 }
 
 TEST(HeightCheck, OnByDefaultAndAnchorOnThePlaneHasNoMirror) {

@@ -128,16 +128,11 @@ class CertifiedTrigger : public InitTrigger {
                                         const SolveResult& estimate, const Eigen::Matrix3d& axes) const;
   // Fit a against fit b of the same data: a's evidence over b (FitEvidence after
   // `explained_squares`, plus the height prior's chi-square difference) and whether the two can be
-  // told apart (a prior that alone reaches `threshold`, or a separation of predicted ranges of at
-  // least min_separation in units of `scale_m`).
-  struct Comparison {
-    double evidence;
-    bool separated;
-    MirrorRefusal numbers;  // both tests' numbers, for why not yet
-  };
-  Comparison Compare(std::span<const Eigen::Vector3d> p_world_tag, std::span<const double> range_m,
-                     const Eigen::Vector3d& p_a, double bias_a_m, const Eigen::Vector3d& p_b, double bias_b_m,
-                     double scale_m, double explained_squares, double threshold) const;
+  // told apart (separated(): a prior that alone reaches `threshold`, or a separation of predicted
+  // ranges of at least min_separation in units of `scale_m`).
+  FitComparison Compare(std::span<const Eigen::Vector3d> p_world_tag, std::span<const double> range_m,
+                        const Eigen::Vector3d& p_a, double bias_a_m, const Eigen::Vector3d& p_b, double bias_b_m,
+                        double scale_m, double explained_squares, double threshold) const;
   // Each alternative refined (L2 LM); one that ends farther than D away must fit worse than the
   // estimate by the evidence threshold, and predict ranges that differ enough to tell. The weakest
   // alternative's evidence and the threshold go to the judgement.

@@ -52,20 +52,28 @@ struct Judgement {
          share_link_offsets = kNone, share_tag_offsets = kNone;
   double evidence = kNone, evidence_needed = kNone;  // the weakest alternative's fit evidence, and the threshold
   double stability_m = kNone;                        // the largest move of the estimate since half the data
-  // `mirror` from the mirror check of a solve (MirrorRefusal): the samples at which it would pass
+  // `mirror` from the mirror check of a solve (FitComparison): the samples at which it would pass
   // if the data went on as they have; +infinity where more of the same will not settle it.
   double samples_needed = kNone;
 };
 
-// A solve the mirror check refused, judged at t_s: `mirror`, the evidence against its threshold,
-// and the samples that would settle it.
-inline Judgement MirrorJudgement(const MirrorRefusal& refusal, double t_s) {
+// `test` holds the anchor back with `value` against `limit`, judged at t_s on `samples` buffered.
+inline Judgement BlockedBy(std::string_view test, double value, double limit, double t_s, std::size_t samples) {
   Judgement j;
   j.t_s = t_s;
-  j.samples = refusal.samples;
-  j.blocked_by = "mirror";
-  j.value = j.evidence = refusal.evidence;
-  j.limit = j.evidence_needed = refusal.evidence_needed;
+  j.samples = samples;
+  j.blocked_by = test;
+  j.value = value;
+  j.limit = limit;
+  return j;
+}
+
+// A solve the mirror check refused, judged at t_s: `mirror`, the evidence against its threshold,
+// and the samples that would settle it.
+inline Judgement MirrorJudgement(const FitComparison& refusal, double t_s) {
+  Judgement j = BlockedBy("mirror", refusal.evidence, refusal.evidence_needed, t_s, refusal.samples);
+  j.evidence = refusal.evidence;
+  j.evidence_needed = refusal.evidence_needed;
   j.samples_needed = refusal.SamplesNeeded();
   return j;
 }

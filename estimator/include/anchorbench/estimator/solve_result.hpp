@@ -32,16 +32,18 @@ inline bool Succeeded(SolveStatus s) {
   return s == SolveStatus::kConverged || s == SolveStatus::kMaxIterations;
 }
 
-// Why the mirror check refused an estimate (kHeightUnobservable; HeightCheckedSolver): both of its
-// tests' numbers, and when more of the same data would pass them (ours). The separation lambda is
-// the evidence the data give on average where the estimate is the anchor (its expectation under
-// the noise model), and at a geometry that goes on as it has it grows in proportion to the samples.
-struct MirrorRefusal {
-  double evidence = 0.0;           // for the estimate over its mirror (height_check.hpp)
-  double evidence_needed = 0.0;    // HeightCheckOptions::min_evidence
-  double separation = 0.0;         // lambda of the two fits (Separation)
-  double separation_needed = 0.0;  // HeightCheckOptions::min_separation (0 with a height prior)
+// A fit against another of the same data (the mirror check's two tests: height_check.hpp; the
+// certificate's alternatives): both tests' numbers, and when more of the same data would pass them
+// (ours). The separation lambda is the evidence the data give on average where the first fit is
+// the anchor (its expectation under the noise model), and at a geometry that goes on as it has it
+// grows in proportion to the samples.
+struct FitComparison {
+  double evidence = 0.0;           // for the first fit over the other (FitEvidence)
+  double evidence_needed = 0.0;    // e.g. HeightCheckOptions::min_evidence
+  double separation = 0.0;         // lambda of the two fits (Separation); +infinity: a height prior alone separates them
+  double separation_needed = 0.0;  // e.g. HeightCheckOptions::min_separation
   std::size_t samples = 0;         // the samples judged
+  bool separated() const { return separation >= separation_needed; }
   // The samples at which both tests would pass if each number went on growing in proportion to
   // the samples (the evidence at its own rate, lambda at the geometry's); +infinity where one does
   // not grow: the mirror fits as well (evidence <= 0) or the path is flat (lambda ~ 0). Then more
@@ -69,7 +71,7 @@ struct SolveResult {
   // which decides how far a range error moves the height; 0 without a prior or where the solver
   // weighs it otherwise (the LS alone: its model error then ignores the prior, the cautious side).
   double height_weight = 0.0;
-  std::optional<MirrorRefusal> mirror_refusal;  // status kHeightUnobservable from the mirror check: why
+  std::optional<FitComparison> mirror_refusal;  // status kHeightUnobservable from the mirror check: its comparison
 };
 
 }  // namespace anchorbench::estimator

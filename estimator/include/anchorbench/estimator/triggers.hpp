@@ -87,10 +87,6 @@ class EstimatePdopTrigger : public InitTrigger {
   std::optional<Judgement> judgement_;  // of the last evaluation: `pdop`, or why its solve failed
 };
 
-// A solving trigger's evaluation as a judgement: the solve's refusal (`mirror` from the mirror
-// check, `solve` for any other failure), else `test` with its value against the threshold.
-Judgement SolvedJudgement(const TriggerInput& in, const SolveResult& estimate, std::string_view test, double value,
-                          double threshold);
 
 // Ours: a closest-point DOP other than the paper's, O(1) per sample: Eq. (4)'s rows with the bias
 // as a fourth column (dop4_closest_point), or their x-y block alone, the DOP with the height known
@@ -111,13 +107,7 @@ class ClosestPointDopTrigger : public InitTrigger {
   }
   std::optional<Judgement> why_not() const override {
     if (last_samples_ == 0) return std::nullopt;
-    Judgement j;
-    j.t_s = last_t_s_;
-    j.samples = last_samples_;
-    j.blocked_by = test_;
-    j.value = (dop_.*value_)();
-    j.limit = threshold_;
-    return j;
+    return BlockedBy(test_, (dop_.*value_)(), threshold_, last_t_s_, last_samples_);
   }
 
  private:

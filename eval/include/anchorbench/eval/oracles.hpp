@@ -26,13 +26,7 @@ class TruePdopTrigger : public estimator::InitTrigger {
   }
   std::optional<estimator::Judgement> why_not() const override {
     if (last_samples_ == 0) return std::nullopt;
-    estimator::Judgement j;
-    j.t_s = last_t_s_;
-    j.samples = last_samples_;
-    j.blocked_by = bias_aware_ ? "dop4_true" : "pdop_true";
-    j.value = Value();
-    j.limit = threshold_;
-    return j;
+    return estimator::BlockedBy(bias_aware_ ? "dop4_true" : "pdop_true", Value(), threshold_, last_t_s_, last_samples_);
   }
 
  private:
