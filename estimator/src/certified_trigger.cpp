@@ -206,7 +206,11 @@ CertifiedTrigger::Verdict CertifiedTrigger::RuleOutAlternatives(std::span<const 
     const FitComparison comparison = Compare(p_world_tag, range_m, estimate.p_world_anchor, estimate.bias_m,
                                           fit.p_world_anchor, fit.bias_m, scale_m, explained_squares, threshold);
     // Too close to tell counts as no evidence at all.
-    judgement_.evidence = std::min(judgement_.evidence, comparison.separated() ? comparison.evidence : 0.0);
+    const double evidence = comparison.separated() ? comparison.evidence : 0.0;
+    if (evidence < judgement_.evidence) {
+      judgement_.evidence = evidence;
+      judgement_.evidence_explained = comparison.separated() ? comparison.explained : 0.0;
+    }
     if (!comparison.separated() || !(comparison.evidence >= threshold)) {
       judgement_.samples_needed = comparison.SamplesNeeded();
       return start.mirror ? Verdict::kMirror : Verdict::kOtherMinimum;
@@ -220,16 +224,17 @@ FitComparison CertifiedTrigger::Compare(std::span<const Eigen::Vector3d> p_world
                                         double bias_b_m, double scale_m, double explained_squares,
                                         double threshold) const {
   const double prior_evidence = height_prior_ ? height_prior_->Chi2(p_b.z()) - height_prior_->Chi2(p_a.z()) : 0.0;
-  const double evidence =
-      FitEvidence(p_world_tag, range_m, p_a, bias_a_m, p_b, bias_b_m, mirror_.trim_fraction, explained_squares) +
-      prior_evidence;
+  double explained = 0.0;
+  const double evidence = FitEvidence(p_world_tag, range_m, p_a, bias_a_m, p_b, bias_b_m, mirror_.trim_fraction,
+                                      explained_squares, &explained) +
+                          prior_evidence;
   // A likelihood ratio's own spread grows with the separation it measures (about 2 sqrt(lambda),
   // more with noise in the tag positions: on the flat floor, 1 cm of it swung a lambda ~10 fit
   // from -15 to +28): only a separation no swing crosses counts as evidence, or a height prior
   // that alone rules the alternative out (a twin at the same height, a line's, it cannot).
   const double separation =
       prior_evidence >= threshold ? kInf : Separation(p_world_tag, p_a, bias_a_m, p_b, bias_b_m, scale_m);
-  return {evidence, threshold, separation, mirror_.min_separation, range_m.size()};
+  return {evidence, threshold, separation, mirror_.min_separation, range_m.size(), explained};
 }
 
 std::vector<int> CertifiedTrigger::EstimatedTags(std::span<const int> tag_id, std::size_t samples) const {

@@ -47,11 +47,13 @@ std::vector<double> Residuals(std::span<const Eigen::Vector3d> p, std::span<cons
 
 // FitEvidence of two fits' residuals, both consumed: one scratch buffer besides them (the medians
 // of a and of its deviations), so a test over N samples allocates three arrays, not seven.
-double EvidenceOfResiduals(std::vector<double> a, std::vector<double> b, double trim_fraction, double explained_squares) {
+double EvidenceOfResiduals(std::vector<double> a, std::vector<double> b, double trim_fraction, double explained_squares,
+                           double* explained = nullptr) {
   std::vector<double> scratch = a;
   const double a_median = MedianInPlace(scratch);
   for (std::size_t k = 0; k < a.size(); ++k) scratch[k] = std::abs(a[k] - a_median);
   const double sigma_m = std::max(kMadToSigma * MedianInPlace(scratch), kMinSigmaM);
+  if (explained) *explained = explained_squares / (sigma_m * sigma_m);
   return (TrimmedSquaresInPlace(b, trim_fraction) - TrimmedSquaresInPlace(a, trim_fraction) - explained_squares) /
          (sigma_m * sigma_m);
 }
@@ -100,9 +102,9 @@ Mirror MirrorOf(std::span<const Eigen::Vector3d> p_world_tag, std::span<const do
 
 double FitEvidence(std::span<const Eigen::Vector3d> p_world_tag, std::span<const double> range_m,
                    const Eigen::Vector3d& p_a, double bias_a_m, const Eigen::Vector3d& p_b, double bias_b_m,
-                   double trim_fraction, double explained_squares) {
+                   double trim_fraction, double explained_squares, double* explained) {
   return EvidenceOfResiduals(Residuals(p_world_tag, range_m, p_a, bias_a_m), Residuals(p_world_tag, range_m, p_b, bias_b_m),
-                             trim_fraction, explained_squares);
+                             trim_fraction, explained_squares, explained);
 }
 
 double Separation(std::span<const Eigen::Vector3d> p_world_tag, const Eigen::Vector3d& p_a, double bias_a_m,

@@ -18,7 +18,8 @@ double SamplesToReach(double samples, double value, double needed) {
 
 double FitComparison::SamplesNeeded() const {
   // Both tests at the rates they have shown: the evidence at its own (it is what the test judges;
-  // at zero or below, the mirror fits as well as the estimate and more of the same will not tell),
+  // at zero or below, the mirror fits as well as the estimate, or the model error could explain
+  // what it fits worse by, both in proportion to the samples: more of the same will not tell),
   // the separation at the geometry's.
   const auto n = static_cast<double>(samples);
   return std::max(SamplesToReach(n, evidence, evidence_needed), SamplesToReach(n, separation, separation_needed));

@@ -59,6 +59,7 @@ py::dict JudgementDict(int anchor_id, const std::string& trigger, const estimato
       {"share_tag_offsets", &J::share_tag_offsets},
       {"evidence", &J::evidence},
       {"evidence_needed", &J::evidence_needed},
+      {"evidence_explained", &J::evidence_explained},
       {"stability_m", &J::stability_m},
       {"samples_needed", &J::samples_needed}};
   for (const auto& [key, member] : kNumbers) d[key] = value(j.*member);

@@ -109,6 +109,7 @@ def test_a_mirror_refusal_says_what_more_data_would_settle_it():
     (why,) = front_end.why_not()
     assert why["blocked_by"] == "mirror" and why["limit"] == 9.21 and why["value"] < why["limit"]
     assert why["samples_needed"] > 10 * len(k)  # not soon, or never (inf)
+    assert why["evidence_explained"] == 0.0  # the mirror check itself allows no model error
 
 
 def test_guide_ranks_where_to_range_from_for_a_waiting_anchor():

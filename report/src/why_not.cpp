@@ -22,7 +22,7 @@ void WriteJudgementRow(std::ostream& out, int anchor_id, const std::string& meth
       << Cell(j.limit) << ',' << Cell(j.region_m) << ',' << Cell(j.share_noise) << ',' << Cell(j.share_correlation)
       << ',' << Cell(j.share_model_error) << ',' << Cell(j.share_travel_bias) << ',' << Cell(j.share_link_offsets)
       << ',' << Cell(j.share_tag_offsets) << ',' << Cell(j.evidence) << ',' << Cell(j.evidence_needed) << ','
-      << Cell(j.stability_m) << ',' << Cell(j.samples_needed) << '\n';
+      << Cell(j.evidence_explained) << ',' << Cell(j.stability_m) << ',' << Cell(j.samples_needed) << '\n';
 }
 
 }  // namespace anchorbench::report

@@ -52,6 +52,10 @@ std::string WaitingFor(const std::optional<estimator::Judgement>& judgement) {
   text << judgement->blocked_by;
   if (!std::isnan(judgement->value)) text << ' ' << io::FormatNumber(judgement->value);
   if (!std::isnan(judgement->limit)) text << " (limit " << io::FormatNumber(judgement->limit) << ')';
+  if (judgement->evidence_explained > 0.0) {  // the other fit is worse, by more than the model error may explain?
+    text << "; " << io::FormatNumber(judgement->evidence + judgement->evidence_explained)
+         << " before what the model error could explain (" << io::FormatNumber(judgement->evidence_explained) << ')';
+  }
   if (std::isinf(judgement->samples_needed)) text << "; more of the same path will not settle it";
   if (std::isfinite(judgement->samples_needed)) {
     text << "; settled at about " << static_cast<long long>(std::ceil(judgement->samples_needed)) << " samples";

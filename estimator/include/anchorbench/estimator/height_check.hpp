@@ -65,10 +65,11 @@ Mirror MirrorOf(std::span<const Eigen::Vector3d> p_world_tag, std::span<const do
 // The evidence for fit `a` over fit `b` of the same data: the trimmed sum of squared residuals of
 // b minus a's, over a's robust residual variance (1.4826 MAD)^2 (negative: b fits better).
 // `explained_squares` (m^2) is taken off the difference of squares first: what a range error
-// outside the noise model could account for (the certificate's model error).
+// outside the noise model could account for (the certificate's model error); `explained`, if
+// given, receives it in the evidence's units.
 double FitEvidence(std::span<const Eigen::Vector3d> p_world_tag, std::span<const double> range_m,
                    const Eigen::Vector3d& p_a, double bias_a_m, const Eigen::Vector3d& p_b, double bias_b_m,
-                   double trim_fraction, double explained_squares = 0.0);
+                   double trim_fraction, double explained_squares = 0.0, double* explained = nullptr);
 
 // lambda = sum over samples of the squared difference of the ranges two fits predict, in units of
 // `residual_scale_m` (floored at 1 mm).

@@ -51,6 +51,9 @@ struct Judgement {
   double share_noise = kNone, share_correlation = kNone, share_model_error = kNone, share_travel_bias = kNone,
          share_link_offsets = kNone, share_tag_offsets = kNone;
   double evidence = kNone, evidence_needed = kNone;  // the weakest alternative's fit evidence, and the threshold
+  // Of how much worse that alternative fits, the part the model error could explain, already off
+  // `evidence` (FitComparison::explained): evidence + evidence_explained is the fits' own difference.
+  double evidence_explained = kNone;
   double stability_m = kNone;                        // the largest move of the estimate since half the data
   // `mirror` from the mirror check of a solve (FitComparison): the samples at which it would pass
   // if the data went on as they have; +infinity where more of the same will not settle it.
@@ -74,6 +77,7 @@ inline Judgement MirrorJudgement(const FitComparison& refusal, double t_s) {
   Judgement j = BlockedBy("mirror", refusal.evidence, refusal.evidence_needed, t_s, refusal.samples);
   j.evidence = refusal.evidence;
   j.evidence_needed = refusal.evidence_needed;
+  j.evidence_explained = refusal.explained;
   j.samples_needed = refusal.SamplesNeeded();
   return j;
 }

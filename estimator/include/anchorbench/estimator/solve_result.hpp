@@ -43,11 +43,17 @@ struct FitComparison {
   double separation = 0.0;         // lambda of the two fits (Separation); +infinity: a height prior alone separates them
   double separation_needed = 0.0;  // e.g. HeightCheckOptions::min_separation
   std::size_t samples = 0;         // the samples judged
+  // What a range error outside the noise model (the certificate's model error) could make of the
+  // second fit's extra squares, in the evidence's units: already taken off `evidence`. Where
+  // evidence + explained reaches evidence_needed but evidence does not, the second fit is worse,
+  // and only the model error keeps it in.
+  double explained = 0.0;
   bool separated() const { return separation >= separation_needed; }
   // The samples at which both tests would pass if each number went on growing in proportion to
   // the samples (the evidence at its own rate, lambda at the geometry's); +infinity where one does
-  // not grow: the mirror fits as well (evidence <= 0) or the path is flat (lambda ~ 0). Then more
-  // height in the path, or a height prior, settles it, not more of the same.
+  // not grow: the mirror fits as well, or no worse than the model error could explain (evidence
+  // <= 0), or the path is flat (lambda ~ 0). Then more height in the path, or a height prior,
+  // settles it, not more of the same.
   double SamplesNeeded() const;
 };
 

@@ -16,7 +16,8 @@ std::string WhyNotFields(const std::optional<estimator::Judgement>& judgement);
 // The certificate trace: one row per evaluation of a trigger that solves.
 constexpr const char* kJudgementColumns =
     "t,anchor_id,method,samples,blocked_by,value,limit,region_m,share_noise,share_correlation,share_model_error,"
-    "share_travel_bias,share_link_offsets,share_tag_offsets,evidence,evidence_needed,stability_m,samples_needed";
+    "share_travel_bias,share_link_offsets,share_tag_offsets,evidence,evidence_needed,evidence_explained,stability_m,"
+    "samples_needed";
 void WriteJudgementRow(std::ostream& out, int anchor_id, const std::string& method, const estimator::Judgement& j);
 
 }  // namespace anchorbench::report
