@@ -126,6 +126,12 @@ class CertifiedTrigger : public InitTrigger {
   // bias-free linear fit); RuleOutAlternatives gives these the bias that fits best there.
   std::vector<Alternative> Alternatives(std::span<const Eigen::Vector3d> p_world_tag, std::span<const double> range_m,
                                         const SolveResult& estimate, const Eigen::Matrix3d& axes) const;
+  // Of how much worse the alternative at (p_world_fit, bias_fit_m) fits than the estimate, the
+  // squares (m^2) a range error of the model error's size and the noise could make up, were the
+  // alternative the anchor, at the certificate's confidence (ExplainedSquares in the .cpp: the
+  // alternative as the anchor would start ahead by its separation). Zero without a model error.
+  double ExplainedSquares(std::span<const Eigen::Vector3d> p_world_tag, const SolveResult& estimate,
+                          const Eigen::Vector3d& p_world_fit, double bias_fit_m, double scale_m);
   // Fit a against fit b of the same data: a's evidence over b (FitEvidence after
   // `explained_squares`, plus the height prior's chi-square difference) and whether the two can be
   // told apart (separated(): a prior that alone reaches `threshold`, or a separation of predicted
