@@ -3,8 +3,8 @@
 
 A simulated hall of 8 anchors is ranged by 3 tags at 100 Hz for 135 s (324,000 ranges, with the
 biases real radios have): `hall_3d`, a path that climbs and falls 0.8 m, and `hall_flat`, the
-tags in one plane at a height that wanders 5 cm (a ground robot: every anchor's mirror fits
-about as well, so certified refuses most of them again and again). Each log is replayed once per
+tags in one plane at a height that wanders 5 cm (a ground robot: certified refuses again and
+again the anchors whose mirror fits about as well, and tests every alternative of the others). Each log is replayed once per
 trigger with the defaults for real logs (`anchorbench replay --quiet`, one trigger each), and
 once with the default trigger set (`defaults`). The time is the replay's wall time, best of
 REPEATS, and the ratio is against pdop_closest_point's on the same log in the same run.
