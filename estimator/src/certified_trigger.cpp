@@ -231,21 +231,15 @@ double CertifiedTrigger::ExplainedSquares(std::span<const Eigen::Vector3d> p_wor
   const double pattern_m2 = PatternCovariation(p_world_tag, estimate.p_world_anchor, estimate.bias_m, p_world_fit,
                                                bias_fit_m, covariance_);
   if (!(pattern_m2 > 0.0)) return 0.0;  // no model error: the threshold and the separation judge the noise
-  std::vector<double>& d2 = residual_m_;
-  d2.resize(p_world_tag.size());
+  std::vector<double>& d = residual_m_;  // the two fits' predicted ranges apart
+  d.resize(p_world_tag.size());
   double all_m2 = 0.0;
-  for (std::size_t k = 0; k < d2.size(); ++k) {
-    const double d = (p_world_tag[k] - estimate.p_world_anchor).norm() + estimate.bias_m -
-                     (p_world_tag[k] - p_world_fit).norm() - bias_fit_m;
-    d2[k] = d * d;
-    all_m2 += d2[k];
+  for (std::size_t k = 0; k < d.size(); ++k) {
+    d[k] = (p_world_tag[k] - estimate.p_world_anchor).norm() + estimate.bias_m - (p_world_tag[k] - p_world_fit).norm() -
+           bias_fit_m;
+    all_m2 += d[k] * d[k];
   }
-  const auto kept = static_cast<std::size_t>(std::ceil((1.0 - mirror_.trim_fraction) * static_cast<double>(d2.size())));
-  double kept_m2 = 0.0;
-  if (kept > 0) {
-    std::nth_element(d2.begin(), d2.begin() + static_cast<std::ptrdiff_t>(kept - 1), d2.end());
-    for (std::size_t k = 0; k < kept; ++k) kept_m2 += d2[k];
-  }
+  const double kept_m2 = TrimmedSquaresInPlace(d, mirror_.trim_fraction);
   return std::max(0.0, 2.0 * pattern_quantile_ * std::sqrt(pattern_m2 * pattern_m2 + scale_m * scale_m * all_m2) - kept_m2);
 }
 

@@ -24,15 +24,6 @@ double MedianInPlace(std::vector<double>& values) {
   return *middle;
 }
 
-// The sum of squares of the smallest (1 - trim) share of |r|; squares and reorders `residuals`.
-double TrimmedSquaresInPlace(std::vector<double>& residuals, double trim_fraction) {
-  for (double& r : residuals) r = r * r;
-  const auto kept = static_cast<std::size_t>(std::ceil((1.0 - trim_fraction) * static_cast<double>(residuals.size())));
-  std::nth_element(residuals.begin(), residuals.begin() + static_cast<std::ptrdiff_t>(kept - 1), residuals.end());
-  double sum = 0.0;
-  for (std::size_t k = 0; k < kept; ++k) sum += residuals[k];
-  return sum;
-}
 
 // d_k - |p_k - p_A| - gamma for every sample: the negative of Eq. (11)'s RangeResidual
 // (range_residual.hpp), as measured minus predicted. Written as the negation, (|p_k - p_A| + gamma)
@@ -59,6 +50,16 @@ double EvidenceOfResiduals(std::vector<double> a, std::vector<double> b, double 
 }
 
 }  // namespace
+
+double TrimmedSquaresInPlace(std::vector<double>& residuals, double trim_fraction) {
+  if (residuals.empty()) return 0.0;
+  for (double& r : residuals) r = r * r;
+  const auto kept = static_cast<std::size_t>(std::ceil((1.0 - trim_fraction) * static_cast<double>(residuals.size())));
+  std::nth_element(residuals.begin(), residuals.begin() + static_cast<std::ptrdiff_t>(kept - 1), residuals.end());
+  double sum = 0.0;
+  for (std::size_t k = 0; k < kept; ++k) sum += residuals[k];
+  return sum;
+}
 
 bool HeightCheckOptions::IsValid(std::string* why) const {
   auto fail = [why](const char* message) {

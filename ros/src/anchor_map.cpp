@@ -52,7 +52,7 @@ std::string WaitingFor(const std::optional<estimator::Judgement>& judgement) {
   text << judgement->blocked_by;
   if (!std::isnan(judgement->value)) text << ' ' << io::FormatNumber(judgement->value);
   if (!std::isnan(judgement->limit)) text << " (limit " << io::FormatNumber(judgement->limit) << ')';
-  if (judgement->evidence_explained > 0.0) {  // the other fit is worse, by more than the model error may explain?
+  if (judgement->evidence_explained > 0.0) {  // how much worse the other fit is, and how much of that a pattern explains
     text << "; " << io::FormatNumber(judgement->evidence + judgement->evidence_explained)
          << " before what the model error could explain (" << io::FormatNumber(judgement->evidence_explained) << ')';
   }

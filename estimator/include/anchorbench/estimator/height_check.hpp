@@ -6,6 +6,7 @@
 #include <span>
 #include <string>
 #include <string_view>
+#include <vector>
 
 #include <Eigen/Core>
 
@@ -61,6 +62,10 @@ struct Mirror {
 };
 Mirror MirrorOf(std::span<const Eigen::Vector3d> p_world_tag, std::span<const double> range_m,
                 const SolveResult& estimate, double trim_fraction);
+
+// The sum of squares of the smallest (1 - trim_fraction) share of |r|, as the evidence trims them;
+// squares and reorders `residuals` (a buffer the caller no longer needs).
+double TrimmedSquaresInPlace(std::vector<double>& residuals, double trim_fraction);
 
 // The evidence for fit `a` over fit `b` of the same data: the trimmed sum of squared residuals of
 // b minus a's, over a's robust residual variance (1.4826 MAD)^2 (negative: b fits better).

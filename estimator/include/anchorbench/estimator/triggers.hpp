@@ -29,13 +29,7 @@ class ClosestPointPdopTrigger : public InitTrigger {
     double value = Judgement::kNone;
     std::optional<Judgement> Judged(std::string_view test, double limit) const {
       if (samples == 0) return std::nullopt;
-      Judgement j;
-      j.t_s = t_s;
-      j.samples = samples;
-      j.blocked_by = test;
-      j.value = value;
-      j.limit = limit;
-      return j;
+      return BlockedBy(test, value, limit, t_s, samples);
     }
   } last_;
 };
@@ -86,7 +80,6 @@ class EstimatePdopTrigger : public InitTrigger {
   SolveCadence cadence_;
   std::optional<Judgement> judgement_;  // of the last evaluation: `pdop`, or why its solve failed
 };
-
 
 // Ours: a closest-point DOP other than the paper's, O(1) per sample: Eq. (4)'s rows with the bias
 // as a fourth column (dop4_closest_point), or their x-y block alone, the DOP with the height known
