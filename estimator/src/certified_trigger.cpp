@@ -140,9 +140,9 @@ CertifiedTrigger::CertifiedTrigger(std::shared_ptr<const Solver> solver, const A
 std::vector<CertifiedTrigger::Alternative> CertifiedTrigger::Alternatives(std::span<const Eigen::Vector3d> p_world_tag,
                                                                          std::span<const double> range_m,
                                                                          const SolveResult& estimate,
-                                                                         const Eigen::Matrix3d& axes) const {
+                                                                         const Eigen::Matrix3d& axes,
+                                                                         const Mirror& mirror) const {
   std::vector<Alternative> starts;
-  const Mirror mirror = MirrorOf(p_world_tag, range_m, estimate, mirror_.trim_fraction);
   if (mirror.exists) starts.push_back({mirror.p_world_mirror, mirror.bias_mirror_m, true});
   // Along each principal axis of the covariance, and towards and away from the tags: where range
   // and bias trade off (one side of an anchor seen), the other minima of the fit lie that way.
@@ -171,17 +171,19 @@ std::vector<CertifiedTrigger::Alternative> CertifiedTrigger::Alternatives(std::s
 CertifiedTrigger::Verdict CertifiedTrigger::RuleOutAlternatives(std::span<const Eigen::Vector3d> p_world_tag,
                                                                 std::span<const double> range_m,
                                                                 const SolveResult& estimate,
-                                                                const Eigen::Matrix3d& axes, double scale_m) {
+                                                                const Eigen::Matrix3d& axes, double scale_m,
+                                                                const MirrorFit& mirror) {
   ++tests_;
   const double threshold = mirror_.min_evidence + 2.0 * std::log(static_cast<double>(tests_));
   judgement_.evidence_needed = threshold;
   judgement_.evidence = kInf;  // none farther than D: nothing to rule out
-  for (Alternative start : Alternatives(p_world_tag, range_m, estimate, axes)) {
+  for (Alternative start : Alternatives(p_world_tag, range_m, estimate, axes, mirror.mirror)) {
     // Each start's bias only once it is reached: the first alternative not ruled out ends the loop
     // (on a flat path, the mirror, every evaluation).
     if (!start.mirror) start.bias_m = MedianResidual(p_world_tag, range_m, start.p_world_anchor, residual_m_);
     Alternative fit = start;
-    const SolveResult refined = refine_.Solve(p_world_tag, range_m, start.p_world_anchor, start.bias_m, height_prior_);
+    const SolveResult refined = start.mirror ? mirror.refined
+        : refine_.Solve(p_world_tag, range_m, start.p_world_anchor, start.bias_m, height_prior_);
     if (Succeeded(refined.status)) {
       fit.p_world_anchor = refined.p_world_anchor;
       fit.bias_m = refined.bias_m;
@@ -413,7 +415,8 @@ bool CertifiedTrigger::Judge(const TriggerInput& in) {
     return blocked("solve", Judgement::kNone, Judgement::kNone);
   }
   fitted.range_m = corrected_m_;
-  MoveToBetterBasin(fitted.p_world_tag, fitted.range_m, &estimate);
+  std::optional<MirrorFit> mirror = FitMirror(fitted.p_world_tag, fitted.range_m, estimate);
+  if (MoveToBetterBasin(fitted.p_world_tag, fitted.range_m, *mirror, &estimate)) mirror.reset();  // another estimate's
   converged_ = estimate.status == SolveStatus::kConverged;
   const SolveResult noise_only = estimate;
   // The residuals' terms at the estimate, once: for its covariance here and the tests below.
@@ -464,8 +467,9 @@ bool CertifiedTrigger::Judge(const TriggerInput& in) {
         prior_quantile_ * std::min(height_prior_->sigma_m, PriorGapSigma(fitted, noise_only, noise));
     if (!(off_m <= limit_m)) return blocked("height_prior", off_m, limit_m);
   }
-  const Verdict verdict =
-      RuleOutAlternatives(fitted.p_world_tag, fitted.range_m, estimate, axes.eigenvectors(), noise.residual_scale_m);
+  if (!mirror) mirror = FitMirror(fitted.p_world_tag, fitted.range_m, estimate);
+  const Verdict verdict = RuleOutAlternatives(fitted.p_world_tag, fitted.range_m, estimate, axes.eigenvectors(),
+                                              noise.residual_scale_m, *mirror);
   refusal_ = verdict == Verdict::kMirror ? std::optional(SolveStatus::kHeightUnobservable) : std::nullopt;
   if (verdict == Verdict::kMirror) return blocked("mirror", judgement_.evidence, judgement_.evidence_needed);
   if (verdict == Verdict::kOtherMinimum) return blocked("alternative", judgement_.evidence, judgement_.evidence_needed);
@@ -479,16 +483,24 @@ bool CertifiedTrigger::Judge(const TriggerInput& in) {
   return true;
 }
 
+CertifiedTrigger::MirrorFit CertifiedTrigger::FitMirror(std::span<const Eigen::Vector3d> p_world_tag,
+                                                        std::span<const double> range_m,
+                                                        const SolveResult& estimate) const {
+  MirrorFit fit{MirrorOf(p_world_tag, range_m, estimate, mirror_.trim_fraction), {}};
+  if (fit.mirror.exists) {
+    fit.refined = refine_.Solve(p_world_tag, range_m, fit.mirror.p_world_mirror, fit.mirror.bias_mirror_m, height_prior_);
+  }
+  return fit;
+}
+
 bool CertifiedTrigger::MoveToBetterBasin(std::span<const Eigen::Vector3d> p_world_tag, std::span<const double> range_m,
-                                         SolveResult* estimate) const {
+                                         const MirrorFit& mirror, SolveResult* estimate) const {
   // A solve started from the linear fit can settle in the worse basin of a mirror pair and stay
   // there as data come (a cone approach, a nearly flat path with a little height). The move only
   // picks the basin the tests judge: the other one must still be ruled out like any alternative
   // (RuleOutAlternatives, with the model error's discount, which picking a basin does not need).
-  const Mirror mirror = MirrorOf(p_world_tag, range_m, *estimate, mirror_.trim_fraction);
-  if (!mirror.exists) return false;
-  const SolveResult refined =
-      refine_.Solve(p_world_tag, range_m, mirror.p_world_mirror, mirror.bias_mirror_m, height_prior_);
+  if (!mirror.mirror.exists) return false;
+  const SolveResult& refined = mirror.refined;
   if (!Succeeded(refined.status) ||
       (refined.p_world_anchor - estimate->p_world_anchor).norm() <= options_.accuracy_m) {
     return false;  // no other basin farther than D

@@ -102,6 +102,12 @@ class CertifiedTrigger : public InitTrigger {
     bool mirror;
   };
   enum class Verdict { kRuledOut, kMirror, kOtherMinimum };
+  // The estimate's reflection through the tags' plane and the fit refined from it (L2): the basin
+  // move and the alternatives both start there, so it is refined once per estimate.
+  struct MirrorFit {
+    Mirror mirror;
+    SolveResult refined;  // where mirror.exists
+  };
   // The estimate's residuals, read once per evaluation: their RMS, the correlation factor and the
   // consistency check's travel bias (credible_covariance.hpp); and the one-bias unit-weight
   // covariance (J^T J)^-1 of (p_A, gamma) at the estimate where a test reads it (several tags' share,
@@ -114,18 +120,22 @@ class CertifiedTrigger : public InitTrigger {
   };
   // The four tests on one evaluation; Evaluate adds the cadence's back-off.
   bool Judge(const TriggerInput& in);
+  MirrorFit FitMirror(std::span<const Eigen::Vector3d> p_world_tag, std::span<const double> range_m,
+                      const SolveResult& estimate) const;
   // An estimate in the worse of two mirror basins moved to the better one: where the fit refined
-  // (L2) from its reflection ends farther than D away, fits better by the mirror check's
-  // min_evidence and is separated from it (Compare), that fit becomes the estimate (true).
+  // (L2) from its reflection (`mirror`, FitMirror's of the estimate) ends farther than D away, fits
+  // better by the mirror check's min_evidence and is separated from it (Compare), that fit becomes
+  // the estimate (true).
   bool MoveToBetterBasin(std::span<const Eigen::Vector3d> p_world_tag, std::span<const double> range_m,
-                         SolveResult* estimate) const;
+                         const MirrorFit& mirror, SolveResult* estimate) const;
   // The cadence after the judgement: backed off on a refusal that repeats, restored on progress.
   void PaceCadence();
   // Where other minima of the fit may lie: the mirror (with its bias), 3 D along the covariance's
   // axes and towards and away from the tags' centroid, and the ranges read as distances (the
   // bias-free linear fit); RuleOutAlternatives gives these the bias that fits best there.
   std::vector<Alternative> Alternatives(std::span<const Eigen::Vector3d> p_world_tag, std::span<const double> range_m,
-                                        const SolveResult& estimate, const Eigen::Matrix3d& axes) const;
+                                        const SolveResult& estimate, const Eigen::Matrix3d& axes,
+                                        const Mirror& mirror) const;
   // Of how much worse the alternative at (p_world_fit, bias_fit_m) fits than the estimate, the
   // squares (m^2) a range error of the model error's size and the noise could make up, were the
   // alternative the anchor, at the certificate's confidence (ExplainedSquares in the .cpp: the
@@ -139,11 +149,13 @@ class CertifiedTrigger : public InitTrigger {
   FitComparison Compare(std::span<const Eigen::Vector3d> p_world_tag, std::span<const double> range_m,
                         const Eigen::Vector3d& p_a, double bias_a_m, const Eigen::Vector3d& p_b, double bias_b_m,
                         double scale_m, double explained_squares, double threshold) const;
-  // Each alternative refined (L2 LM); one that ends farther than D away must fit worse than the
-  // estimate by the evidence threshold, and predict ranges that differ enough to tell. The weakest
-  // alternative's evidence and the threshold go to the judgement.
+  // Each alternative refined (L2 LM; the mirror's refinement is `mirror`'s, FitMirror's of the
+  // estimate); one that ends farther than D away must fit worse than the estimate by the evidence
+  // threshold, and predict ranges that differ enough to tell. The weakest alternative's evidence and
+  // the threshold go to the judgement.
   Verdict RuleOutAlternatives(std::span<const Eigen::Vector3d> p_world_tag, std::span<const double> range_m,
-                              const SolveResult& estimate, const Eigen::Matrix3d& axes, double scale_m);
+                              const SolveResult& estimate, const Eigen::Matrix3d& axes, double scale_m,
+                              const MirrorFit& mirror);
   // 3.: the largest radius of the region seen from the ends of its axes (+inf where singular), with
   // the estimate's noise statistics (Judge computes them once).
   double RegionFromEnds(const TriggerInput& in, const SolveResult& estimate,
