@@ -83,7 +83,7 @@ awk 'NR == 1 { n = NF; next } NF != n { bad++ } END { exit bad > 0 }' "$dir/epoc
   { echo "FAIL: the terminal table runs columns together"; cat "$dir/epoch_table.txt"; failures=$((failures + 1)); }
 expect_error "certificate trace is the trace" "is also --trace" "$bin" replay --poses "$dir/sim/poses.csv" --ranges "$dir/sim/ranges.csv" \
   --trace "$dir/same.csv" --certificate-trace "$dir/same.csv"
-[ "$(head -1 "$dir/out/estimates.csv")" = "anchor_id,method,initialized,t_init,n_used,pdop_est,pdop_true,x,y,z,bias,err_m,status,err_xy,err_z,bias_aware_hdop,bias_aware_vdop,scale,blocked_by,blocked_value,blocked_limit,samples_needed,t_first,t_oracle,latency,radius99_m" ] || { echo "FAIL: estimates header"; failures=$((failures + 1)); }
+[ "$(head -1 "$dir/out/estimates.csv")" = "anchor_id,method,initialized,t_init,n_used,pdop_est,pdop_true,x,y,z,bias,err_m,status,err_xy,err_z,bias_aware_hdop,bias_aware_vdop,scale,blocked_by,blocked_value,blocked_limit,samples_needed,evidence_explained,t_first,t_oracle,latency,radius99_m" ] || { echo "FAIL: estimates header"; failures=$((failures + 1)); }
 grep -qi nan "$dir/out/estimates.csv" && { echo "FAIL: NaN in estimates"; failures=$((failures + 1)); }
 ls "$dir"/*.tmp.* "$dir"/out/*.tmp.* >/dev/null 2>&1 && { echo "FAIL: temporary files left"; failures=$((failures + 1)); }
 "$bin" replay --help >/dev/null || { echo "FAIL: replay --help"; failures=$((failures + 1)); }

@@ -21,7 +21,7 @@ using io::FormatOptional;
 constexpr const char* kEstimateColumns[] = {"anchor_id", "method", "initialized", "t_init", "n_used", "pdop_est",
                                             "pdop_true", "x", "y", "z", "bias", "err_m", "status", "err_xy", "err_z",
                                             "bias_aware_hdop", "bias_aware_vdop", "scale", "blocked_by",
-                                            "blocked_value", "blocked_limit", "samples_needed", "t_first", "t_oracle", "latency",
+                                            "blocked_value", "blocked_limit", "samples_needed", "evidence_explained", "t_first", "t_oracle", "latency",
                                             "radius99_m"};
 
 // The radius of the estimate's 99% position region: sqrt(chi2_3(0.99) lambda_max) of its covariance.
@@ -79,6 +79,7 @@ std::vector<std::string> EstimateFields(const schema::Attempt& a) {
           // why it waits: three fields, split here into three cells
           WhyNotCell(a, 0), WhyNotCell(a, 1), WhyNotCell(a, 2),
           a.why_not && !std::isnan(a.why_not->samples_needed) ? FormatNumber(a.why_not->samples_needed) : "",
+          a.why_not && !std::isnan(a.why_not->evidence_explained) ? FormatNumber(a.why_not->evidence_explained) : "",
           a.evaluation ? FormatOptional(a.evaluation->t_first_s) : "",
           a.evaluation ? FormatOptional(a.evaluation->t_oracle_s) : "",
           a.evaluation ? FormatOptional(a.evaluation->latency_ratio) : "",

@@ -1,6 +1,7 @@
 // The writers of sweep, replay and PDOP-study files: their columns, one line per record, and empty
 // cells (or "-") where there is nothing, read back as a user's script would.
 #include <gtest/gtest.h>
+#include <algorithm>
 
 #include <limits>
 #include <sstream>
@@ -135,6 +136,35 @@ TEST(ReplayFiles, EstimatesLeaveCellsEmptyWithoutAnEstimateOrTheTruth) {
   EXPECT_EQ(s[7] + "," + s[8] + "," + s[9], "1,-2,3.5");
   EXPECT_EQ(s[6], "");   // pdop_true: no truth in a replay without anchors
   EXPECT_EQ(s[11], "");  // err_m
+}
+
+TEST(ReplayFiles, EstimatesSayWhatAMirrorWaitsForAndWhatTheModelErrorExplains) {
+  schema::Attempt waiting;
+  waiting.anchor_id = 2;
+  waiting.method = "certified";
+  waiting.status = "not_triggered";
+  estimator::Judgement why = estimator::BlockedBy("mirror", -120.5, 9.2, 30.0, 800);
+  why.samples_needed = std::numeric_limits<double>::infinity();
+  why.evidence_explained = 310.25;
+  waiting.why_not = why;
+  schema::Attempt in_region = waiting;
+  in_region.why_not = estimator::BlockedBy("region", 1.5, 0.75, 30.0, 800);
+  std::ostringstream out;
+  WriteEstimates(out, {waiting, in_region});
+  const std::vector<std::string> lines = Lines(out.str());
+  ASSERT_EQ(lines.size(), 3u);
+  const std::vector<std::string> header = Fields(lines[0]), mirror = Fields(lines[1]), region = Fields(lines[2]);
+  const auto cell = [&header](const std::vector<std::string>& row, const std::string& column) {
+    const auto it = std::find(header.begin(), header.end(), column);
+    return it == header.end() ? std::string("no such column") : row.at(static_cast<std::size_t>(it - header.begin()));
+  };
+  EXPECT_EQ(cell(mirror, "blocked_by") + "," + cell(mirror, "blocked_value") + "," + cell(mirror, "blocked_limit"),
+            "mirror,-120.5,9.2");
+  EXPECT_EQ(cell(mirror, "samples_needed"), "inf");
+  EXPECT_EQ(cell(mirror, "evidence_explained"), "310.25");  // the mirror fits worse by 189.75: the pattern keeps it in
+  EXPECT_EQ(cell(region, "blocked_by"), "region");
+  EXPECT_EQ(cell(region, "samples_needed"), "");  // no alternative judged: nothing to say
+  EXPECT_EQ(cell(region, "evidence_explained"), "");
 }
 
 TEST(ReplayFiles, TheSummaryCountsEachDropWithItsFirstLineAsJson) {
