@@ -170,6 +170,7 @@ std::vector<CertifiedTrigger::Alternative> CertifiedTrigger::Alternatives(std::s
 
 CertifiedTrigger::Verdict CertifiedTrigger::RuleOutAlternatives(std::span<const Eigen::Vector3d> p_world_tag,
                                                                 std::span<const double> range_m,
+                                                                std::span<const int> tag_id,
                                                                 const SolveResult& estimate,
                                                                 const Eigen::Matrix3d& axes, double scale_m,
                                                                 const MirrorFit& mirror) {
@@ -198,7 +199,7 @@ CertifiedTrigger::Verdict CertifiedTrigger::RuleOutAlternatives(std::span<const 
       fit = start;
     }
     const double explained_squares = ExplainedSquares(p_world_tag, estimate, fit.p_world_anchor, fit.bias_m, scale_m);
-    const FitComparison comparison = Compare(p_world_tag, range_m, estimate.p_world_anchor, estimate.bias_m,
+    const FitComparison comparison = Compare(p_world_tag, range_m, tag_id, estimate.p_world_anchor, estimate.bias_m,
                                           fit.p_world_anchor, fit.bias_m, scale_m, explained_squares, threshold);
     // Too close to tell counts as no evidence at all.
     const double evidence = comparison.separated() ? comparison.evidence : 0.0;
@@ -246,14 +247,19 @@ double CertifiedTrigger::ExplainedSquares(std::span<const Eigen::Vector3d> p_wor
 }
 
 FitComparison CertifiedTrigger::Compare(std::span<const Eigen::Vector3d> p_world_tag, std::span<const double> range_m,
-                                        const Eigen::Vector3d& p_a, double bias_a_m, const Eigen::Vector3d& p_b,
-                                        double bias_b_m, double scale_m, double explained_squares,
-                                        double threshold) const {
+                                        std::span<const int> tag_id, const Eigen::Vector3d& p_a, double bias_a_m,
+                                        const Eigen::Vector3d& p_b, double bias_b_m, double scale_m,
+                                        double explained_squares, double threshold) const {
   const double prior_evidence = height_prior_ ? height_prior_->Chi2(p_b.z()) - height_prior_->Chi2(p_a.z()) : 0.0;
   double explained = 0.0;
-  const double evidence = FitEvidence(p_world_tag, range_m, p_a, bias_a_m, p_b, bias_b_m, mirror_.trim_fraction,
-                                      explained_squares, &explained) +
-                          prior_evidence;
+  // The ranges are corrected by the estimate's offsets of the tags (SolveWithTagBiases): each fit is
+  // judged with offsets of its own, or the estimate would win by the offsets it chose for itself.
+  const double fits = EstimatedTags(tag_id, range_m.size()).size() > 1
+      ? FitEvidenceOwnOffsets(p_world_tag, range_m, tag_id, p_a, bias_a_m, p_b, bias_b_m, mirror_.trim_fraction,
+                              explained_squares, &explained)
+      : FitEvidence(p_world_tag, range_m, p_a, bias_a_m, p_b, bias_b_m, mirror_.trim_fraction, explained_squares,
+                    &explained);
+  const double evidence = fits + prior_evidence;
   // A likelihood ratio's own spread grows with the separation it measures (about 2 sqrt(lambda),
   // more with noise in the tag positions: on the flat floor, 1 cm of it swung a lambda ~10 fit
   // from -15 to +28): only a separation no swing crosses counts as evidence, or a height prior
@@ -416,7 +422,7 @@ bool CertifiedTrigger::Judge(const TriggerInput& in) {
   }
   fitted.range_m = corrected_m_;
   std::optional<MirrorFit> mirror = FitMirror(fitted.p_world_tag, fitted.range_m, estimate);
-  if (MoveToBetterBasin(fitted.p_world_tag, fitted.range_m, *mirror, &estimate)) mirror.reset();  // another estimate's
+  if (MoveToBetterBasin(fitted.p_world_tag, fitted.range_m, fitted.tag_id, *mirror, &estimate)) mirror.reset();  // another estimate's
   converged_ = estimate.status == SolveStatus::kConverged;
   const SolveResult noise_only = estimate;
   // The residuals' terms at the estimate, once: for its covariance here and the tests below.
@@ -468,7 +474,7 @@ bool CertifiedTrigger::Judge(const TriggerInput& in) {
     if (!(off_m <= limit_m)) return blocked("height_prior", off_m, limit_m);
   }
   if (!mirror) mirror = FitMirror(fitted.p_world_tag, fitted.range_m, estimate);
-  const Verdict verdict = RuleOutAlternatives(fitted.p_world_tag, fitted.range_m, estimate, axes.eigenvectors(),
+  const Verdict verdict = RuleOutAlternatives(fitted.p_world_tag, fitted.range_m, fitted.tag_id, estimate, axes.eigenvectors(),
                                               noise.residual_scale_m, *mirror);
   refusal_ = verdict == Verdict::kMirror ? std::optional(SolveStatus::kHeightUnobservable) : std::nullopt;
   if (verdict == Verdict::kMirror) return blocked("mirror", judgement_.evidence, judgement_.evidence_needed);
@@ -494,7 +500,8 @@ CertifiedTrigger::MirrorFit CertifiedTrigger::FitMirror(std::span<const Eigen::V
 }
 
 bool CertifiedTrigger::MoveToBetterBasin(std::span<const Eigen::Vector3d> p_world_tag, std::span<const double> range_m,
-                                         const MirrorFit& mirror, SolveResult* estimate) const {
+                                         std::span<const int> tag_id, const MirrorFit& mirror,
+                                         SolveResult* estimate) const {
   // A solve started from the linear fit can settle in the worse basin of a mirror pair and stay
   // there as data come (a cone approach, a nearly flat path with a little height). The move only
   // picks the basin the tests judge: the other one must still be ruled out like any alternative
@@ -506,7 +513,7 @@ bool CertifiedTrigger::MoveToBetterBasin(std::span<const Eigen::Vector3d> p_worl
     return false;  // no other basin farther than D
   }
   const FitComparison comparison =
-      Compare(p_world_tag, range_m, refined.p_world_anchor, refined.bias_m, estimate->p_world_anchor, estimate->bias_m,
+      Compare(p_world_tag, range_m, tag_id, refined.p_world_anchor, refined.bias_m, estimate->p_world_anchor, estimate->bias_m,
               ResidualScale(p_world_tag, range_m, refined.p_world_anchor, refined.bias_m), 0.0, mirror_.min_evidence);
   if (!(comparison.evidence >= mirror_.min_evidence) || !comparison.separated()) return false;
   *estimate = refined;

@@ -49,6 +49,24 @@ double EvidenceOfResiduals(std::vector<double> a, std::vector<double> b, double 
          (sigma_m * sigma_m);
 }
 
+// Each tag's residuals less their median (tags in order of appearance: a handful at most).
+void CenterEachTag(std::span<const int> tag_id, std::vector<double>& residuals) {
+  std::vector<int> done;
+  std::vector<double> own;
+  for (const int tag : tag_id) {
+    if (std::find(done.begin(), done.end(), tag) != done.end()) continue;
+    done.push_back(tag);
+    own.clear();
+    for (std::size_t k = 0; k < residuals.size(); ++k) {
+      if (tag_id[k] == tag) own.push_back(residuals[k]);
+    }
+    const double median = MedianInPlace(own);
+    for (std::size_t k = 0; k < residuals.size(); ++k) {
+      if (tag_id[k] == tag) residuals[k] -= median;
+    }
+  }
+}
+
 }  // namespace
 
 double TrimmedSquaresInPlace(std::vector<double>& residuals, double trim_fraction) {
@@ -106,6 +124,16 @@ double FitEvidence(std::span<const Eigen::Vector3d> p_world_tag, std::span<const
                    double trim_fraction, double explained_squares, double* explained) {
   return EvidenceOfResiduals(Residuals(p_world_tag, range_m, p_a, bias_a_m), Residuals(p_world_tag, range_m, p_b, bias_b_m),
                              trim_fraction, explained_squares, explained);
+}
+
+double FitEvidenceOwnOffsets(std::span<const Eigen::Vector3d> p_world_tag, std::span<const double> range_m,
+                             std::span<const int> tag_id, const Eigen::Vector3d& p_a, double bias_a_m,
+                             const Eigen::Vector3d& p_b, double bias_b_m, double trim_fraction,
+                             double explained_squares, double* explained) {
+  std::vector<double> a = Residuals(p_world_tag, range_m, p_a, bias_a_m), b = Residuals(p_world_tag, range_m, p_b, bias_b_m);
+  CenterEachTag(tag_id, a);
+  CenterEachTag(tag_id, b);
+  return EvidenceOfResiduals(std::move(a), std::move(b), trim_fraction, explained_squares, explained);
 }
 
 double Separation(std::span<const Eigen::Vector3d> p_world_tag, const Eigen::Vector3d& p_a, double bias_a_m,

@@ -146,5 +146,24 @@ TEST(HeightCheck, OnByDefaultAndAnchorOnThePlaneHasNoMirror) {
   EXPECT_NE(why.find("trim_fraction"), std::string::npos);
 }
 
+// Three tags whose links differ by 0.2 m, their offsets corrected for another fit (left in the
+// ranges here): judged with offsets that are not its own, the true anchor's lead over a fit 1.5 m
+// off is a small part of what it is with each fit's own offsets.
+TEST(HeightCheck, EachFitIsJudgedWithTheTagsOffsetsThatSuitIt) {
+  const testing::AnchorData weave = Path(0.4, 0.02, 5);
+  const double offset_m[] = {0.0, 0.25, -0.2};
+  std::vector<int> tag_id(weave.p_world_tag.size());
+  std::vector<double> range_m(weave.range_m);
+  for (std::size_t k = 0; k < range_m.size(); ++k) {
+    tag_id[k] = static_cast<int>(k % 3);
+    range_m[k] += offset_m[k % 3];
+  }
+  const Eigen::Vector3d p_off = kCheckedAnchor + Eigen::Vector3d(1.0, -1.0, 0.5);
+  const double own = FitEvidenceOwnOffsets(weave.p_world_tag, range_m, tag_id, kCheckedAnchor, 0.2, p_off, 0.2, 0.1);
+  const double shared = FitEvidence(weave.p_world_tag, range_m, kCheckedAnchor, 0.2, p_off, 0.2, 0.1);
+  EXPECT_GT(own, 10.0 * shared);  // 3.5e5 against 1.8e3 in this draw
+  EXPECT_GT(own, 1000.0);
+}
+
 }  // namespace
 }  // namespace anchorbench::estimator

@@ -127,7 +127,7 @@ class CertifiedTrigger : public InitTrigger {
   // better by the mirror check's min_evidence and is separated from it (Compare), that fit becomes
   // the estimate (true).
   bool MoveToBetterBasin(std::span<const Eigen::Vector3d> p_world_tag, std::span<const double> range_m,
-                         const MirrorFit& mirror, SolveResult* estimate) const;
+                         std::span<const int> tag_id, const MirrorFit& mirror, SolveResult* estimate) const;
   // The cadence after the judgement: backed off on a refusal that repeats, restored on progress.
   void PaceCadence();
   // Where other minima of the fit may lie: the mirror (with its bias), 3 D along the covariance's
@@ -143,18 +143,20 @@ class CertifiedTrigger : public InitTrigger {
   double ExplainedSquares(std::span<const Eigen::Vector3d> p_world_tag, const SolveResult& estimate,
                           const Eigen::Vector3d& p_world_fit, double bias_fit_m, double scale_m);
   // Fit a against fit b of the same data: a's evidence over b (FitEvidence after
-  // `explained_squares`, plus the height prior's chi-square difference) and whether the two can be
-  // told apart (separated(): a prior that alone reaches `threshold`, or a separation of predicted
-  // ranges of at least min_separation in units of `scale_m`).
+  // `explained_squares`, plus the height prior's chi-square difference; where the tags' offsets are
+  // estimated, FitEvidenceOwnOffsets: each fit with the offsets that suit it) and whether the two
+  // can be told apart (separated(): a prior that alone reaches `threshold`, or a separation of
+  // predicted ranges of at least min_separation in units of `scale_m`).
   FitComparison Compare(std::span<const Eigen::Vector3d> p_world_tag, std::span<const double> range_m,
-                        const Eigen::Vector3d& p_a, double bias_a_m, const Eigen::Vector3d& p_b, double bias_b_m,
+                        std::span<const int> tag_id, const Eigen::Vector3d& p_a, double bias_a_m,
+                        const Eigen::Vector3d& p_b, double bias_b_m,
                         double scale_m, double explained_squares, double threshold) const;
   // Each alternative refined (L2 LM; the mirror's refinement is `mirror`'s, FitMirror's of the
   // estimate); one that ends farther than D away must fit worse than the estimate by the evidence
   // threshold, and predict ranges that differ enough to tell. The weakest alternative's evidence and
   // the threshold go to the judgement.
   Verdict RuleOutAlternatives(std::span<const Eigen::Vector3d> p_world_tag, std::span<const double> range_m,
-                              const SolveResult& estimate, const Eigen::Matrix3d& axes, double scale_m,
+                              std::span<const int> tag_id, const SolveResult& estimate, const Eigen::Matrix3d& axes, double scale_m,
                               const MirrorFit& mirror);
   // 3.: the largest radius of the region seen from the ends of its axes (+inf where singular), with
   // the estimate's noise statistics (Judge computes them once).
