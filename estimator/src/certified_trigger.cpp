@@ -254,12 +254,11 @@ FitComparison CertifiedTrigger::Compare(std::span<const Eigen::Vector3d> p_world
   double explained = 0.0;
   // The ranges are corrected by the estimate's offsets of the tags (SolveWithTagBiases): each fit is
   // judged with offsets of its own, or the estimate would win by the offsets it chose for itself.
-  const double fits = EstimatedTags(tag_id, range_m.size()).size() > 1
-      ? FitEvidenceOwnOffsets(p_world_tag, range_m, tag_id, p_a, bias_a_m, p_b, bias_b_m, mirror_.trim_fraction,
-                              explained_squares, &explained)
-      : FitEvidence(p_world_tag, range_m, p_a, bias_a_m, p_b, bias_b_m, mirror_.trim_fraction, explained_squares,
-                    &explained);
-  const double evidence = fits + prior_evidence;
+  const std::span<const int> own_offsets =
+      EstimatedTags(tag_id, range_m.size()).size() > 1 ? tag_id : std::span<const int>();
+  const double evidence = FitEvidenceOwnOffsets(p_world_tag, range_m, own_offsets, p_a, bias_a_m, p_b, bias_b_m,
+                                                mirror_.trim_fraction, explained_squares, &explained) +
+                          prior_evidence;
   // A likelihood ratio's own spread grows with the separation it measures (about 2 sqrt(lambda),
   // more with noise in the tag positions: on the flat floor, 1 cm of it swung a lambda ~10 fit
   // from -15 to +28): only a separation no swing crosses counts as evidence, or a height prior
@@ -422,7 +421,8 @@ bool CertifiedTrigger::Judge(const TriggerInput& in) {
   }
   fitted.range_m = corrected_m_;
   std::optional<MirrorFit> mirror = FitMirror(fitted.p_world_tag, fitted.range_m, estimate);
-  if (MoveToBetterBasin(fitted.p_world_tag, fitted.range_m, fitted.tag_id, *mirror, &estimate)) mirror.reset();  // another estimate's
+  // A moved estimate has a mirror of its own, fitted where the alternatives need it.
+  if (MoveToBetterBasin(fitted.p_world_tag, fitted.range_m, fitted.tag_id, *mirror, &estimate)) mirror.reset();
   converged_ = estimate.status == SolveStatus::kConverged;
   const SolveResult noise_only = estimate;
   // The residuals' terms at the estimate, once: for its covariance here and the tests below.
@@ -474,8 +474,8 @@ bool CertifiedTrigger::Judge(const TriggerInput& in) {
     if (!(off_m <= limit_m)) return blocked("height_prior", off_m, limit_m);
   }
   if (!mirror) mirror = FitMirror(fitted.p_world_tag, fitted.range_m, estimate);
-  const Verdict verdict = RuleOutAlternatives(fitted.p_world_tag, fitted.range_m, fitted.tag_id, estimate, axes.eigenvectors(),
-                                              noise.residual_scale_m, *mirror);
+  const Verdict verdict = RuleOutAlternatives(fitted.p_world_tag, fitted.range_m, fitted.tag_id, estimate,
+                                              axes.eigenvectors(), noise.residual_scale_m, *mirror);
   refusal_ = verdict == Verdict::kMirror ? std::optional(SolveStatus::kHeightUnobservable) : std::nullopt;
   if (verdict == Verdict::kMirror) return blocked("mirror", judgement_.evidence, judgement_.evidence_needed);
   if (verdict == Verdict::kOtherMinimum) return blocked("alternative", judgement_.evidence, judgement_.evidence_needed);

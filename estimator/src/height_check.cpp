@@ -8,6 +8,8 @@
 
 #include <Eigen/Eigenvalues>
 
+#include "anchorbench/estimator/tag_biases.hpp"
+
 namespace anchorbench::estimator {
 namespace {
 
@@ -23,7 +25,6 @@ double MedianInPlace(std::vector<double>& values) {
   std::nth_element(values.begin(), middle, values.end());
   return *middle;
 }
-
 
 // d_k - |p_k - p_A| - gamma for every sample: the negative of Eq. (11)'s RangeResidual
 // (range_residual.hpp), as measured minus predicted. Written as the negation, (|p_k - p_A| + gamma)
@@ -49,13 +50,10 @@ double EvidenceOfResiduals(std::vector<double> a, std::vector<double> b, double 
          (sigma_m * sigma_m);
 }
 
-// Each tag's residuals less their median (tags in order of appearance: a handful at most).
+// Each tag's residuals less their median (a handful of tags at most; none: nothing to center).
 void CenterEachTag(std::span<const int> tag_id, std::vector<double>& residuals) {
-  std::vector<int> done;
   std::vector<double> own;
-  for (const int tag : tag_id) {
-    if (std::find(done.begin(), done.end(), tag) != done.end()) continue;
-    done.push_back(tag);
+  for (const int tag : TagsInOrder(tag_id)) {
     own.clear();
     for (std::size_t k = 0; k < residuals.size(); ++k) {
       if (tag_id[k] == tag) own.push_back(residuals[k]);
@@ -119,21 +117,22 @@ Mirror MirrorOf(std::span<const Eigen::Vector3d> p_world_tag, std::span<const do
   return mirror;
 }
 
-double FitEvidence(std::span<const Eigen::Vector3d> p_world_tag, std::span<const double> range_m,
-                   const Eigen::Vector3d& p_a, double bias_a_m, const Eigen::Vector3d& p_b, double bias_b_m,
-                   double trim_fraction, double explained_squares, double* explained) {
-  return EvidenceOfResiduals(Residuals(p_world_tag, range_m, p_a, bias_a_m), Residuals(p_world_tag, range_m, p_b, bias_b_m),
-                             trim_fraction, explained_squares, explained);
-}
-
 double FitEvidenceOwnOffsets(std::span<const Eigen::Vector3d> p_world_tag, std::span<const double> range_m,
                              std::span<const int> tag_id, const Eigen::Vector3d& p_a, double bias_a_m,
                              const Eigen::Vector3d& p_b, double bias_b_m, double trim_fraction,
                              double explained_squares, double* explained) {
-  std::vector<double> a = Residuals(p_world_tag, range_m, p_a, bias_a_m), b = Residuals(p_world_tag, range_m, p_b, bias_b_m);
+  std::vector<double> a = Residuals(p_world_tag, range_m, p_a, bias_a_m);
+  std::vector<double> b = Residuals(p_world_tag, range_m, p_b, bias_b_m);
   CenterEachTag(tag_id, a);
   CenterEachTag(tag_id, b);
   return EvidenceOfResiduals(std::move(a), std::move(b), trim_fraction, explained_squares, explained);
+}
+
+double FitEvidence(std::span<const Eigen::Vector3d> p_world_tag, std::span<const double> range_m,
+                   const Eigen::Vector3d& p_a, double bias_a_m, const Eigen::Vector3d& p_b, double bias_b_m,
+                   double trim_fraction, double explained_squares, double* explained) {
+  return FitEvidenceOwnOffsets(p_world_tag, range_m, {}, p_a, bias_a_m, p_b, bias_b_m, trim_fraction,
+                               explained_squares, explained);
 }
 
 double Separation(std::span<const Eigen::Vector3d> p_world_tag, const Eigen::Vector3d& p_a, double bias_a_m,

@@ -21,8 +21,8 @@ using io::FormatOptional;
 constexpr const char* kEstimateColumns[] = {"anchor_id", "method", "initialized", "t_init", "n_used", "pdop_est",
                                             "pdop_true", "x", "y", "z", "bias", "err_m", "status", "err_xy", "err_z",
                                             "bias_aware_hdop", "bias_aware_vdop", "scale", "blocked_by",
-                                            "blocked_value", "blocked_limit", "samples_needed", "evidence_explained", "t_first", "t_oracle", "latency",
-                                            "radius99_m"};
+                                            "blocked_value", "blocked_limit", "samples_needed", "evidence_explained",
+                                            "t_first", "t_oracle", "latency", "radius99_m"};
 
 // The radius of the estimate's 99% position region: sqrt(chi2_3(0.99) lambda_max) of its covariance.
 std::string Radius99(const schema::Attempt& a) {

@@ -80,8 +80,8 @@ double FitEvidence(std::span<const Eigen::Vector3d> p_world_tag, std::span<const
 // sample, the ranges corrected by one fit's estimate of them): each fit's residuals less each
 // tag's median of them, so that each fit is judged with the offsets that suit it best. Judged with
 // another fit's offsets, an alternative carries their error: on a three-tag rig whose links differ
-// by 0.2 m, the true anchor fitted worse than an estimate 5.6 m off with that estimate's offsets,
-// and better with its own.
+// by 0.2 m, the true anchor fitted worse than an estimate metres off with that estimate's offsets,
+// and better with its own. An empty tag_id centers nothing: FitEvidence.
 double FitEvidenceOwnOffsets(std::span<const Eigen::Vector3d> p_world_tag, std::span<const double> range_m,
                              std::span<const int> tag_id, const Eigen::Vector3d& p_a, double bias_a_m,
                              const Eigen::Vector3d& p_b, double bias_b_m, double trim_fraction,
